@@ -1,0 +1,20 @@
+
+# Consider dependencies only in project.
+set(CMAKE_DEPENDS_IN_PROJECT_ONLY OFF)
+
+# The set of languages for which implicit dependencies are needed:
+set(CMAKE_DEPENDS_LANGUAGES
+  )
+
+# The set of dependency files which are needed:
+set(CMAKE_DEPENDS_DEPENDENCY_FILES
+  "/work/main/src/core/status.c" "src/CMakeFiles/gembem.dir/core/status.c.o" "gcc" "src/CMakeFiles/gembem.dir/core/status.c.o.d"
+  "/work/main/src/scene/yaml_read.c" "src/CMakeFiles/gembem.dir/scene/yaml_read.c.o" "gcc" "src/CMakeFiles/gembem.dir/scene/yaml_read.c.o.d"
+  )
+
+# Targets to which this target links.
+set(CMAKE_TARGET_LINKED_INFO_FILES
+  )
+
+# Fortran module output directory.
+set(CMAKE_Fortran_TARGET_MODULE_DIR "")

@@ -1,0 +1,23 @@
+# Debian 12 packages (tools/setup.sh installs them); see shared/design/DEPENDENCIES.md.
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(FYAML REQUIRED IMPORTED_TARGET libfyaml)
+pkg_check_modules(OPENBLAS REQUIRED IMPORTED_TARGET openblas)
+pkg_check_modules(LAPACKE REQUIRED IMPORTED_TARGET lapacke)
+
+# SuiteSparse has neither pkg-config nor a CMake config on Debian 12.
+find_path(SUITESPARSE_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse REQUIRED)
+find_library(CHOLMOD_LIBRARY cholmod REQUIRED)
+find_library(UMFPACK_LIBRARY umfpack REQUIRED)
+add_library(gb_suitesparse INTERFACE)
+target_include_directories(gb_suitesparse INTERFACE ${SUITESPARSE_INCLUDE_DIR})
+target_link_libraries(gb_suitesparse INTERFACE ${UMFPACK_LIBRARY} ${CHOLMOD_LIBRARY})
+
+# gmsh: gmshc.h and -lgmsh, no pkg-config.
+find_path(GMSH_INCLUDE_DIR gmshc.h REQUIRED)
+find_library(GMSH_LIBRARY gmsh REQUIRED)
+add_library(gb_gmsh INTERFACE)
+target_include_directories(gb_gmsh INTERFACE ${GMSH_INCLUDE_DIR})
+target_link_libraries(gb_gmsh INTERFACE ${GMSH_LIBRARY})
+
+# Debian's python3 with matplotlib, for figures (not the python3 first on PATH).
+set(GB_PYTHON /usr/bin/python3 CACHE FILEPATH "Python with matplotlib, for figures")

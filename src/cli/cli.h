@@ -1,0 +1,14 @@
+/* The gembem command: one file per subcommand, each a thin layer over the library.
+ * Exit statuses: 0 ok, 2 bad input or usage, 3 not converged, 1 anything else. */
+#ifndef GB_CLI_H
+#define GB_CLI_H
+
+#include "gembem/status.h"
+
+int gb_cli_run(int argc, char **argv); /* gembem run: a granular scene */
+int gb_cli_bem(int argc, char **argv); /* gembem bem: a pure elastostatic scene */
+
+/* Prints the error to stderr as "gembem: message" and returns the exit status for its code. */
+int gb_cli_report(const gb_error *err);
+
+#endif

@@ -1,0 +1,47 @@
+#include <stdio.h>
+#include <string.h>
+
+#include "cli/cli.h"
+
+static void usage(FILE *to)
+{
+    fprintf(to, "usage: gembem <command> [options]\n"
+                "commands:\n"
+                "  run SCENE.yaml -o RUNDIR   run a granular scene (reference GEM iteration)\n"
+                "  bem SCENE.yaml -o OUTDIR   solve a pure elastostatic scene (boundary elements)\n"
+                "  version                    print the version\n"
+                "Run 'gembem <command> --help' for the options of a command.\n");
+}
+
+int gb_cli_report(const gb_error *err)
+{
+    fprintf(stderr, "gembem: %s\n", err->msg);
+    switch (err->code) {
+    case GB_OK: return 0;
+    case GB_EINPUT: return 2;
+    case GB_ENOCONV: return 3;
+    default: return 1;
+    }
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) {
+        usage(stderr);
+        return 2;
+    }
+    const char *cmd = argv[1];
+    if (!strcmp(cmd, "run")) return gb_cli_run(argc - 1, argv + 1);
+    if (!strcmp(cmd, "bem")) return gb_cli_bem(argc - 1, argv + 1);
+    if (!strcmp(cmd, "version") || !strcmp(cmd, "--version")) {
+        printf("gembem %s\n", gb_version());
+        return 0;
+    }
+    if (!strcmp(cmd, "help") || !strcmp(cmd, "--help") || !strcmp(cmd, "-h")) {
+        usage(stdout);
+        return 0;
+    }
+    fprintf(stderr, "gembem: unknown command '%s'\n", cmd);
+    usage(stderr);
+    return 2;
+}

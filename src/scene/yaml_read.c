@@ -1,0 +1,280 @@
+#include "scene/yaml_read.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+gb_status gb_yaml_load(const char *path, gb_yaml_doc *doc, gb_error *err)
+{
+    memset(doc, 0, sizeof *doc);
+    snprintf(doc->path, sizeof doc->path, "%s", path);
+    FILE *probe = fopen(path, "rb");
+    if (!probe) return gb_fail(err, GB_EINPUT, "%s: cannot open: %s", path, strerror(errno));
+    fclose(probe);
+
+    /* A fresh diag per parse, collecting errors so that we can report line and column. */
+    struct fy_diag_cfg dcfg;
+    fy_diag_cfg_default(&dcfg);
+    dcfg.fp = NULL;
+    dcfg.colorize = false;
+    struct fy_diag *diag = fy_diag_create(&dcfg);
+    if (!diag) return gb_fail(err, GB_ENOMEM, "%s: cannot create the YAML diagnostics", path);
+    fy_diag_set_collect_errors(diag, true);
+
+    struct fy_parse_cfg cfg = {0};
+    cfg.flags = FYPCF_QUIET | FYPCF_COLLECT_DIAG;
+    cfg.diag = diag;
+    doc->fyd = fy_document_build_from_file(&cfg, path);
+    gb_status st = GB_OK;
+    if (!doc->fyd) {
+        void *it = NULL;
+        struct fy_diag_error *e = fy_diag_errors_iterate(diag, &it);
+        if (e)
+            st = gb_fail(err, GB_EINPUT, "%s:%d:%d: YAML syntax error: %s", path, e->line + 1, e->column + 1,
+                         e->msg);
+        else
+            st = gb_fail(err, GB_EINPUT, "%s: not a valid YAML document", path);
+    } else if (!fy_document_root(doc->fyd)) {
+        st = gb_fail(err, GB_EINPUT, "%s: the file is empty; expected a YAML mapping", path);
+        fy_document_destroy(doc->fyd);
+        doc->fyd = NULL;
+    }
+    fy_diag_destroy(diag);
+    return st;
+}
+
+void gb_yaml_free(gb_yaml_doc *doc)
+{
+    if (doc && doc->fyd) fy_document_destroy(doc->fyd);
+    if (doc) doc->fyd = NULL;
+}
+
+/* libfyaml 0.7 gives marks on tokens only: a scalar has one, a collection is located by its first
+ * scalar (a key for a mapping, an item for a sequence). */
+void gb_yaml_where(struct fy_node *node, int *line, int *col)
+{
+    *line = 0;
+    *col = 0;
+    for (int depth = 0; node && depth < 64; depth++) {
+        if (fy_node_get_type(node) == FYNT_SCALAR) {
+            struct fy_token *t = fy_node_get_scalar_token(node);
+            const struct fy_mark *mk = t ? fy_token_start_mark(t) : NULL;
+            if (mk) {
+                *line = mk->line + 1;
+                *col = mk->column + 1;
+            }
+            return;
+        }
+        if (fy_node_get_type(node) == FYNT_MAPPING) {
+            void *it = NULL;
+            struct fy_node_pair *p = fy_node_mapping_iterate(node, &it);
+            node = p ? fy_node_pair_key(p) : NULL;
+        } else {
+            node = fy_node_sequence_get_by_index(node, 0);
+        }
+    }
+}
+
+gb_status gb_yaml_fail(const gb_yaml_doc *doc, struct fy_node *at, gb_error *err, const char *fmt, ...)
+{
+    char what[GB_ERROR_MSG_MAX];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(what, sizeof what, fmt, ap);
+    va_end(ap);
+    int line = 0, col = 0;
+    if (at) gb_yaml_where(at, &line, &col);
+    if (line > 0) return gb_fail(err, GB_EINPUT, "%s:%d:%d: %s", doc->path, line, col, what);
+    return gb_fail(err, GB_EINPUT, "%s: %s", doc->path, what);
+}
+
+gb_status gb_yaml_number(const gb_yaml_doc *doc, struct fy_node *node, const char *what, double *out,
+                         gb_error *err)
+{
+    if (!node || fy_node_get_type(node) != FYNT_SCALAR)
+        return gb_yaml_fail(doc, node, err, "%s: expected a number, found a %s", what,
+                            node && fy_node_get_type(node) == FYNT_MAPPING ? "mapping" : "sequence");
+    if (fy_node_get_style(node) != FYNS_PLAIN)
+        return gb_yaml_fail(doc, node, err, "%s: expected a number, found a quoted string", what);
+    size_t len = 0;
+    const char *s = fy_node_get_scalar(node, &len);
+    char buf[64];
+    if (!s || len == 0 || len >= sizeof buf)
+        return gb_yaml_fail(doc, node, err, "%s: expected a number, found '%.*s'", what, (int)(len < 40 ? len : 40),
+                            s ? s : "");
+    memcpy(buf, s, len);
+    buf[len] = '\0';
+    char *end = NULL;
+    errno = 0;
+    double v = strtod(buf, &end);
+    if (end == buf || *end != '\0')
+        return gb_yaml_fail(doc, node, err, "%s: expected a number, found '%s'", what, buf);
+    if (!isfinite(v) || errno == ERANGE)
+        return gb_yaml_fail(doc, node, err, "%s: expected a finite number, found '%s'", what, buf);
+    *out = v;
+    return GB_OK;
+}
+
+gb_status gb_ymap_open(const gb_yaml_doc *doc, struct fy_node *node, const char *name, gb_ymap *m,
+                       gb_error *err)
+{
+    memset(m, 0, sizeof *m);
+    m->doc = doc;
+    m->node = node;
+    size_t len = strlen(name);
+    if (len >= sizeof m->name) len = sizeof m->name - 1; /* a very deep path is cut, not overrun */
+    memcpy(m->name, name, len);
+    m->name[len] = '\0';
+    if (node && fy_node_get_type(node) != FYNT_MAPPING)
+        return gb_yaml_fail(doc, node, err, "%s: expected a mapping of keys to values", name);
+    return GB_OK;
+}
+
+static void key_path(const gb_ymap *m, const char *key, char *out, size_t n)
+{
+    if (m->name[0]) snprintf(out, n, "%s.%s", m->name, key);
+    else snprintf(out, n, "%s", key);
+}
+
+gb_status gb_ymap_find(gb_ymap *m, const char *key, int flags, struct fy_node **out, gb_error *err)
+{
+    if (m->n_asked < GB_YMAP_MAX_KEYS) m->asked[m->n_asked++] = key;
+    *out = m->node ? fy_node_mapping_lookup_by_string(m->node, key, FY_NT) : NULL;
+    if (*out && fy_node_get_type(*out) == FYNT_SCALAR && fy_node_is_null(*out) &&
+        fy_node_get_style(*out) == FYNS_PLAIN) {
+        size_t len = 0;
+        fy_node_get_scalar(*out, &len);
+        if (len == 0) *out = NULL; /* "key:" with no value counts as absent */
+    }
+    if (!*out && (flags & GB_Y_REQUIRED)) {
+        char path[256];
+        key_path(m, key, path, sizeof path);
+        return gb_yaml_fail(m->doc, m->node, err, "missing key '%s'", path);
+    }
+    return GB_OK;
+}
+
+gb_status gb_ymap_number(gb_ymap *m, const char *key, int flags, double *out, gb_error *err)
+{
+    struct fy_node *v;
+    gb_status st = gb_ymap_find(m, key, flags, &v, err);
+    if (st || !v) return st;
+    char path[256];
+    key_path(m, key, path, sizeof path);
+    double x;
+    if ((st = gb_yaml_number(m->doc, v, path, &x, err))) return st;
+    if ((flags & GB_Y_POSITIVE) && !(x > 0))
+        return gb_yaml_fail(m->doc, v, err, "%s: expected a positive number, found %g", path, x);
+    if ((flags & GB_Y_NONNEG) && !(x >= 0))
+        return gb_yaml_fail(m->doc, v, err, "%s: expected a number >= 0, found %g", path, x);
+    *out = x;
+    return GB_OK;
+}
+
+gb_status gb_ymap_int(gb_ymap *m, const char *key, int flags, long lo, long hi, long *out, gb_error *err)
+{
+    struct fy_node *v;
+    gb_status st = gb_ymap_find(m, key, flags, &v, err);
+    if (st || !v) return st;
+    char path[256];
+    key_path(m, key, path, sizeof path);
+    double x;
+    if ((st = gb_yaml_number(m->doc, v, path, &x, err))) return st;
+    if (x != floor(x) || x < (double)lo || x > (double)hi)
+        return gb_yaml_fail(m->doc, v, err, "%s: expected a whole number from %ld to %ld, found %g", path, lo, hi, x);
+    *out = (long)x;
+    return GB_OK;
+}
+
+gb_status gb_ymap_bool(gb_ymap *m, const char *key, int flags, int *out, gb_error *err)
+{
+    struct fy_node *v;
+    gb_status st = gb_ymap_find(m, key, flags, &v, err);
+    if (st || !v) return st;
+    char path[256];
+    key_path(m, key, path, sizeof path);
+    size_t len = 0;
+    const char *s = fy_node_get_type(v) == FYNT_SCALAR ? fy_node_get_scalar(v, &len) : NULL;
+    if (s && fy_node_get_style(v) == FYNS_PLAIN) {
+        if (len == 4 && !strncmp(s, "true", 4)) return *out = 1, GB_OK;
+        if (len == 5 && !strncmp(s, "false", 5)) return *out = 0, GB_OK;
+    }
+    return gb_yaml_fail(m->doc, v, err, "%s: expected true or false", path);
+}
+
+gb_status gb_ymap_string(gb_ymap *m, const char *key, int flags, char *buf, size_t n, gb_error *err)
+{
+    struct fy_node *v;
+    gb_status st = gb_ymap_find(m, key, flags, &v, err);
+    if (st || !v) return st;
+    char path[256];
+    key_path(m, key, path, sizeof path);
+    size_t len = 0;
+    const char *s = fy_node_get_type(v) == FYNT_SCALAR ? fy_node_get_scalar(v, &len) : NULL;
+    if (!s) return gb_yaml_fail(m->doc, v, err, "%s: expected a string", path);
+    if (len == 0 || len >= n)
+        return gb_yaml_fail(m->doc, v, err, "%s: expected a non-empty string of at most %zu characters", path, n - 1);
+    memcpy(buf, s, len);
+    buf[len] = '\0';
+    return GB_OK;
+}
+
+gb_status gb_ymap_map(gb_ymap *m, const char *key, int flags, gb_ymap *sub, gb_error *err)
+{
+    struct fy_node *v;
+    gb_status st = gb_ymap_find(m, key, flags, &v, err);
+    if (st) return st;
+    char path[256];
+    key_path(m, key, path, sizeof path);
+    return gb_ymap_open(m->doc, v, path, sub, err);
+}
+
+gb_status gb_ymap_vector(gb_ymap *m, const char *key, int flags, int n, double *out, gb_error *err)
+{
+    struct fy_node *v;
+    gb_status st = gb_ymap_find(m, key, flags, &v, err);
+    if (st || !v) return st;
+    char path[256];
+    key_path(m, key, path, sizeof path);
+    if (fy_node_get_type(v) != FYNT_SEQUENCE || fy_node_sequence_item_count(v) != n)
+        return gb_yaml_fail(m->doc, v, err, "%s: expected a list of %d numbers", path, n);
+    for (int i = 0; i < n; i++)
+        if ((st = gb_yaml_number(m->doc, fy_node_sequence_get_by_index(v, i), path, &out[i], err))) return st;
+    return GB_OK;
+}
+
+gb_status gb_ymap_close(gb_ymap *m, gb_error *err)
+{
+    if (!m->node) return GB_OK;
+    void *it = NULL;
+    struct fy_node_pair *p;
+    while ((p = fy_node_mapping_iterate(m->node, &it))) {
+        struct fy_node *k = fy_node_pair_key(p);
+        size_t len = 0;
+        const char *s = fy_node_get_type(k) == FYNT_SCALAR ? fy_node_get_scalar(k, &len) : NULL;
+        int known = 0;
+        for (int i = 0; s && i < m->n_asked && !known; i++)
+            known = strlen(m->asked[i]) == len && !strncmp(m->asked[i], s, len);
+        if (known) continue;
+        char expected[600] = "";
+        size_t used = 0;
+        for (int i = 0; i < m->n_asked && used < sizeof expected - 1; i++)
+            used += (size_t)snprintf(expected + used, sizeof expected - used, "%s%s", i ? ", " : "", m->asked[i]);
+        return gb_yaml_fail(m->doc, k, err, "%s: unknown key '%.*s'; expected one of: %s",
+                            m->name[0] ? m->name : "(top level)", (int)(s ? len : 0), s ? s : "", expected);
+    }
+    return GB_OK;
+}
+
+void gb_yaml_relative_path(const gb_yaml_doc *doc, const char *name, char *out, size_t n)
+{
+    const char *slash = strrchr(doc->path, '/');
+    if (name[0] == '/' || !slash) {
+        snprintf(out, n, "%s", name);
+        return;
+    }
+    snprintf(out, n, "%.*s/%s", (int)(slash - doc->path), doc->path, name);
+}

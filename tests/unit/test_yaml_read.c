@@ -1,0 +1,55 @@
+/* The YAML reader: values, ranges, unknown keys and their file:line:column. */
+#include <stdio.h>
+#include <string.h>
+
+#include "check.h"
+#include "scene/yaml_read.h"
+
+static const char *write_tmp(const char *name, const char *text)
+{
+    static char path[256];
+    snprintf(path, sizeof path, "/tmp/gb_test_yaml_%s.yaml", name);
+    FILE *f = fopen(path, "w");
+    fputs(text, f);
+    fclose(f);
+    return path;
+}
+
+int main(void)
+{
+    gb_error err = {0};
+    gb_yaml_doc doc;
+    gb_ymap m, sub;
+    double x = -1;
+    long n = 0;
+
+    const char *p = write_tmp("ok", "# comment\na: 1.5e8\nsub:\n  n: 12\n  b: true\n");
+    CHECK(gb_yaml_load(p, &doc, &err) == GB_OK);
+    CHECK(gb_ymap_open(&doc, fy_document_root(doc.fyd), "", &m, &err) == GB_OK);
+    CHECK(gb_ymap_number(&m, "a", GB_Y_REQUIRED | GB_Y_POSITIVE, &x, &err) == GB_OK);
+    CHECK_NEAR(x, 1.5e8, 0);
+    CHECK(gb_ymap_map(&m, "sub", GB_Y_REQUIRED, &sub, &err) == GB_OK);
+    CHECK(gb_ymap_int(&sub, "n", GB_Y_REQUIRED, 1, 100, &n, &err) == GB_OK && n == 12);
+    CHECK(gb_ymap_close(&sub, &err) == GB_EINPUT); /* b was never asked for */
+    CHECK(strstr(err.msg, ":5:3: sub: unknown key 'b'") != NULL);
+    x = 7;
+    CHECK(gb_ymap_number(&m, "missing", GB_Y_OPTIONAL, &x, &err) == GB_OK && x == 7);
+    CHECK(gb_ymap_number(&m, "missing", GB_Y_REQUIRED, &x, &err) == GB_EINPUT);
+    CHECK(strstr(err.msg, "missing key 'missing'") != NULL);
+    gb_yaml_free(&doc);
+
+    p = write_tmp("bad", "a: -3\nb: .nan\nc: \"12\"\nd: 1.5x\n");
+    CHECK(gb_yaml_load(p, &doc, &err) == GB_OK);
+    gb_ymap_open(&doc, fy_document_root(doc.fyd), "", &m, &err);
+    CHECK(gb_ymap_number(&m, "a", GB_Y_POSITIVE, &x, &err) == GB_EINPUT && strstr(err.msg, ":1:4:"));
+    CHECK(gb_ymap_number(&m, "b", 0, &x, &err) == GB_EINPUT && strstr(err.msg, ":2:4:"));
+    CHECK(gb_ymap_number(&m, "c", 0, &x, &err) == GB_EINPUT && strstr(err.msg, "quoted"));
+    CHECK(gb_ymap_number(&m, "d", 0, &x, &err) == GB_EINPUT && strstr(err.msg, ":4:4:"));
+    gb_yaml_free(&doc);
+
+    p = write_tmp("syntax", "a: [1, 2\nb: 3\n");
+    CHECK(gb_yaml_load(p, &doc, &err) == GB_EINPUT);
+    CHECK(strstr(err.msg, "syntax error") != NULL);
+    CHECK(gb_yaml_load("/nonexistent/scene.yaml", &doc, &err) == GB_EINPUT);
+    TEST_END();
+}

@@ -1,0 +1,14 @@
+#!/usr/bin/env bash
+# Installs gembem's build and run dependencies, all Debian 12 packages, by name.
+set -euo pipefail
+packages=(build-essential cmake pkg-config libsuitesparse-dev libopenblas-dev liblapacke-dev
+          gmsh libgmsh-dev libfyaml-dev python3-matplotlib)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  sudo=""; [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${missing[@]}"
+fi
