@@ -1,0 +1,55 @@
+/* The granular element method (Kishino 1989): a simulation of rigid discs with contact springs in a
+ * box of four walls, driven through the scene's loading program by the reference iteration. */
+#ifndef GEMBEM_GEM_H
+#define GEMBEM_GEM_H
+
+#include "gembem/scene.h"
+
+typedef struct gb_sim gb_sim;
+
+/* A contact that carries force. */
+typedef struct {
+    int i, j;          /* grains; j < 0 is the wall -1 - j (GB_WALL_xxx) */
+    double nx, ny;     /* unit normal from i towards j */
+    double overlap;    /* > 0 */
+    double pn, pt;     /* normal (compression positive) and tangential force (K section 2.2) */
+} gb_contact;
+
+/* One converged (or failed) load step. Stresses and strains: compression positive, 1 = vertical. */
+typedef struct {
+    int stage;           /* 0-based stage of the loading program; -1 for the initial state */
+    int step;            /* global step number, 0 = the initial state */
+    int total_steps;
+    double e1, e2, ev;   /* strains since the strain reference; ev = e1 + e2 */
+    double s1, s2;       /* boundary stresses (K section 4.1) */
+    double stress_ratio; /* (s1 - s2)/(s1 + s2), 0 when both vanish */
+    long iterations;
+    double max_fixing_force;  /* largest |F| over the grains (K 14) */
+    double seconds;           /* wall-clock time of the step */
+    int n_contacts;
+    double width, height;
+} gb_step_report;
+
+/* Called after the initial state (step 0) and after every converged step. A non-OK status stops
+ * the run with that error. */
+typedef gb_status (*gb_step_fn)(void *user, const gb_sim *sim, const gb_step_report *rep, gb_error *err);
+
+/* The scene must outlive the simulation. */
+gb_status gb_sim_create(const gb_scene *scene, gb_sim **out, gb_error *err);
+void gb_sim_free(gb_sim *sim);
+
+/* Runs the whole loading program. A step that reaches the iteration cap returns GB_ENOCONV with a
+ * message naming the step and its distance from convergence; the simulation then holds the state of
+ * the last converged step. */
+gb_status gb_sim_run(gb_sim *sim, gb_step_fn on_step, void *user, gb_error *err);
+
+const gb_scene *gb_sim_scene(const gb_sim *sim);
+int gb_sim_n_grains(const gb_sim *sim);
+const gb_grain *gb_sim_grains(const gb_sim *sim);
+gb_box gb_sim_box(const gb_sim *sim);
+/* Copies up to `cap` force-carrying contacts into out (may be NULL) and returns how many there are. */
+int gb_sim_contacts(const gb_sim *sim, gb_contact *out, int cap);
+/* The fixing force (fx, fy, m/r) of grain i (K 5). */
+void gb_sim_fixing_force(const gb_sim *sim, int i, double F[3]);
+
+#endif

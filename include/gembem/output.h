@@ -1,0 +1,27 @@
+/* The run directory: steps.csv, VTK snapshots, the final state, a copy of the scene, run_info.yaml.
+ * A run directory documents itself: the scene and the gembem version are in it. */
+#ifndef GEMBEM_OUTPUT_H
+#define GEMBEM_OUTPUT_H
+
+#include "gembem/gem.h"
+
+typedef struct gb_run_output gb_run_output;
+
+/* Creates (or, with overwrite, reuses) the run directory. `command` is recorded in run_info.yaml. */
+gb_status gb_run_output_open(const char *dir, const gb_scene *scene, int overwrite, const char *command,
+                             gb_run_output **out, gb_error *err);
+/* One row of steps.csv (flushed at once) and the snapshots the scene asks for at this step. */
+gb_status gb_run_output_step(gb_run_output *o, const gb_sim *sim, const gb_step_report *rep, gb_error *err);
+/* Writes the final state (state.yaml, state_grains.csv, state_contacts.csv), records the run's
+ * status in run_info.yaml and frees o. */
+gb_status gb_run_output_close(gb_run_output *o, const gb_sim *sim, gb_status run_status, const char *message,
+                              gb_error *err);
+
+/* The state files alone: a scene can start from dir/state.yaml with `initial_state:`. */
+gb_status gb_state_write(const char *dir, const gb_sim *sim, gb_error *err);
+/* VTK XML PolyData that ParaView opens: grains as points with radius, rotation and |F|; contacts
+ * (and the box) as lines with pn, pt. */
+gb_status gb_vtk_write_grains(const char *path, const gb_sim *sim, gb_error *err);
+gb_status gb_vtk_write_contacts(const char *path, const gb_sim *sim, gb_error *err);
+
+#endif

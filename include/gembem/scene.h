@@ -1,0 +1,87 @@
+/* A granular scene: the validated, immutable description of a run (materials, grains, box, body
+ * force, solver settings, loading program, outputs). Read from YAML by gb_scene_load. */
+#ifndef GEMBEM_SCENE_H
+#define GEMBEM_SCENE_H
+
+#include "gembem/status.h"
+
+/* Contact springs and strength of one contact type (K 3, 4, 13). */
+typedef struct {
+    double kn, kt;        /* normal and tangential spring stiffness [force/length] */
+    double friction_deg;  /* Coulomb friction angle phi [degrees] */
+    double cohesion;      /* c [force] */
+} gb_material;
+
+enum { GB_WALL_LEFT = 0, GB_WALL_RIGHT = 1, GB_WALL_BOTTOM = 2, GB_WALL_TOP = 3, GB_N_WALLS = 4 };
+
+typedef struct {
+    double left, right, bottom, top;
+} gb_box;
+
+typedef struct {
+    double x, y, r;  /* centre and radius */
+    double rot;      /* rotation [rad], counter-clockwise */
+} gb_grain;
+
+/* An initial tangential contact force; the normal force follows from the overlap (pn = kn d). */
+typedef struct {
+    int i, j;   /* grain indices; j < 0 names a wall: j = -1 - GB_WALL_xxx */
+    double pt;
+} gb_contact_init;
+
+typedef enum {
+    GB_STAGE_ISOTROPIC = 0,      /* stress-controlled isotropic compression to `stress` */
+    GB_STAGE_STRAIN = 1,         /* strain-controlled: de1, de2 per step */
+    GB_STAGE_SHEAR_MEAN = 2,     /* constant mean stress shear: d(e1 - e2) per step */
+    GB_STAGE_BIAXIAL_STRESS = 3  /* stress-controlled: s1, s2 targets */
+} gb_stage_kind;
+
+typedef struct {
+    gb_stage_kind kind;
+    int steps;
+    double stress;       /* GB_STAGE_ISOTROPIC: target stress */
+    double s1, s2;       /* GB_STAGE_BIAXIAL_STRESS: target vertical and horizontal stress */
+    double de1, de2;     /* GB_STAGE_STRAIN: strain increments per step (compression positive) */
+    double d_shear;      /* GB_STAGE_SHEAR_MEAN: d(e1 - e2) per step */
+    double mean_stress;  /* GB_STAGE_SHEAR_MEAN: the mean stress held */
+    int reset_strain;    /* strains are measured from the box at the start of this stage */
+} gb_stage;
+
+/* Correction factors of the reference iteration (K 9-12) and its convergence test (K 14). */
+typedef struct {
+    double alpha, alpha1;  /* alpha: case a) and d); alpha1 (alpha'): normal move of case c) */
+    double beta, beta1;    /* beta: drift of a grain without contact, b); beta1 (beta'): rolling, c) */
+    double accuracy;       /* a: every grain's |F| <= a [force] */
+    long max_iterations;   /* cap per load step */
+} gb_solver_settings;
+
+typedef struct {
+    char path[512];          /* the scene file */
+    char length_unit[32], force_unit[32];
+    gb_material grain_grain, grain_wall;
+    int n_grains;
+    gb_grain *grains;
+    int n_contacts;
+    gb_contact_init *contacts;
+    gb_box box;
+    double body_force_per_area[2]; /* force per unit disc area; B_i = this * pi r_i^2 */
+    gb_solver_settings solver;
+    int n_stages;
+    gb_stage *stages;
+    int snapshot_every;      /* write a VTK snapshot every k steps (0: none) */
+    int n_snapshot_steps;
+    int *snapshot_steps;     /* and at these global step numbers */
+} gb_scene;
+
+/* Reads and validates a scene; on any error *out is left empty and err says file:line:column. */
+gb_status gb_scene_load(const char *path, gb_scene *out, gb_error *err);
+void gb_scene_free(gb_scene *s);
+
+/* Default solver settings: the paper's constants for 122 discs (alpha, alpha', beta, beta' =
+ * 0.75, 0.5, 20, 20); accuracy must be given by the scene. */
+gb_solver_settings gb_solver_defaults(void);
+
+/* Total number of load steps of the loading program. */
+int gb_scene_total_steps(const gb_scene *s);
+
+#endif

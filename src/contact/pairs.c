@@ -1,0 +1,208 @@
+#include "contact/pairs.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+void gb_pairs_free(gb_pair_list *L)
+{
+    free(L->p);
+    free(L->tmp);
+    free(L->x0);
+    free(L->cell_head);
+    free(L->cell_next);
+    free(L->cand);
+    memset(L, 0, sizeof *L);
+}
+
+void gb_pair_geometry(gb_pair *p, const gb_grain *g, const gb_box *box)
+{
+    const gb_grain *a = &g[p->i];
+    if (p->j >= 0) {
+        const gb_grain *b = &g[p->j];
+        double dx = b->x - a->x, dy = b->y - a->y, dist = hypot(dx, dy);
+        if (dist > 0) {
+            p->nx = dx / dist;
+            p->ny = dy / dist;
+        } /* coincident centres keep the previous normal rather than invent one */
+        p->d = a->r + b->r - dist;
+        return;
+    }
+    switch (-1 - p->j) {
+    case GB_WALL_LEFT: p->nx = -1, p->ny = 0, p->d = a->r - (a->x - box->left); break;
+    case GB_WALL_RIGHT: p->nx = 1, p->ny = 0, p->d = a->r - (box->right - a->x); break;
+    case GB_WALL_BOTTOM: p->nx = 0, p->ny = -1, p->d = a->r - (a->y - box->bottom); break;
+    default: p->nx = 0, p->ny = 1, p->d = a->r - (box->top - a->y); break;
+    }
+}
+
+void gb_pair_update(gb_pair *p, const gb_grain *g, const gb_box *box, const double *dX,
+                    const double *wall_dx, const gb_material *mat, double tan_phi)
+{
+    int was_contact = p->d > 0;
+    /* (K 25): tangential relative displacement in the previous tangent t = (-ny, nx). */
+    const double *a = &dX[3 * p->i];
+    double bx, by, brot = 0;
+    if (p->j >= 0) {
+        const double *b = &dX[3 * p->j];
+        bx = b[0], by = b[1], brot = b[2];
+    } else {
+        bx = wall_dx[2 * (-1 - p->j)], by = wall_dx[2 * (-1 - p->j) + 1];
+    }
+    double du_t = -(a[0] - bx) * p->ny + (a[1] - by) * p->nx + a[2] + brot;
+    gb_pair_geometry(p, g, box);
+    if (!(p->d > 0)) {
+        p->pn = p->pt = 0; /* opened (K section 2.5): both forces vanish */
+        return;
+    }
+    p->pn = mat->kn * p->d;
+    p->pt = was_contact ? p->pt + mat->kt * du_t : 0.0;
+    double limit = p->pn * tan_phi + mat->cohesion; /* (K 13) */
+    if (p->pt > limit) p->pt = limit;
+    else if (p->pt < -limit) p->pt = -limit;
+}
+
+static int cmp_int(const void *a, const void *b)
+{
+    int x = *(const int *)a, y = *(const int *)b;
+    return (x > y) - (x < y);
+}
+
+static gb_status grow(void **buf, int *cap, int need, size_t size, gb_error *err)
+{
+    if (need <= *cap) return GB_OK;
+    int c = *cap ? *cap : 64;
+    while (c < need) c *= 2;
+    void *q = realloc(*buf, (size_t)c * size);
+    if (!q) return gb_fail(err, GB_ENOMEM, "out of memory for %d contact pairs", c);
+    *buf = q;
+    *cap = c;
+    return GB_OK;
+}
+
+gb_status gb_pairs_rebuild(gb_pair_list *L, const gb_grain *g, int n, const gb_box *box, gb_error *err)
+{
+    gb_status st;
+    double rmax = 0, xmin = box->left, xmax = box->right, ymin = box->bottom, ymax = box->top;
+    for (int i = 0; i < n; i++) {
+        if (g[i].r > rmax) rmax = g[i].r;
+        if (g[i].x < xmin) xmin = g[i].x;
+        if (g[i].x > xmax) xmax = g[i].x;
+        if (g[i].y < ymin) ymin = g[i].y;
+        if (g[i].y > ymax) ymax = g[i].y;
+    }
+    /* Cells of side 2 rmax + skin: every candidate lies in the 3 x 3 cells around a grain. Grids
+     * far finer than the grain count only cost memory, so the cell count is kept near n. */
+    double h = 2 * rmax + L->skin;
+    double span = fmax(xmax - xmin, ymax - ymin);
+    if (span / h > 4.0 * sqrt((double)n) + 4) h = span / (4.0 * sqrt((double)n) + 4);
+    int ncx = (int)((xmax - xmin) / h) + 1, ncy = (int)((ymax - ymin) / h) + 1;
+    int ncells = ncx * ncy;
+    if ((st = grow((void **)&L->cell_head, &L->n_cells_cap, ncells, sizeof(int), err))) return st;
+    if (!L->cell_next && !(L->cell_next = malloc((size_t)(n > 0 ? n : 1) * sizeof(int))))
+        return gb_fail(err, GB_ENOMEM, "out of memory for the cell list");
+    if (!L->x0 && !(L->x0 = malloc((size_t)(2 * (n > 0 ? n : 1)) * sizeof(double))))
+        return gb_fail(err, GB_ENOMEM, "out of memory for the cell list");
+    for (int c = 0; c < ncells; c++) L->cell_head[c] = -1;
+    /* Insert in reverse so that each cell lists its grains in increasing order. */
+    for (int i = n - 1; i >= 0; i--) {
+        int cx = (int)((g[i].x - xmin) / h), cy = (int)((g[i].y - ymin) / h);
+        cx = cx < 0 ? 0 : cx >= ncx ? ncx - 1 : cx;
+        cy = cy < 0 ? 0 : cy >= ncy ? ncy - 1 : cy;
+        L->cell_next[i] = L->cell_head[cy * ncx + cx];
+        L->cell_head[cy * ncx + cx] = i;
+    }
+
+    int m = 0, old = 0;
+    for (int i = 0; i < n; i++) {
+        const gb_grain *a = &g[i];
+        int nc = 0;
+        int cx = (int)((a->x - xmin) / h), cy = (int)((a->y - ymin) / h);
+        cx = cx < 0 ? 0 : cx >= ncx ? ncx - 1 : cx;
+        cy = cy < 0 ? 0 : cy >= ncy ? ncy - 1 : cy;
+        /* Walls first: their indices -1 - w are negative. */
+        double gap[GB_N_WALLS] = {a->x - box->left, box->right - a->x, a->y - box->bottom, box->top - a->y};
+        for (int w = GB_N_WALLS - 1; w >= 0; w--) {
+            if (gap[w] < a->r + L->skin) {
+                if ((st = grow((void **)&L->cand, &L->cand_cap, nc + 1, sizeof(int), err))) return st;
+                L->cand[nc++] = -1 - w;
+            }
+        }
+        int first_grain = nc;
+        for (int y = cy - 1; y <= cy + 1; y++) {
+            if (y < 0 || y >= ncy) continue;
+            for (int x = cx - 1; x <= cx + 1; x++) {
+                if (x < 0 || x >= ncx) continue;
+                for (int j = L->cell_head[y * ncx + x]; j >= 0; j = L->cell_next[j]) {
+                    if (j <= i) continue;
+                    double dx = g[j].x - a->x, dy = g[j].y - a->y, reach = a->r + g[j].r + L->skin;
+                    if (dx * dx + dy * dy >= reach * reach) continue;
+                    if ((st = grow((void **)&L->cand, &L->cand_cap, nc + 1, sizeof(int), err))) return st;
+                    L->cand[nc++] = j;
+                }
+            }
+        }
+        if (nc - first_grain > 1) qsort(L->cand + first_grain, (size_t)(nc - first_grain), sizeof(int), cmp_int);
+        if ((st = grow((void **)&L->tmp, &L->tmp_cap, m + nc, sizeof(gb_pair), err))) return st;
+        for (int k = 0; k < nc; k++) {
+            int j = L->cand[k];
+            /* Merge: the old list is sorted by (i, j) as well. */
+            while (old < L->n && (L->p[old].i < i || (L->p[old].i == i && L->p[old].j < j))) old++;
+            gb_pair *q = &L->tmp[m++];
+            if (old < L->n && L->p[old].i == i && L->p[old].j == j) {
+                *q = L->p[old++];
+            } else {
+                memset(q, 0, sizeof *q);
+                q->i = i;
+                q->j = j;
+                gb_pair_geometry(q, g, box);
+                q->d = 0; /* not yet a contact: its forces start at the next update */
+            }
+        }
+    }
+    /* Swap the lists. */
+    gb_pair *p = L->p;
+    int cap = L->cap;
+    L->p = L->tmp;
+    L->cap = L->tmp_cap;
+    L->n = m;
+    L->tmp = p;
+    L->tmp_cap = cap;
+    for (int i = 0; i < n; i++) {
+        L->x0[2 * i] = g[i].x;
+        L->x0[2 * i + 1] = g[i].y;
+    }
+    L->box0 = *box;
+    L->rebuilds++;
+    return GB_OK;
+}
+
+int gb_pairs_stale(const gb_pair_list *L, const gb_grain *g, int n, const gb_box *box)
+{
+    double wall = fmax(fmax(fabs(box->left - L->box0.left), fabs(box->right - L->box0.right)),
+                       fmax(fabs(box->bottom - L->box0.bottom), fabs(box->top - L->box0.top)));
+    double max2 = 0;
+    for (int i = 0; i < n; i++) {
+        double dx = g[i].x - L->x0[2 * i], dy = g[i].y - L->x0[2 * i + 1], d2 = dx * dx + dy * dy;
+        if (d2 > max2) max2 = d2;
+    }
+    double grain = sqrt(max2);
+    /* A pair's gap shrinks by at most the sum of both sides' displacements. */
+    return 2 * grain >= L->skin || grain + wall >= L->skin;
+}
+
+int gb_pairs_brute_force(const gb_grain *g, int n, double range, int *out_i, int *out_j, int cap)
+{
+    int m = 0;
+    for (int i = 0; i < n; i++)
+        for (int j = i + 1; j < n; j++) {
+            double dx = g[j].x - g[i].x, dy = g[j].y - g[i].y, reach = g[i].r + g[j].r + range;
+            if (dx * dx + dy * dy >= reach * reach) continue;
+            if (m < cap) {
+                out_i[m] = i;
+                out_j[m] = j;
+            }
+            m++;
+        }
+    return m;
+}

@@ -1,0 +1,56 @@
+/* Candidate pairs (a Verlet list built with a cell grid) and the contact model on them:
+ * kinematics (K 1, 2, 25), the spring law (K 3, 4, 6), opening and Coulomb (K 13). */
+#ifndef GB_PAIRS_H
+#define GB_PAIRS_H
+
+#include "gembem/scene.h"
+
+/* A pair of grains, or a grain and a wall, that may touch before the next rebuild. It keeps the
+ * contact's state between iterations. */
+typedef struct {
+    int i, j;        /* j >= 0: grain (j > i); j < 0: wall -1 - j */
+    double nx, ny;   /* unit normal from i towards j, at the last geometry update */
+    double d;        /* overlap; the pair is a contact when d > 0 */
+    double pn, pt;   /* contact forces, compression positive; zero when open */
+} gb_pair;
+
+typedef struct {
+    gb_pair *p;
+    int n, cap;
+    gb_pair *tmp;         /* the next list while rebuilding */
+    int tmp_cap;
+    double skin;          /* extra distance covered by the list */
+    double *x0;           /* grain positions at the last rebuild (2 per grain) */
+    gb_box box0;          /* walls at the last rebuild */
+    int *cell_head, *cell_next, n_cells_cap;
+    int *cand;            /* per-grain candidate buffer */
+    int cand_cap;
+    long rebuilds;
+} gb_pair_list;
+
+void gb_pairs_free(gb_pair_list *L);
+
+/* Rebuilds the candidate pairs from scratch with a cell grid (no O(N^2) loop), carrying over
+ * the state of the pairs that persist. Both lists are sorted by (i, j). */
+gb_status gb_pairs_rebuild(gb_pair_list *L, const gb_grain *g, int n, const gb_box *box, gb_error *err);
+
+/* True when some grain or wall has moved far enough since the last rebuild that a new contact
+ * could be missing from the list. */
+int gb_pairs_stale(const gb_pair_list *L, const gb_grain *g, int n, const gb_box *box);
+
+/* Overlap and normal of a pair at the current positions. */
+void gb_pair_geometry(gb_pair *p, const gb_grain *g, const gb_box *box);
+
+/* Contact forces after a move (K 6, 13): the normal force follows the overlap, pn = kn d (a new
+ * contact starts at kn d, see METHOD.md section 3); the tangential force is incremental,
+ * pt += kt du_t with du_t from (K 25) in the tangent of the previous configuration; a contact
+ * that opens (d <= 0) drops both forces; |pt| is capped at pn tan(phi) + c.
+ * dX holds (dx, dy, r dw) per grain, wall_dx the translation (dx, dy) of each wall. */
+void gb_pair_update(gb_pair *p, const gb_grain *g, const gb_box *box, const double *dX,
+                    const double *wall_dx, const gb_material *mat, double tan_phi);
+
+/* Brute-force O(N^2) candidate pairs within `range` of touching, for tests. Returns the count and
+ * fills out (sorted by (i, j), grains only) up to cap. */
+int gb_pairs_brute_force(const gb_grain *g, int n, double range, int *out_i, int *out_j, int cap);
+
+#endif

@@ -1,0 +1,247 @@
+/* The reference iteration of the granular element method (Kishino 1989, section 2.5, Fig. 1). */
+#include <math.h>
+#include <string.h>
+
+#include "gem/sim.h"
+
+/* A 3x3 contact stiffness counts as singular below this fraction of the product of its diagonal
+ * (Hadamard's bound for a positive semi-definite matrix): exactly singular only when kt = 0. */
+static const double SINGULAR_REL = 1e-10;
+
+static const gb_material *pair_material(const gb_sim *sim, const gb_pair *p)
+{
+    return p->j >= 0 ? &sim->scene->grain_grain : &sim->scene->grain_wall;
+}
+
+void gb_gem_forces(gb_sim *sim)
+{
+    int n = sim->n;
+    memset(sim->F, 0, (size_t)n * 3 * sizeof(double));
+    memset(sim->S, 0, (size_t)n * 6 * sizeof(double));
+    memset(sim->nc, 0, (size_t)n * sizeof(int));
+    for (int w = 0; w < GB_N_WALLS; w++) sim->wall_force[w] = sim->wall_k[w] = 0;
+    for (int i = 0; i < n; i++) {
+        /* (K 5): F = sum T^t P - B */
+        sim->F[3 * i] = -sim->body[2 * i];
+        sim->F[3 * i + 1] = -sim->body[2 * i + 1];
+    }
+    const gb_pair *P = sim->pairs.p;
+    for (int k = 0; k < sim->pairs.n; k++) {
+        const gb_pair *p = &P[k];
+        if (!(p->d > 0)) continue;
+        const gb_material *mat = pair_material(sim, p);
+        double c = p->nx, s = p->ny, kn = mat->kn, kt = mat->kt;
+        /* (K 8): S = sum T^t S_c T with T = [[c, s, 0], [-s, c, 1]] (K 2) */
+        double s00 = kn * c * c + kt * s * s, s01 = (kn - kt) * c * s, s11 = kn * s * s + kt * c * c;
+        double fx = c * p->pn - s * p->pt, fy = s * p->pn + c * p->pt;
+        int i = p->i;
+        double *F = &sim->F[3 * i], *S = &sim->S[6 * i];
+        F[0] += fx, F[1] += fy, F[2] += p->pt;
+        S[0] += s00, S[1] += s01, S[2] += -kt * s, S[3] += s11, S[4] += kt * c, S[5] += kt;
+        sim->nc[i]++;
+        double *one = &sim->one[3 * i];
+        one[0] = c, one[1] = s, one[2] = kn;
+        if (p->j >= 0) {
+            /* B's block T' = [[-c, -s, 0], [s, -c, 1]] (K 25): same moment, opposite force. */
+            int j = p->j;
+            F = &sim->F[3 * j], S = &sim->S[6 * j];
+            F[0] -= fx, F[1] -= fy, F[2] += p->pt;
+            S[0] += s00, S[1] += s01, S[2] += kt * s, S[3] += s11, S[4] += -kt * c, S[5] += kt;
+            sim->nc[j]++;
+            one = &sim->one[3 * j];
+            one[0] = -c, one[1] = -s, one[2] = kn;
+        } else {
+            int w = -1 - p->j;
+            sim->wall_force[w] += p->pn;
+            sim->wall_k[w] += kn;
+        }
+    }
+}
+
+/* Solves the symmetric 2x2 system [a b; b c] x = f, or returns 0 if it is singular. */
+static int solve2(double a, double b, double c, const double f[2], double x[2])
+{
+    double det = a * c - b * b;
+    if (!(det > SINGULAR_REL * a * c) || !(a > 0) || !(c > 0)) return 0;
+    x[0] = (c * f[0] - b * f[1]) / det;
+    x[1] = (a * f[1] - b * f[0]) / det;
+    return 1;
+}
+
+void gb_gem_grain_move(const gb_sim *sim, int i, double dX[3])
+{
+    const gb_solver_settings *sv = &sim->scene->solver;
+    const double *F = &sim->F[3 * i], *S = &sim->S[6 * i], *B = &sim->body[2 * i];
+    double kn = sim->scene->grain_grain.kn;
+    int nc = sim->nc[i];
+    dX[0] = dX[1] = dX[2] = 0;
+    if (nc == 0) {
+        /* b) no contact: drift along the body force (K 10). */
+        dX[0] = sv->beta * B[0] / kn;
+        dX[1] = sv->beta * B[1] / kn;
+        return;
+    }
+    if (nc == 1) {
+        /* c) one contact (K 11): normal move by the normal stiffness; tangentially the grain rolls
+         * over its neighbour under the body force. Rolling means du_t = 0, i.e. r dw = -(dx.t): the
+         * printed third row (0, 1) of (K 11) contradicts the paper's own du_t = 0, we keep du_t = 0. */
+        const double *one = &sim->one[3 * i];
+        double c = one[0], s = one[1], knc = one[2];
+        double a = -sv->alpha1 * (F[0] * c + F[1] * s) / knc;
+        double b = sv->beta1 * (-B[0] * s + B[1] * c) / knc;
+        dX[0] = c * a - s * b;
+        dX[1] = s * a + c * b;
+        dX[2] = -b;
+        return;
+    }
+    /* a) det S != 0: dX = -alpha S^-1 F (K 9), by Cramer's rule on the symmetric 3x3. */
+    double s00 = S[0], s01 = S[1], s02 = S[2], s11 = S[3], s12 = S[4], s22 = S[5];
+    double c00 = s11 * s22 - s12 * s12, c01 = s02 * s12 - s01 * s22, c02 = s01 * s12 - s02 * s11;
+    double det = s00 * c00 + s01 * c01 + s02 * c02;
+    if (det > SINGULAR_REL * s00 * s11 * s22 && s22 > 0) {
+        double c11 = s00 * s22 - s02 * s02, c12 = s01 * s02 - s00 * s12, c22 = s00 * s11 - s01 * s01;
+        double k = -sv->alpha / det;
+        dX[0] = k * (c00 * F[0] + c01 * F[1] + c02 * F[2]);
+        dX[1] = k * (c01 * F[0] + c11 * F[1] + c12 * F[2]);
+        dX[2] = k * (c02 * F[0] + c12 * F[1] + c22 * F[2]);
+        return;
+    }
+    /* d) det S = 0 with two or more contacts (kt = 0): lock the rotation and solve the
+     * translational block (K 12). */
+    double x[2];
+    if (solve2(s00, s01, s11, F, x)) {
+        dX[0] = -sv->alpha * x[0];
+        dX[1] = -sv->alpha * x[1];
+        return;
+    }
+    /* All contact normals are parallel (kt = 0): the block has rank one. Move along the normal by
+     * its stiffness as in d), and along the free direction with the body force as in b). */
+    double tr = s00 + s11;
+    double ex = s00 >= s11 ? 1 : 0, ey = 1 - ex;
+    if (tr > 0) {
+        double nrm = hypot(s00, s01);
+        if (s00 >= s11 && nrm > 0) ex = s00 / nrm, ey = s01 / nrm;
+        else if ((nrm = hypot(s01, s11)) > 0) ex = s01 / nrm, ey = s11 / nrm;
+    }
+    double fn = F[0] * ex + F[1] * ey, bt = -B[0] * ey + B[1] * ex;
+    double an = -sv->alpha * fn / tr, at = sv->beta * bt / kn;
+    dX[0] = an * ex - at * ey;
+    dX[1] = an * ey + at * ex;
+}
+
+/* Wall moves of this iteration; returns the walls' residual force (0 for fixed walls). */
+static double wall_moves(gb_sim *sim, const gb_wall_control *wc)
+{
+    memset(sim->wall_dx, 0, sizeof sim->wall_dx);
+    if (wc->mode == GB_WALLS_FIXED) return 0;
+    const gb_box *b = &sim->box;
+    double W = b->right - b->left, H = b->top - b->bottom;
+    const double *f = sim->wall_force, *k = sim->wall_k;
+    /* A wall that touches nothing moves as if it had one grain-wall contact. */
+    double kmin = sim->scene->grain_wall.kn;
+    double dy, dx, residual;
+    if (wc->mode == GB_WALLS_STRESS) {
+        /* Each axis: the mean force of its two walls against the target stress times the side
+         * (K section 2.6); the walls move symmetrically by their own stiffness, grains held. */
+        double ty = wc->s1 * W - 0.5 * (f[GB_WALL_BOTTOM] + f[GB_WALL_TOP]);
+        double tx = wc->s2 * H - 0.5 * (f[GB_WALL_LEFT] + f[GB_WALL_RIGHT]);
+        dy = ty / fmax(0.5 * (k[GB_WALL_BOTTOM] + k[GB_WALL_TOP]), kmin);
+        dx = tx / fmax(0.5 * (k[GB_WALL_LEFT] + k[GB_WALL_RIGHT]), kmin);
+        residual = fmax(fabs(ty), fabs(tx));
+    } else {
+        /* Constant mean stress: an isotropic strain de (de1 = de2) cancels the mean-stress error
+         * by the walls' stiffness, leaving the imposed shear unchanged (K section 2.6). */
+        double s1 = (f[GB_WALL_BOTTOM] + f[GB_WALL_TOP]) / (2 * W);
+        double s2 = (f[GB_WALL_LEFT] + f[GB_WALL_RIGHT]) / (2 * H);
+        double err = wc->mean - 0.5 * (s1 + s2);
+        double ky = fmax(k[GB_WALL_BOTTOM] + k[GB_WALL_TOP], 2 * kmin);
+        double kx = fmax(k[GB_WALL_LEFT] + k[GB_WALL_RIGHT], 2 * kmin);
+        double dmean_de = 0.5 * (ky * sim->ref_height / (4 * W) + kx * sim->ref_width / (4 * H));
+        double de = err / dmean_de;
+        dy = 0.5 * de * sim->ref_height;
+        dx = 0.5 * de * sim->ref_width;
+        residual = fabs(err) * 0.5 * (W + H);
+    }
+    sim->wall_dx[GB_WALL_BOTTOM][1] = dy;
+    sim->wall_dx[GB_WALL_TOP][1] = -dy;
+    sim->wall_dx[GB_WALL_LEFT][0] = dx;
+    sim->wall_dx[GB_WALL_RIGHT][0] = -dx;
+    return residual;
+}
+
+gb_status gb_gem_apply_moves(gb_sim *sim, gb_error *err)
+{
+    for (int i = 0; i < sim->n; i++) {
+        gb_grain *g = &sim->g[i];
+        const double *d = &sim->dX[3 * i];
+        g->x += d[0];
+        g->y += d[1];
+        g->rot += d[2] / g->r;
+    }
+    gb_box *b = &sim->box;
+    b->left += sim->wall_dx[GB_WALL_LEFT][0];
+    b->right += sim->wall_dx[GB_WALL_RIGHT][0];
+    b->bottom += sim->wall_dx[GB_WALL_BOTTOM][1];
+    b->top += sim->wall_dx[GB_WALL_TOP][1];
+    if (!(b->right > b->left) || !(b->top > b->bottom))
+        return gb_fail(err, GB_ENUMERIC, "the box turned inside out (width %g, height %g): the load step is too "
+                       "large for these springs", b->right - b->left, b->top - b->bottom);
+    if (gb_pairs_stale(&sim->pairs, sim->g, sim->n, b)) {
+        gb_status st = gb_pairs_rebuild(&sim->pairs, sim->g, sim->n, b, err);
+        if (st) return st;
+    }
+    const gb_material *gg = &sim->scene->grain_grain, *gw = &sim->scene->grain_wall;
+    gb_pair *P = sim->pairs.p;
+    for (int k = 0; k < sim->pairs.n; k++) {
+        gb_pair *p = &P[k];
+        if (p->j >= 0) gb_pair_update(p, sim->g, b, sim->dX, &sim->wall_dx[0][0], gg, sim->tan_phi_gg);
+        else gb_pair_update(p, sim->g, b, sim->dX, &sim->wall_dx[0][0], gw, sim->tan_phi_gw);
+    }
+    return GB_OK;
+}
+
+int gb_gem_iterate(gb_sim *sim, const gb_wall_control *wc, double *max_force, double *wall_residual,
+                   gb_error *err, gb_status *st)
+{
+    *st = GB_OK;
+    gb_gem_forces(sim);
+    double max2 = 0;
+    for (int i = 0; i < sim->n; i++) {
+        const double *F = &sim->F[3 * i];
+        double f2 = F[0] * F[0] + F[1] * F[1] + F[2] * F[2];
+        if (f2 > max2 || f2 != f2) max2 = f2;
+    }
+    *max_force = sqrt(max2);
+    *wall_residual = wall_moves(sim, wc);
+    if (!isfinite(*max_force) || !isfinite(*wall_residual)) {
+        *st = gb_fail(err, GB_ENUMERIC, "a fixing force became non-finite");
+        return 0;
+    }
+    double a = sim->scene->solver.accuracy;
+    if (*max_force <= a && *wall_residual <= a) { /* (K 14) */
+        memset(sim->wall_dx, 0, sizeof sim->wall_dx);
+        return 1;
+    }
+    /* Every grain's move from the same configuration, then all at once (order-independent). */
+    for (int i = 0; i < sim->n; i++) gb_gem_grain_move(sim, i, &sim->dX[3 * i]);
+    *st = gb_gem_apply_moves(sim, err);
+    return 0;
+}
+
+gb_status gb_gem_relax(gb_sim *sim, const gb_wall_control *wc, long cap, long *iterations, double *max_force,
+                       double *wall_residual, gb_error *err)
+{
+    gb_status st = GB_OK;
+    for (long it = 0; it <= cap; it++) {
+        if (gb_gem_iterate(sim, wc, max_force, wall_residual, err, &st)) {
+            *iterations += it;
+            return GB_OK;
+        }
+        if (st) {
+            *iterations += it;
+            return st;
+        }
+    }
+    *iterations += cap;
+    return GB_ENOCONV;
+}

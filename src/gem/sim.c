@@ -1,0 +1,318 @@
+/* A granular simulation: set-up from a scene, the loading program, and read access to its state. */
+#define _POSIX_C_SOURCE 199309L
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "gem/sim.h"
+
+static const double PI = 3.14159265358979323846;
+
+static double now_seconds(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+void gb_sim_free(gb_sim *sim)
+{
+    if (!sim) return;
+    free(sim->g);
+    free(sim->body);
+    free(sim->F);
+    free(sim->S);
+    free(sim->dX);
+    free(sim->nc);
+    free(sim->one);
+    free(sim->saved_g);
+    free(sim->saved_pairs);
+    gb_pairs_free(&sim->pairs);
+    free(sim);
+}
+
+static int pair_cmp(const gb_pair *p, int i, int j) { return p->i != i ? (p->i > i) - (p->i < i) : (p->j > j) - (p->j < j); }
+
+/* The pair (i, j) in the sorted list, or NULL. */
+static gb_pair *find_pair(gb_pair_list *L, int i, int j)
+{
+    int lo = 0, hi = L->n - 1;
+    while (lo <= hi) {
+        int mid = (lo + hi) / 2, c = pair_cmp(&L->p[mid], i, j);
+        if (!c) return &L->p[mid];
+        if (c < 0) lo = mid + 1;
+        else hi = mid - 1;
+    }
+    return NULL;
+}
+
+gb_status gb_sim_create(const gb_scene *scene, gb_sim **out, gb_error *err)
+{
+    *out = NULL;
+    gb_sim *sim = calloc(1, sizeof *sim);
+    if (!sim) return gb_fail(err, GB_ENOMEM, "out of memory");
+    int n = scene->n_grains;
+    size_t nn = (size_t)(n > 0 ? n : 1);
+    sim->scene = scene;
+    sim->n = n;
+    sim->g = malloc(nn * sizeof *sim->g);
+    sim->saved_g = malloc(nn * sizeof *sim->g);
+    sim->body = malloc(nn * 2 * sizeof(double));
+    sim->F = calloc(nn * 3, sizeof(double));
+    sim->S = calloc(nn * 6, sizeof(double));
+    sim->dX = calloc(nn * 3, sizeof(double));
+    sim->nc = calloc(nn, sizeof(int));
+    sim->one = calloc(nn * 3, sizeof(double));
+    if (!sim->g || !sim->saved_g || !sim->body || !sim->F || !sim->S || !sim->dX || !sim->nc || !sim->one) {
+        gb_sim_free(sim);
+        return gb_fail(err, GB_ENOMEM, "out of memory for %d grains", n);
+    }
+    memcpy(sim->g, scene->grains, (size_t)n * sizeof *sim->g);
+    double rsum = 0;
+    for (int i = 0; i < n; i++) {
+        double area = PI * sim->g[i].r * sim->g[i].r;
+        sim->body[2 * i] = scene->body_force_per_area[0] * area;
+        sim->body[2 * i + 1] = scene->body_force_per_area[1] * area;
+        rsum += sim->g[i].r;
+    }
+    sim->box = scene->box;
+    sim->ref_width = scene->box.right - scene->box.left;
+    sim->ref_height = scene->box.top - scene->box.bottom;
+    sim->tan_phi_gg = tan(scene->grain_grain.friction_deg * PI / 180);
+    sim->tan_phi_gw = tan(scene->grain_wall.friction_deg * PI / 180);
+    /* The skin trades list length against rebuilds; a fifth of the mean radius keeps both small. */
+    sim->pairs.skin = 0.2 * rsum / n;
+    gb_status st = gb_pairs_rebuild(&sim->pairs, sim->g, n, &sim->box, err);
+    if (st) {
+        gb_sim_free(sim);
+        return st;
+    }
+    /* Initial contacts: pn from the overlap, pt from the scene. */
+    for (int k = 0; k < sim->pairs.n; k++) {
+        gb_pair *p = &sim->pairs.p[k];
+        gb_pair_geometry(p, sim->g, &sim->box);
+        const gb_material *m = p->j >= 0 ? &scene->grain_grain : &scene->grain_wall;
+        p->pn = p->d > 0 ? m->kn * p->d : 0;
+        p->pt = 0;
+    }
+    for (int c = 0; c < scene->n_contacts; c++) {
+        const gb_contact_init *ci = &scene->contacts[c];
+        int i = ci->i, j = ci->j;
+        if (j >= 0 && j < i) i = ci->j, j = ci->i;
+        gb_pair *p = find_pair(&sim->pairs, i, j);
+        if (!p || !(p->d > 0)) {
+            gb_sim_free(sim);
+            return gb_fail(err, GB_EINPUT, "initial contact %d (grains %d, %d) does not overlap", c, ci->i, ci->j);
+        }
+        /* Seen from the lower index the tangential force keeps its sign (K 25). */
+        p->pt = ci->pt;
+    }
+    *out = sim;
+    return GB_OK;
+}
+
+const gb_scene *gb_sim_scene(const gb_sim *sim) { return sim->scene; }
+int gb_sim_n_grains(const gb_sim *sim) { return sim->n; }
+const gb_grain *gb_sim_grains(const gb_sim *sim) { return sim->g; }
+gb_box gb_sim_box(const gb_sim *sim) { return sim->box; }
+
+int gb_sim_contacts(const gb_sim *sim, gb_contact *out, int cap)
+{
+    int m = 0;
+    for (int k = 0; k < sim->pairs.n; k++) {
+        const gb_pair *p = &sim->pairs.p[k];
+        if (!(p->d > 0)) continue;
+        if (out && m < cap) {
+            gb_contact c = {p->i, p->j, p->nx, p->ny, p->d, p->pn, p->pt};
+            out[m] = c;
+        }
+        m++;
+    }
+    return m;
+}
+
+void gb_sim_fixing_force(const gb_sim *sim, int i, double F[3])
+{
+    memcpy(F, &sim->F[3 * i], 3 * sizeof(double));
+}
+
+void gb_gem_stress(const gb_sim *sim, double *s1, double *s2)
+{
+    /* (K section 4.1): the forces on the two walls of a direction over twice the other side. */
+    const gb_box *b = &sim->box;
+    *s1 = (sim->wall_force[GB_WALL_BOTTOM] + sim->wall_force[GB_WALL_TOP]) / (2 * (b->right - b->left));
+    *s2 = (sim->wall_force[GB_WALL_LEFT] + sim->wall_force[GB_WALL_RIGHT]) / (2 * (b->top - b->bottom));
+}
+
+void gb_gem_strain(const gb_sim *sim, double *e1, double *e2)
+{
+    const gb_box *b = &sim->box;
+    *e1 = (sim->ref_height - (b->top - b->bottom)) / sim->ref_height;
+    *e2 = (sim->ref_width - (b->right - b->left)) / sim->ref_width;
+}
+
+static void save_state(gb_sim *sim, gb_error *err, gb_status *st)
+{
+    memcpy(sim->saved_g, sim->g, (size_t)sim->n * sizeof *sim->g);
+    if (sim->pairs.n > sim->saved_cap) {
+        gb_pair *p = realloc(sim->saved_pairs, (size_t)sim->pairs.cap * sizeof *p);
+        if (!p) {
+            *st = gb_fail(err, GB_ENOMEM, "out of memory");
+            return;
+        }
+        sim->saved_pairs = p;
+        sim->saved_cap = sim->pairs.cap;
+    }
+    memcpy(sim->saved_pairs, sim->pairs.p, (size_t)sim->pairs.n * sizeof *sim->pairs.p);
+    sim->saved_n_pairs = sim->pairs.n;
+    sim->saved_box = sim->box;
+}
+
+static void restore_state(gb_sim *sim)
+{
+    memcpy(sim->g, sim->saved_g, (size_t)sim->n * sizeof *sim->g);
+    memcpy(sim->pairs.p, sim->saved_pairs, (size_t)sim->saved_n_pairs * sizeof *sim->pairs.p);
+    sim->pairs.n = sim->saved_n_pairs;
+    sim->box = sim->saved_box;
+    sim->pairs.box0 = sim->box;
+    for (int i = 0; i < sim->n; i++) {
+        sim->pairs.x0[2 * i] = sim->g[i].x;
+        sim->pairs.x0[2 * i + 1] = sim->g[i].y;
+    }
+    gb_gem_forces(sim);
+}
+
+/* Imposes a strain increment (compression positive) on the walls, symmetrically, grains held. */
+static gb_status impose_strain(gb_sim *sim, double de1, double de2, gb_error *err)
+{
+    memset(sim->dX, 0, (size_t)sim->n * 3 * sizeof(double));
+    memset(sim->wall_dx, 0, sizeof sim->wall_dx);
+    double dy = 0.5 * de1 * sim->ref_height, dx = 0.5 * de2 * sim->ref_width;
+    sim->wall_dx[GB_WALL_BOTTOM][1] = dy;
+    sim->wall_dx[GB_WALL_TOP][1] = -dy;
+    sim->wall_dx[GB_WALL_LEFT][0] = dx;
+    sim->wall_dx[GB_WALL_RIGHT][0] = -dx;
+    return gb_gem_apply_moves(sim, err);
+}
+
+static void fill_report(gb_sim *sim, gb_step_report *r)
+{
+    gb_gem_forces(sim);
+    double max2 = 0;
+    for (int i = 0; i < sim->n; i++) {
+        const double *F = &sim->F[3 * i];
+        double f2 = F[0] * F[0] + F[1] * F[1] + F[2] * F[2];
+        if (f2 > max2) max2 = f2;
+    }
+    r->max_fixing_force = sqrt(max2);
+    gb_gem_stress(sim, &r->s1, &r->s2);
+    gb_gem_strain(sim, &r->e1, &r->e2);
+    r->ev = r->e1 + r->e2;
+    double sum = r->s1 + r->s2;
+    r->stress_ratio = sum != 0 ? (r->s1 - r->s2) / sum : 0;
+    r->n_contacts = gb_sim_contacts(sim, NULL, 0);
+    r->width = sim->box.right - sim->box.left;
+    r->height = sim->box.top - sim->box.bottom;
+}
+
+static const char *stage_name(gb_stage_kind k)
+{
+    switch (k) {
+    case GB_STAGE_ISOTROPIC: return "isotropic";
+    case GB_STAGE_STRAIN: return "strain";
+    case GB_STAGE_SHEAR_MEAN: return "shear_mean_stress";
+    default: return "biaxial_stress";
+    }
+}
+
+/* One load step of a stage: the walls' control, then relaxation to equilibrium. */
+static gb_status load_step(gb_sim *sim, const gb_stage *sg, int k, const double start[2], long *iters,
+                           double *max_force, double *residual, gb_error *err)
+{
+    long cap = sim->scene->solver.max_iterations;
+    gb_wall_control wc = {GB_WALLS_FIXED, 0, 0, 0};
+    gb_status st;
+    double f = (double)k / sg->steps;
+    switch (sg->kind) {
+    case GB_STAGE_ISOTROPIC:
+        wc.mode = GB_WALLS_STRESS;
+        wc.s1 = start[0] + (sg->stress - start[0]) * f;
+        wc.s2 = start[1] + (sg->stress - start[1]) * f;
+        return gb_gem_relax(sim, &wc, cap, iters, max_force, residual, err);
+    case GB_STAGE_BIAXIAL_STRESS:
+        wc.mode = GB_WALLS_STRESS;
+        wc.s1 = start[0] + (sg->s1 - start[0]) * f;
+        wc.s2 = start[1] + (sg->s2 - start[1]) * f;
+        return gb_gem_relax(sim, &wc, cap, iters, max_force, residual, err);
+    case GB_STAGE_STRAIN:
+        if ((st = impose_strain(sim, sg->de1, sg->de2, err))) return st;
+        return gb_gem_relax(sim, &wc, cap, iters, max_force, residual, err);
+    case GB_STAGE_SHEAR_MEAN:
+        /* The shear increment, equilibrium with the walls held, then the mean stress restored by an
+         * isotropic strain under stress control (K section 2.6). */
+        if ((st = impose_strain(sim, 0.5 * sg->d_shear, -0.5 * sg->d_shear, err))) return st;
+        if ((st = gb_gem_relax(sim, &wc, cap, iters, max_force, residual, err))) return st;
+        wc.mode = GB_WALLS_MEAN;
+        wc.mean = sg->mean_stress;
+        return gb_gem_relax(sim, &wc, cap - *iters, iters, max_force, residual, err);
+    }
+    return GB_EINTERNAL;
+}
+
+gb_status gb_sim_run(gb_sim *sim, gb_step_fn on_step, void *user, gb_error *err)
+{
+    const gb_scene *sc = sim->scene;
+    gb_status st = GB_OK;
+    gb_step_report rep;
+    memset(&rep, 0, sizeof rep);
+    rep.stage = -1;
+    rep.total_steps = gb_scene_total_steps(sc);
+    fill_report(sim, &rep);
+    save_state(sim, err, &st);
+    if (!st && on_step) st = on_step(user, sim, &rep, err);
+    int step = 0;
+    for (int s = 0; s < sc->n_stages && !st; s++) {
+        const gb_stage *sg = &sc->stages[s];
+        if (sg->reset_strain) {
+            sim->ref_width = sim->box.right - sim->box.left;
+            sim->ref_height = sim->box.top - sim->box.bottom;
+        }
+        double start[2];
+        gb_gem_forces(sim);
+        gb_gem_stress(sim, &start[0], &start[1]);
+        for (int k = 1; k <= sg->steps && !st; k++) {
+            double t0 = now_seconds(), max_force = 0, residual = 0;
+            long iters = 0;
+            step++;
+            st = load_step(sim, sg, k, start, &iters, &max_force, &residual, err);
+            sim->iterations_total += iters;
+            if (st == GB_ENOCONV) {
+                st = gb_fail(err, GB_ENOCONV,
+                             "step %d (stage %d '%s', step %d of %d) did not converge in %ld iterations: largest "
+                             "fixing force %.6g, walls off their target by %.6g (accuracy a = %g); the outputs "
+                             "hold the %d completed steps",
+                             step, s + 1, stage_name(sg->kind), k, sg->steps, iters, max_force, residual,
+                             sc->solver.accuracy, step - 1);
+            } else if (st) {
+                char msg[GB_ERROR_MSG_MAX];
+                snprintf(msg, sizeof msg, "%s", err->msg);
+                st = gb_fail(err, st, "step %d (stage %d '%s', step %d of %d): %s", step, s + 1,
+                             stage_name(sg->kind), k, sg->steps, msg);
+            }
+            if (st) {
+                restore_state(sim);
+                break;
+            }
+            rep.stage = s;
+            rep.step = step;
+            rep.iterations = iters;
+            fill_report(sim, &rep);
+            rep.seconds = now_seconds() - t0;
+            save_state(sim, err, &st);
+            if (!st && on_step) st = on_step(user, sim, &rep, err);
+        }
+    }
+    return st;
+}

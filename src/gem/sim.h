@@ -1,0 +1,69 @@
+/* The state of a granular simulation (private to src/gem). */
+#ifndef GB_SIM_H
+#define GB_SIM_H
+
+#include "contact/pairs.h"
+#include "gembem/gem.h"
+
+/* How the walls move during one relaxation. */
+typedef enum {
+    GB_WALLS_FIXED = 0,  /* strain control: the step's displacement was imposed, walls stay */
+    GB_WALLS_STRESS,     /* each axis moves to reach target stresses s1 (vertical), s2 (horizontal) */
+    GB_WALLS_MEAN        /* an isotropic strain moves the walls to reach the mean stress */
+} gb_wall_mode;
+
+typedef struct {
+    gb_wall_mode mode;
+    double s1, s2;  /* GB_WALLS_STRESS targets */
+    double mean;    /* GB_WALLS_MEAN target */
+} gb_wall_control;
+
+struct gb_sim {
+    const gb_scene *scene;
+    int n;
+    gb_grain *g;
+    double *body;       /* B per grain: bx, by */
+    double *F;          /* fixing force per grain (K 5): fx, fy, m/r */
+    double *S;          /* contact stiffness per grain (K 8): s00 s01 s02 s11 s12 s22 */
+    double *dX;         /* move of the iteration: dx, dy, r dw */
+    int *nc;            /* contacts per grain */
+    double *one;        /* per grain, of its last contact: normal towards the other side, kn */
+    gb_pair_list pairs;
+    gb_box box;
+    double wall_force[GB_N_WALLS]; /* normal force of the grains on each wall (compression +) */
+    double wall_k[GB_N_WALLS];     /* wall contact stiffness: sum of kn of its contacts */
+    double wall_dx[GB_N_WALLS][2]; /* wall translation of the current iteration */
+    double ref_width, ref_height;  /* strain reference */
+    double tan_phi_gg, tan_phi_gw;
+    /* The last converged state, restored when a step fails. */
+    gb_grain *saved_g;
+    gb_pair *saved_pairs;
+    int saved_n_pairs, saved_cap;
+    gb_box saved_box;
+    long iterations_total;
+};
+
+/* One iteration of the reference method (K section 2.5, Fig. 1): F and S of every grain, then,
+ * unless converged, the simultaneous moves of grains and walls and the contact update.
+ * Returns 1 when converged (every |F| <= a and the walls at their targets), 0 otherwise. */
+int gb_gem_iterate(gb_sim *sim, const gb_wall_control *wc, double *max_force, double *wall_residual,
+                   gb_error *err, gb_status *st);
+
+/* F, S, contacts per grain and the walls' forces and stiffnesses, from the current contacts. */
+void gb_gem_forces(gb_sim *sim);
+
+/* Moves grains by dX and walls by wall_dx simultaneously, then updates every contact. */
+gb_status gb_gem_apply_moves(gb_sim *sim, gb_error *err);
+
+/* Relaxes to equilibrium under the wall control, at most `cap` iterations. */
+gb_status gb_gem_relax(gb_sim *sim, const gb_wall_control *wc, long cap, long *iterations, double *max_force,
+                       double *wall_residual, gb_error *err);
+
+/* Boundary stresses (K section 4.1) and strains from the walls. */
+void gb_gem_stress(const gb_sim *sim, double *s1, double *s2);
+void gb_gem_strain(const gb_sim *sim, double *e1, double *e2);
+
+/* The move of one grain by cases a) to d) of K section 2.5, from its F, S and contacts. */
+void gb_gem_grain_move(const gb_sim *sim, int i, double dX[3]);
+
+#endif

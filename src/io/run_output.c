@@ -1,0 +1,186 @@
+/* The run directory of `gembem run`. */
+#define _POSIX_C_SOURCE 200809L
+#include <dirent.h>
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+
+#include "gembem/output.h"
+#include "io/file_util.h"
+
+struct gb_run_output {
+    char dir[900];
+    const gb_scene *scene;
+    FILE *steps;
+    char command[1024];
+    char started[64];
+    int *snap_steps, n_snaps; /* steps that were written, for the .pvd collection */
+    int snap_cap;
+};
+
+static int dir_is_empty(const char *path)
+{
+    DIR *d = opendir(path);
+    if (!d) return 0;
+    struct dirent *e;
+    int empty = 1;
+    while (empty && (e = readdir(d)))
+        if (strcmp(e->d_name, ".") && strcmp(e->d_name, "..")) empty = 0;
+    closedir(d);
+    return empty;
+}
+
+/* mkdir -p */
+static gb_status make_dirs(const char *path, gb_error *err)
+{
+    char buf[1024];
+    snprintf(buf, sizeof buf, "%s", path);
+    for (char *p = buf + 1; *p; p++) {
+        if (*p != '/') continue;
+        *p = '\0';
+        if (mkdir(buf, 0777) != 0 && errno != EEXIST) return gb_fail(err, GB_EIO, "%s: %s", buf, strerror(errno));
+        *p = '/';
+    }
+    if (mkdir(buf, 0777) != 0 && errno != EEXIST) return gb_fail(err, GB_EIO, "%s: %s", buf, strerror(errno));
+    return GB_OK;
+}
+
+static gb_status copy_file(const char *from, const char *to, gb_error *err)
+{
+    FILE *in = fopen(from, "rb");
+    if (!in) return gb_fail(err, GB_EIO, "%s: %s", from, strerror(errno));
+    gb_atomic_file a;
+    gb_status st = gb_atomic_open(&a, to, err);
+    if (st) {
+        fclose(in);
+        return st;
+    }
+    char buf[65536];
+    size_t k;
+    while ((k = fread(buf, 1, sizeof buf, in)) > 0) fwrite(buf, 1, k, a.f);
+    fclose(in);
+    return gb_atomic_commit(&a, err);
+}
+
+static gb_status write_info(const gb_run_output *o, const char *status, const char *message, gb_error *err)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/run_info.yaml", o->dir);
+    gb_atomic_file a;
+    gb_status st = gb_atomic_open(&a, path, err);
+    if (st) return st;
+    fprintf(a.f, "# How this run directory was made.\ngembem_version: %s\ncommand: \"%s\"\nscene: \"%s\"\nstarted: %s\n",
+            gb_version(), o->command, o->scene->path, o->started);
+    const char *threads = getenv("OPENBLAS_NUM_THREADS");
+    fprintf(a.f, "openblas_threads: \"%s\"\nstatus: %s\n", threads ? threads : "default", status);
+    if (message) {
+        fprintf(a.f, "message: \"");
+        for (const char *c = message; *c; c++) fputc(*c == '"' ? '\'' : *c, a.f);
+        fprintf(a.f, "\"\n");
+    }
+    return gb_atomic_commit(&a, err);
+}
+
+gb_status gb_run_output_open(const char *dir, const gb_scene *scene, int overwrite, const char *command,
+                             gb_run_output **out, gb_error *err)
+{
+    *out = NULL;
+    struct stat sb;
+    if (stat(dir, &sb) == 0) {
+        if (!S_ISDIR(sb.st_mode)) return gb_fail(err, GB_EINPUT, "%s exists and is not a directory", dir);
+        if (!overwrite && !dir_is_empty(dir))
+            return gb_fail(err, GB_EINPUT, "run directory %s exists and is not empty; choose another or pass "
+                                           "--overwrite", dir);
+    }
+    gb_status st = make_dirs(dir, err);
+    if (st) return st;
+    gb_run_output *o = calloc(1, sizeof *o);
+    if (!o) return gb_fail(err, GB_ENOMEM, "out of memory");
+    snprintf(o->dir, sizeof o->dir, "%s", dir);
+    snprintf(o->command, sizeof o->command, "%s", command);
+    o->scene = scene;
+    time_t now = time(NULL);
+    strftime(o->started, sizeof o->started, "%Y-%m-%dT%H:%M:%SZ", gmtime(&now));
+    char path[1024];
+    snprintf(path, sizeof path, "%s/scene.yaml", dir);
+    if ((st = copy_file(scene->path, path, err)) || (st = write_info(o, "running", NULL, err))) {
+        free(o);
+        return st;
+    }
+    snprintf(path, sizeof path, "%s/steps.csv", dir);
+    if (!(o->steps = fopen(path, "w"))) {
+        free(o);
+        return gb_fail(err, GB_EIO, "%s: %s", path, strerror(errno));
+    }
+    fprintf(o->steps, "step,stage,e1_minus_e2,e1,e2,ev,s1,s2,stress_ratio,iterations,max_fixing_force,seconds,"
+                      "contacts,width,height\n");
+    fflush(o->steps);
+    *out = o;
+    return GB_OK;
+}
+
+static int snapshot_due(const gb_scene *s, int step)
+{
+    if (s->snapshot_every > 0 && step % s->snapshot_every == 0) return 1;
+    for (int k = 0; k < s->n_snapshot_steps; k++)
+        if (s->snapshot_steps[k] == step) return 1;
+    return 0;
+}
+
+static gb_status write_pvd(const gb_run_output *o, const char *what, gb_error *err)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/%s.pvd", o->dir, what);
+    gb_atomic_file a;
+    gb_status st = gb_atomic_open(&a, path, err);
+    if (st) return st;
+    fprintf(a.f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n");
+    for (int k = 0; k < o->n_snaps; k++)
+        fprintf(a.f, "<DataSet timestep=\"%d\" file=\"snapshots/%s_%06d.vtp\"/>\n", o->snap_steps[k], what,
+                o->snap_steps[k]);
+    fprintf(a.f, "</Collection>\n</VTKFile>\n");
+    return gb_atomic_commit(&a, err);
+}
+
+gb_status gb_run_output_step(gb_run_output *o, const gb_sim *sim, const gb_step_report *r, gb_error *err)
+{
+    fprintf(o->steps, "%d,%d,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%ld,%.6e,%.6e,%d,%.17g,%.17g\n", r->step,
+            r->stage + 1, r->e1 - r->e2, r->e1, r->e2, r->ev, r->s1, r->s2, r->stress_ratio, r->iterations,
+            r->max_fixing_force, r->seconds, r->n_contacts, r->width, r->height);
+    if (fflush(o->steps) != 0 || ferror(o->steps)) return gb_fail(err, GB_EIO, "%s/steps.csv: write failed", o->dir);
+    if (!snapshot_due(o->scene, r->step)) return GB_OK;
+    char path[1024];
+    snprintf(path, sizeof path, "%s/snapshots", o->dir);
+    gb_status st = make_dirs(path, err);
+    if (st) return st;
+    snprintf(path, sizeof path, "%s/snapshots/grains_%06d.vtp", o->dir, r->step);
+    if ((st = gb_vtk_write_grains(path, sim, err))) return st;
+    snprintf(path, sizeof path, "%s/snapshots/contacts_%06d.vtp", o->dir, r->step);
+    if ((st = gb_vtk_write_contacts(path, sim, err))) return st;
+    if (o->n_snaps == o->snap_cap) {
+        int cap = o->snap_cap ? 2 * o->snap_cap : 16;
+        int *p = realloc(o->snap_steps, (size_t)cap * sizeof *p);
+        if (!p) return gb_fail(err, GB_ENOMEM, "out of memory");
+        o->snap_steps = p;
+        o->snap_cap = cap;
+    }
+    o->snap_steps[o->n_snaps++] = r->step;
+    if ((st = write_pvd(o, "grains", err))) return st;
+    return write_pvd(o, "contacts", err);
+}
+
+gb_status gb_run_output_close(gb_run_output *o, const gb_sim *sim, gb_status run_status, const char *message,
+                              gb_error *err)
+{
+    gb_status st = GB_OK;
+    if (o->steps && fclose(o->steps) != 0) st = gb_fail(err, GB_EIO, "%s/steps.csv: write failed", o->dir);
+    o->steps = NULL;
+    if (!st && sim) st = gb_state_write(o->dir, sim, err);
+    if (!st) st = write_info(o, run_status == GB_OK ? "completed" : gb_status_name(run_status), message, err);
+    free(o->snap_steps);
+    free(o);
+    return st;
+}

@@ -1,0 +1,285 @@
+/* The granular scene file: see validation/three_discs/case1.yaml for a commented example. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "gembem/scene.h"
+#include "scene/grains_file.h"
+#include "scene/yaml_read.h"
+
+
+gb_solver_settings gb_solver_defaults(void)
+{
+    gb_solver_settings s = {0.75, 0.5, 20.0, 20.0, 0.0, 100000};
+    return s;
+}
+
+void gb_scene_free(gb_scene *s)
+{
+    if (!s) return;
+    free(s->grains);
+    free(s->contacts);
+    free(s->stages);
+    free(s->snapshot_steps);
+    memset(s, 0, sizeof *s);
+}
+
+int gb_scene_total_steps(const gb_scene *s)
+{
+    int n = 0;
+    for (int k = 0; k < s->n_stages; k++) n += s->stages[k].steps;
+    return n;
+}
+
+static gb_status read_material(gb_ymap *parent, const char *key, gb_material *mat, gb_error *err)
+{
+    gb_ymap m;
+    gb_status st;
+    mat->cohesion = 0;
+    if ((st = gb_ymap_map(parent, key, GB_Y_REQUIRED, &m, err)) ||
+        (st = gb_ymap_number(&m, "kn", GB_Y_REQUIRED | GB_Y_POSITIVE, &mat->kn, err)) ||
+        (st = gb_ymap_number(&m, "kt", GB_Y_REQUIRED | GB_Y_NONNEG, &mat->kt, err)) ||
+        (st = gb_ymap_number(&m, "friction_deg", GB_Y_REQUIRED | GB_Y_NONNEG, &mat->friction_deg, err)) ||
+        (st = gb_ymap_number(&m, "cohesion", GB_Y_NONNEG, &mat->cohesion, err)))
+        return st;
+    if (!(mat->friction_deg < 90)) {
+        struct fy_node *v;
+        gb_ymap_find(&m, "friction_deg", 0, &v, err);
+        return gb_yaml_fail(m.doc, v, err, "%s.friction_deg: expected an angle from 0 to below 90 degrees", m.name);
+    }
+    return gb_ymap_close(&m, err);
+}
+
+static gb_status read_body_force(gb_ymap *top, gb_scene *s, gb_error *err)
+{
+    gb_ymap m;
+    gb_status st;
+    if ((st = gb_ymap_map(top, "body_force", 0, &m, err))) return st;
+    double w = -1, g[2] = {0, 0}, rho = -1;
+    struct fy_node *gv;
+    if ((st = gb_ymap_number(&m, "weight_per_area", GB_Y_NONNEG, &w, err)) ||
+        (st = gb_ymap_find(&m, "gravity", 0, &gv, err)) || (st = gb_ymap_vector(&m, "gravity", 0, 2, g, err)) ||
+        (st = gb_ymap_number(&m, "density", GB_Y_POSITIVE, &rho, err)) || (st = gb_ymap_close(&m, err)))
+        return st;
+    if (w >= 0 && (gv || rho >= 0))
+        return gb_yaml_fail(m.doc, m.node, err, "body_force: give either weight_per_area (downwards) or gravity "
+                                                "and density, not both");
+    if (!gv != !(rho >= 0))
+        return gb_yaml_fail(m.doc, m.node, err, "body_force: gravity [gx, gy] and density go together");
+    if (w >= 0) {
+        s->body_force_per_area[0] = 0;
+        s->body_force_per_area[1] = -w;
+    } else if (gv) {
+        s->body_force_per_area[0] = rho * g[0];
+        s->body_force_per_area[1] = rho * g[1];
+    }
+    return GB_OK;
+}
+
+static gb_status read_solver(gb_ymap *top, gb_solver_settings *sv, gb_error *err)
+{
+    gb_ymap m;
+    gb_status st;
+    *sv = gb_solver_defaults();
+    if ((st = gb_ymap_map(top, "solver", GB_Y_REQUIRED, &m, err))) return st;
+    char method[32] = "reference";
+    if ((st = gb_ymap_string(&m, "method", 0, method, sizeof method, err))) return st;
+    if (strcmp(method, "reference")) {
+        struct fy_node *v;
+        gb_ymap_find(&m, "method", 0, &v, err);
+        return gb_yaml_fail(m.doc, v, err, "solver.method: expected 'reference' (the GEM iteration), found '%s'",
+                            method);
+    }
+    if ((st = gb_ymap_number(&m, "alpha", GB_Y_POSITIVE, &sv->alpha, err)) ||
+        (st = gb_ymap_number(&m, "alpha1", GB_Y_POSITIVE, &sv->alpha1, err)) ||
+        (st = gb_ymap_number(&m, "beta", GB_Y_NONNEG, &sv->beta, err)) ||
+        (st = gb_ymap_number(&m, "beta1", GB_Y_NONNEG, &sv->beta1, err)) ||
+        (st = gb_ymap_number(&m, "accuracy", GB_Y_REQUIRED | GB_Y_POSITIVE, &sv->accuracy, err)) ||
+        (st = gb_ymap_int(&m, "max_iterations", 0, 1, 2000000000L, &sv->max_iterations, err)))
+        return st;
+    if (!(sv->alpha <= 1.5) || !(sv->alpha1 <= 1.5))
+        return gb_yaml_fail(m.doc, m.node, err, "solver: expected alpha and alpha1 in (0, 1.5]; the paper uses "
+                                                "alpha < 1 because neighbours move too");
+    return gb_ymap_close(&m, err);
+}
+
+static gb_status read_stage(const gb_yaml_doc *doc, struct fy_node *item, int k, gb_stage *sg, gb_error *err)
+{
+    char name[64];
+    snprintf(name, sizeof name, "loading[%d]", k);
+    if (fy_node_get_type(item) != FYNT_MAPPING || fy_node_mapping_item_count(item) != 1)
+        return gb_yaml_fail(doc, item, err, "%s: expected one stage, e.g. '- isotropic: {stress: 1.5e6, steps: 20}'",
+                            name);
+    void *it = NULL;
+    struct fy_node_pair *p = fy_node_mapping_iterate(item, &it);
+    size_t len = 0;
+    const char *kind = fy_node_get_scalar(fy_node_pair_key(p), &len);
+    static const char *const kinds[] = {"isotropic", "strain", "shear_mean_stress", "biaxial_stress"};
+    int kk = -1;
+    for (int q = 0; q < 4; q++)
+        if (kind && strlen(kinds[q]) == len && !strncmp(kinds[q], kind, len)) kk = q;
+    if (kk < 0)
+        return gb_yaml_fail(doc, fy_node_pair_key(p), err,
+                            "%s: unknown stage '%.*s'; expected isotropic, strain, shear_mean_stress or biaxial_stress",
+                            name, (int)len, kind ? kind : "");
+    gb_ymap m;
+    gb_status st;
+    char sub[96];
+    snprintf(sub, sizeof sub, "%s.%s", name, kinds[kk]);
+    if ((st = gb_ymap_open(doc, fy_node_pair_value(p), sub, &m, err))) return st;
+    memset(sg, 0, sizeof *sg);
+    long steps = 0;
+    if ((st = gb_ymap_int(&m, "steps", GB_Y_REQUIRED, 1, 100000000L, &steps, err)) ||
+        (st = gb_ymap_bool(&m, "reset_strain", 0, &sg->reset_strain, err)))
+        return st;
+    sg->steps = (int)steps;
+    switch (kk) {
+    case 0:
+        sg->kind = GB_STAGE_ISOTROPIC;
+        st = gb_ymap_number(&m, "stress", GB_Y_REQUIRED | GB_Y_POSITIVE, &sg->stress, err);
+        break;
+    case 1:
+        sg->kind = GB_STAGE_STRAIN;
+        if (!(st = gb_ymap_number(&m, "de1", GB_Y_REQUIRED, &sg->de1, err)))
+            st = gb_ymap_number(&m, "de2", GB_Y_REQUIRED, &sg->de2, err);
+        break;
+    case 2:
+        sg->kind = GB_STAGE_SHEAR_MEAN;
+        if (!(st = gb_ymap_number(&m, "d_e1_minus_e2", GB_Y_REQUIRED, &sg->d_shear, err)))
+            st = gb_ymap_number(&m, "mean_stress", GB_Y_REQUIRED | GB_Y_POSITIVE, &sg->mean_stress, err);
+        break;
+    default:
+        sg->kind = GB_STAGE_BIAXIAL_STRESS;
+        if (!(st = gb_ymap_number(&m, "s1", GB_Y_REQUIRED | GB_Y_POSITIVE, &sg->s1, err)))
+            st = gb_ymap_number(&m, "s2", GB_Y_REQUIRED | GB_Y_POSITIVE, &sg->s2, err);
+        break;
+    }
+    if (st) return st;
+    /* A strain increment of a whole side or more per step would turn the box inside out. */
+    double worst = fmax(fabs(sg->de1), fmax(fabs(sg->de2), fabs(sg->d_shear)));
+    if (!(worst < 0.5))
+        return gb_yaml_fail(doc, m.node, err, "%s: expected strain increments per step below 0.5", sub);
+    return gb_ymap_close(&m, err);
+}
+
+static gb_status read_loading(gb_ymap *top, gb_scene *s, gb_error *err)
+{
+    struct fy_node *list;
+    gb_status st = gb_ymap_find(top, "loading", GB_Y_REQUIRED, &list, err);
+    if (st) return st;
+    if (fy_node_get_type(list) != FYNT_SEQUENCE || fy_node_sequence_item_count(list) < 1)
+        return gb_yaml_fail(top->doc, list, err, "loading: expected a list of stages");
+    int n = fy_node_sequence_item_count(list);
+    if (!(s->stages = calloc((size_t)n, sizeof *s->stages))) return gb_fail(err, GB_ENOMEM, "out of memory");
+    for (int k = 0; k < n; k++) {
+        if ((st = read_stage(top->doc, fy_node_sequence_get_by_index(list, k), k, &s->stages[k], err))) return st;
+        s->n_stages++;
+    }
+    return GB_OK;
+}
+
+static gb_status read_output(gb_ymap *top, gb_scene *s, gb_error *err)
+{
+    gb_ymap m;
+    gb_status st;
+    long every = 0;
+    struct fy_node *list;
+    if ((st = gb_ymap_map(top, "output", 0, &m, err)) ||
+        (st = gb_ymap_int(&m, "snapshot_every", 0, 0, 100000000L, &every, err)) ||
+        (st = gb_ymap_find(&m, "snapshot_steps", 0, &list, err)))
+        return st;
+    s->snapshot_every = (int)every;
+    if (list) {
+        int total = gb_scene_total_steps(s);
+        if (fy_node_get_type(list) != FYNT_SEQUENCE)
+            return gb_yaml_fail(m.doc, list, err, "output.snapshot_steps: expected a list of step numbers");
+        int n = fy_node_sequence_item_count(list);
+        if (!(s->snapshot_steps = calloc((size_t)(n > 0 ? n : 1), sizeof(int)))) return gb_fail(err, GB_ENOMEM, "oom");
+        for (int k = 0; k < n; k++) {
+            struct fy_node *v = fy_node_sequence_get_by_index(list, k);
+            double x;
+            if ((st = gb_yaml_number(m.doc, v, "output.snapshot_steps", &x, err))) return st;
+            if (x != floor(x) || x < 0 || x > total)
+                return gb_yaml_fail(m.doc, v, err, "output.snapshot_steps: expected step numbers from 0 to %d", total);
+            s->snapshot_steps[s->n_snapshot_steps++] = (int)x;
+        }
+    }
+    return gb_ymap_close(&m, err);
+}
+
+/* A state written by a previous run: its box, grains and contact forces. */
+static gb_status read_initial_state(gb_ymap *top, gb_scene *s, gb_error *err)
+{
+    char name[512], path[1024];
+    gb_status st = gb_ymap_string(top, "initial_state", GB_Y_REQUIRED, name, sizeof name, err);
+    if (st) return st;
+    gb_yaml_relative_path(top->doc, name, path, sizeof path);
+    gb_yaml_doc doc;
+    if ((st = gb_yaml_load(path, &doc, err))) return st;
+    gb_ymap m, g;
+    double version = 0;
+    if (!(st = gb_ymap_open(&doc, fy_document_root(doc.fyd), "", &m, err)) &&
+        !(st = gb_ymap_number(&m, "gembem_state", GB_Y_REQUIRED, &version, err)) &&
+        !(st = gb_box_read(&m, &s->box, err)) && !(st = gb_ymap_map(&m, "grains", GB_Y_REQUIRED, &g, err)) &&
+        !(st = gb_grains_section_read(&g, s, err)) && !(st = gb_ymap_close(&m, err)) && version != 1)
+        st = gb_yaml_fail(&doc, m.node, err, "gembem_state: expected version 1");
+    if (!st) st = gb_grains_check(s, doc.path, err);
+    gb_yaml_free(&doc);
+    return st;
+}
+
+static gb_status load(const gb_yaml_doc *doc, gb_scene *s, gb_error *err)
+{
+    gb_ymap top, units;
+    gb_status st;
+    double version = 0;
+    if ((st = gb_ymap_open(doc, fy_document_root(doc->fyd), "", &top, err)) ||
+        (st = gb_ymap_number(&top, "gembem", GB_Y_REQUIRED, &version, err)))
+        return st;
+    if (version != 1) return gb_yaml_fail(doc, top.node, err, "gembem: expected scene format version 1");
+    if ((st = gb_ymap_map(&top, "units", GB_Y_REQUIRED, &units, err)) ||
+        (st = gb_ymap_string(&units, "length", GB_Y_REQUIRED, s->length_unit, sizeof s->length_unit, err)) ||
+        (st = gb_ymap_string(&units, "force", GB_Y_REQUIRED, s->force_unit, sizeof s->force_unit, err)) ||
+        (st = gb_ymap_close(&units, err)))
+        return st;
+    gb_ymap mats;
+    if ((st = gb_ymap_map(&top, "materials", GB_Y_REQUIRED, &mats, err)) ||
+        (st = read_material(&mats, "grain_grain", &s->grain_grain, err)) ||
+        (st = read_material(&mats, "grain_wall", &s->grain_wall, err)) || (st = gb_ymap_close(&mats, err)))
+        return st;
+
+    struct fy_node *state, *grains;
+    if ((st = gb_ymap_find(&top, "initial_state", 0, &state, err)) ||
+        (st = gb_ymap_find(&top, "grains", 0, &grains, err)))
+        return st;
+    if (state) {
+        struct fy_node *box;
+        gb_ymap_find(&top, "box", 0, &box, err);
+        if (grains || box)
+            return gb_yaml_fail(doc, state, err, "initial_state: gives the grains and the box; do not also give "
+                                                 "'grains' or 'box'");
+        if ((st = read_initial_state(&top, s, err))) return st;
+    } else {
+        gb_ymap g;
+        if ((st = gb_ymap_map(&top, "grains", GB_Y_REQUIRED, &g, err)) || (st = gb_grains_section_read(&g, s, err)) ||
+            (st = gb_box_read(&top, &s->box, err)) || (st = gb_grains_check(s, doc->path, err)))
+            return st;
+    }
+    if ((st = read_body_force(&top, s, err)) || (st = read_solver(&top, &s->solver, err)) ||
+        (st = read_loading(&top, s, err)) || (st = read_output(&top, s, err)))
+        return st;
+    return gb_ymap_close(&top, err);
+}
+
+gb_status gb_scene_load(const char *path, gb_scene *out, gb_error *err)
+{
+    memset(out, 0, sizeof *out);
+    snprintf(out->path, sizeof out->path, "%s", path);
+    gb_yaml_doc doc;
+    gb_status st = gb_yaml_load(path, &doc, err);
+    if (st) return st;
+    st = load(&doc, out, err);
+    gb_yaml_free(&doc);
+    if (st) gb_scene_free(out);
+    return st;
+}
