@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# Every scene in tests/cli/bad is refused before any computation: exit status 2, a message with
+# the expected file:line:column and text (the .expect file beside it), and no run directory.
+set -u
+gembem=$1; dir=$(dirname "$0")
+fail=0; n=0
+out=$(mktemp -d)
+for scene in "$dir"/bad/*.yaml; do
+  name=$(basename "$scene" .yaml); n=$((n + 1))
+  expect=$(cat "$dir/bad/$name.expect")
+  msg=$("$gembem" run "$scene" -o "$out/$name" 2>&1 >/dev/null); code=$?
+  if [ $code -ne 2 ]; then echo "FAIL $name: exit status $code, expected 2 ($msg)"; fail=$((fail + 1)); continue; fi
+  case "$msg" in *"$expect"*) ;; *) echo "FAIL $name: message '$msg' lacks '$expect'"; fail=$((fail + 1)); continue;; esac
+  if [ -e "$out/$name" ]; then echo "FAIL $name: the run directory was created"; fail=$((fail + 1)); continue; fi
+  echo "ok   $name: $msg"
+done
+# The good scene runs (so that the bad ones fail for their own reason).
+"$gembem" run "$dir/good.yaml" -o "$out/good" --quiet || { echo "FAIL good.yaml did not run"; fail=$((fail + 1)); }
+rm -rf "$out"
+echo "$((n - fail)) of $n bad scenes refused as expected"
+[ $fail -eq 0 ]
