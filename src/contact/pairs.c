@@ -20,7 +20,7 @@ void gb_pair_geometry(gb_pair *p, const gb_grain *g, const gb_box *box)
     const gb_grain *a = &g[p->i];
     if (p->j >= 0) {
         const gb_grain *b = &g[p->j];
-        double dx = b->x - a->x, dy = b->y - a->y, dist = hypot(dx, dy);
+        double dx = b->x - a->x, dy = b->y - a->y, dist = sqrt(dx * dx + dy * dy);
         if (dist > 0) {
             p->nx = dx / dist;
             p->ny = dy / dist;
