@@ -1,0 +1,225 @@
+/* The elastic host: a 2D elastostatic boundary element module (H 1-7; METHOD.md sections 9, 12).
+ *
+ * A body (bounded, or an infinite plane with cavities) is described by its boundary only: closed
+ * polygonal loops of straight constant elements, one displacement and one traction per element,
+ * collocated at element midpoints. Loops are oriented by the body's outward normal (outer boundary
+ * counter-clockwise, cavities clockwise); the normal of an element is its tangent turned clockwise.
+ *
+ * Signs: stresses and tractions are tension-positive (elasticity convention, not the granular
+ * solver's compression-positive); a pressure p pushes on the surface, t = -p n. Units are the
+ * scene's: lengths in the length unit, tractions and stresses in force per length^2 (per unit depth).
+ *
+ * Typical use:
+ *   gb_bem_mesh_load("meshes/annulus.geo", &opts, &mesh, &err);
+ *   gb_bem_assemble(&mesh, &material, &sys, &err);        H and G (dense, column-major)
+ *   gb_bem_solve(&mesh, &sys, &problem, &sol, &err);      mixed boundary conditions per group
+ *   gb_bem_interior(&mesh, &sys, &problem, &sol, n, xy, u, s, &err);
+ *   gb_bem_condense(&mesh, &sys, &problem, group, &stiff, &err);   K = L G^-1 H on one group
+ * Every call returns a gb_status and fills a gb_error; nothing prints. Free with the _free calls. */
+#ifndef GEMBEM_BEM_H
+#define GEMBEM_BEM_H
+
+#include <stddef.h>
+
+#include "gembem/status.h"
+
+#define GB_BEM_NAME_MAX 64
+#define GB_BEM_MAX_GROUPS 32
+
+/* ---------------------------------------------------------------- material */
+
+typedef enum { GB_BEM_PLANE_STRAIN = 0, GB_BEM_PLANE_STRESS = 1 } gb_bem_plane;
+
+typedef struct {
+    double shear_modulus; /* mu > 0 */
+    double poisson;       /* -1 < nu < 0.5 */
+    gb_bem_plane plane;   /* plane stress uses nu/(1+nu) in the kernels */
+} gb_bem_material;
+
+/* ---------------------------------------------------------------- boundary mesh */
+
+typedef struct {
+    int n;               /* number of elements */
+    double *p0, *p1;     /* end points, 2n each, in loop order (body on the left) */
+    double *mid;         /* midpoints (collocation points), 2n */
+    double *tangent;     /* unit tangent p1 - p0, 2n */
+    double *normal;      /* unit outward normal of the body, 2n */
+    double *length;      /* n */
+    int *group;          /* physical group index of each element, n */
+    int *loop;           /* loop index of each element, n */
+    int n_loops;
+    int *loop_start;     /* elements of loop k: loop_start[k] .. loop_start[k+1]-1 */
+    int *loop_outer;     /* 1 for the outer boundary, 0 for a cavity */
+    int n_groups;
+    char (*group_name)[GB_BEM_NAME_MAX];
+    int unbounded;       /* 1: an infinite plane with cavities (no outer loop) */
+} gb_bem_mesh;
+
+/* Meshing options: a global element size and/or a size or element count per physical group. */
+typedef struct {
+    char group[GB_BEM_NAME_MAX];
+    double size; /* target element length (0: not set) */
+    int count;   /* number of elements on the whole group (0: not set) */
+} gb_bem_group_size;
+
+typedef struct {
+    double size;   /* target element length everywhere (0: the .geo file's own sizes) */
+    int n_group_sizes;
+    gb_bem_group_size group_sizes[GB_BEM_MAX_GROUPS];
+    int unbounded; /* every loop is a cavity in an infinite plane */
+} gb_bem_mesh_opts;
+
+gb_bem_mesh_opts gb_bem_mesh_opts_default(void);
+
+/* Meshes a .geo file to 1D through the gmsh API (or reads a .msh). Every physical group of
+ * dimension 1 becomes a group; every loop is oriented from its signed area. Refused (GB_EINPUT):
+ * a missing file, a gmsh error, an open or branching loop, a self-crossing or touching boundary, a
+ * zero-length element, a group of `opts` that the file does not define, a bounded body without a
+ * single outer loop enclosing the others. */
+gb_status gb_bem_mesh_load(const char *path, const gb_bem_mesh_opts *opts, gb_bem_mesh *mesh, gb_error *err);
+
+/* Builds a mesh from closed polygons: loop k has loop_n[k] vertices (xy, concatenated, 2 per
+ * vertex; the closing edge is implied) and edge e of all loops lies in group edge_group[e] (edge
+ * e of a loop goes from its vertex e to vertex e+1). Any orientation; the same checks as
+ * gb_bem_mesh_load. `names` gives n_groups group names (NULL: "group0", "group1", ...). */
+gb_status gb_bem_mesh_from_polygons(int n_loops, const int *loop_n, const double *xy, const int *edge_group,
+                                    int n_groups, const char *const *names, int unbounded, gb_bem_mesh *mesh,
+                                    gb_error *err);
+
+/* A regular polygon of n elements on a circle (center cx, cy, radius r): a test helper. */
+gb_status gb_bem_mesh_circle(double cx, double cy, double r, int n, int unbounded, gb_bem_mesh *mesh,
+                             gb_error *err);
+
+/* Index of a group by name, or -1. */
+int gb_bem_mesh_group(const gb_bem_mesh *mesh, const char *name);
+
+/* 1 if the point lies inside the body (outside every cavity, inside the outer loop if any). */
+int gb_bem_mesh_inside(const gb_bem_mesh *mesh, double x, double y);
+
+/* Distance from a point to the nearest boundary element. */
+double gb_bem_mesh_distance(const gb_bem_mesh *mesh, double x, double y);
+
+void gb_bem_mesh_free(gb_bem_mesh *mesh);
+
+/* ---------------------------------------------------------------- H and G */
+
+/* Dense influence matrices of size 2n x 2n, column-major (LAPACK order), DOF 2e+c is component c
+ * (0: x, 1: y) of element e. (H 3-5): H U = G P, with H's diagonal blocks 1/2 I (smooth midpoint)
+ * plus the principal value (zero on a straight element) and G's diagonal in closed form. All
+ * element integrals are closed-form for straight elements, exact also for nearly singular points. */
+typedef struct {
+    int ndof;
+    double *H, *G;
+    gb_bem_material material;
+} gb_bem_system;
+
+gb_status gb_bem_assemble(const gb_bem_mesh *mesh, const gb_bem_material *mat, gb_bem_system *sys,
+                          gb_error *err);
+void gb_bem_system_free(gb_bem_system *sys);
+
+/* ---------------------------------------------------------------- boundary conditions */
+
+typedef enum {
+    GB_BEM_BC_NONE = 0,     /* not set: an error when solving */
+    GB_BEM_BC_FREE,         /* traction zero */
+    GB_BEM_BC_FIXED,        /* displacement zero */
+    GB_BEM_BC_DISPLACEMENT, /* displacement value[0..1] */
+    GB_BEM_BC_TRACTION,     /* traction value[0..1] */
+    GB_BEM_BC_PRESSURE      /* traction -value[0] n */
+} gb_bem_bc_kind;
+
+typedef struct {
+    gb_bem_bc_kind kind;
+    double value[2];
+} gb_bem_bc;
+
+typedef struct {
+    gb_bem_bc bc[GB_BEM_MAX_GROUPS]; /* by mesh group index */
+    double remote_stress[3];         /* sxx, syy, sxy at infinity (unbounded bodies only) */
+} gb_bem_problem;
+
+/* Settings of the degenerate-scale guard (defaults from gb_bem_guard_default). */
+typedef struct {
+    double rcond_min; /* a system whose estimated 1-norm reciprocal condition is below this is
+                         treated as near a degenerate scale and solved in rescaled lengths */
+} gb_bem_guard;
+
+gb_bem_guard gb_bem_guard_default(void);
+
+/* ---------------------------------------------------------------- solution */
+
+typedef struct {
+    int ndof;
+    double *u; /* boundary displacement, 2n (total field, remote part included) */
+    double *t; /* boundary traction, 2n (total field) */
+    double rcond;       /* reciprocal condition number (1-norm, column-equilibrated) of the system solved */
+    double rcond_first; /* ... at the problem's own length scale */
+    double scale;       /* length scale factor used (1: none; else the degenerate scale was avoided) */
+    int rigid_constrained; /* 1: traction-only bounded body, rigid motions removed */
+} gb_bem_solution;
+
+/* Solves the mixed problem H u = G t for the unknown half of each DOF. A bounded body loaded by
+ * tractions only is solved with its rigid motions constrained (zero mean displacement and
+ * rotation); its tractions must be in equilibrium. Unbounded: the perturbation of the remote
+ * field is solved, the outputs are total fields. */
+gb_status gb_bem_solve(const gb_bem_mesh *mesh, const gb_bem_system *sys, const gb_bem_problem *prob,
+                       const gb_bem_guard *guard, gb_bem_solution *sol, gb_error *err);
+void gb_bem_solution_free(gb_bem_solution *sol);
+
+/* Displacement (2 per point) and stress (sxx, syy, sxy per point) at points inside the body
+ * (H 1 with c = 1 and the stress kernels D and S). Either output may be NULL. Points on or
+ * outside the boundary are refused (GB_EINPUT). */
+gb_status gb_bem_interior(const gb_bem_mesh *mesh, const gb_bem_material *mat, const gb_bem_problem *prob,
+                          const gb_bem_solution *sol, int npts, const double *xy, double *u, double *stress,
+                          gb_error *err);
+
+/* Boundary stress at element midpoints (sxx, syy, sxy per element) from the traction and the
+ * tangential strain of the boundary displacement (central differences along each loop). */
+gb_status gb_bem_boundary_stress(const gb_bem_mesh *mesh, const gb_bem_material *mat,
+                                 const gb_bem_solution *sol, double *stress, gb_error *err);
+
+/* ---------------------------------------------------------------- condensed stiffness */
+
+/* (H 7): forces F = L t on the elements of one group as a function of their displacements,
+ * F = K u + f0, with every other group's condition (fixed, free, loaded) condensed out (Schur
+ * complement, one LU of the mixed system through LAPACKE). K is m x m, m = 2 x (elements of the
+ * group), column-major, DOFs in the group's element order (elem[]). */
+typedef struct {
+    int m;              /* 2 x number of group elements */
+    int *elem;          /* mesh element index of each group element, m/2 */
+    double *K;          /* m x m, column-major */
+    double *f0;         /* m: the forces with the group held at u = 0 (loads elsewhere, remote stress) */
+    double asymmetry;   /* ||K - K^t||_F / ||K||_F */
+    double rcond;       /* of the system factorised */
+    double rcond_first;
+    double scale;
+} gb_bem_stiffness;
+
+gb_status gb_bem_condense(const gb_bem_mesh *mesh, const gb_bem_system *sys, const gb_bem_problem *prob,
+                          int group, const gb_bem_guard *guard, gb_bem_stiffness *k, gb_error *err);
+void gb_bem_stiffness_free(gb_bem_stiffness *k);
+
+/* ---------------------------------------------------------------- scenes */
+
+/* An elastostatic scene (YAML; see the scenes in validation/bem for the commented format). */
+typedef struct {
+    char path[512];
+    char length_unit[32], force_unit[32];
+    gb_bem_material material;
+    char mesh_path[512];
+    gb_bem_mesh_opts mesh_opts;
+    gb_bem_mesh mesh;
+    gb_bem_problem problem;
+    int npts;
+    double *pts;       /* interior points, 2 per point */
+    int grid_nx, grid_ny; /* >0: pts[0 .. nx*ny) is a grid, row by row (x fastest); may hold outside points */
+    int *pt_inside;    /* 1 if pts[i] is inside the body */
+    char stiffness_group[GB_BEM_NAME_MAX]; /* "" : no condensation */
+    int stiffness_write;
+} gb_bem_scene;
+
+/* Reads and checks the scene, then meshes it; every error names file:line:column (GB_EINPUT). */
+gb_status gb_bem_scene_load(const char *path, gb_bem_scene *scene, gb_error *err);
+void gb_bem_scene_free(gb_bem_scene *scene);
+
+#endif

@@ -1,0 +1,122 @@
+/* (H 7): the condensed stiffness K = L G^-1 H of one boundary group, the other groups' conditions
+ * condensed out. Unknowns of the mixed system: the group's tractions (its displacements are the
+ * inputs) and the unknown half of every other DOF. One LU (dgetrf) and 2m + 1 right-hand sides
+ * (dgetrs): column j of K is L times the group's tractions for a unit displacement of DOF j, which
+ * is the Schur complement of the other DOFs; f0 is the same with the group held fixed and the
+ * other groups loaded. With every other group fixed, K is the block K_ii of L G^-1 H. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "bem/bc.h"
+#include "bem/mixed.h"
+#include "bem/remote.h"
+#include "gembem/bem.h"
+
+void gb_bem_stiffness_free(gb_bem_stiffness *k)
+{
+    if (!k) return;
+    free(k->elem);
+    free(k->K);
+    free(k->f0);
+    memset(k, 0, sizeof *k);
+}
+
+gb_status gb_bem_condense(const gb_bem_mesh *m, const gb_bem_system *sys, const gb_bem_problem *prob, int group,
+                          const gb_bem_guard *guard, gb_bem_stiffness *out, gb_error *err)
+{
+    memset(out, 0, sizeof *out);
+    if (group < 0 || group >= m->n_groups) return gb_fail(err, GB_EINPUT, "no boundary group %d to condense on", group);
+    int nd = 2 * m->n, ne = 0;
+    for (int e = 0; e < m->n; e++) ne += m->group[e] == group;
+    if (ne == 0) return gb_fail(err, GB_EINPUT, "boundary group '%s' has no elements", m->group_name[group]);
+    int mm = 2 * ne;
+    /* the group's condition is replaced by "displacement given"; the others keep theirs */
+    gb_bem_problem p = *prob;
+    p.bc[group].kind = GB_BEM_BC_FIXED;
+    unsigned char *tu = malloc((size_t)nd);
+    double *given = malloc(sizeof(double) * (size_t)nd), *B = NULL;
+    gb_bem_lu lu;
+    memset(&lu, 0, sizeof lu);
+    gb_status st = (!tu || !given) ? gb_fail(err, GB_ENOMEM, "out of memory") : GB_OK;
+    if (!st) st = gb_bem_bc_dofs(m, &sys->material, &p, tu, given, err);
+    gb_bem_mixed mx;
+    double lambda = 0;
+    if (!st) st = gb_bem_mixed_init(&mx, m, sys, tu, 0, err);
+    if (!st) st = gb_bem_mixed_factor(&mx, guard, &lu, &lambda, &out->rcond_first, err);
+    if (!st) {
+        out->m = mm;
+        out->elem = malloc(sizeof(int) * (size_t)ne);
+        out->K = malloc(sizeof(double) * (size_t)mm * (size_t)mm);
+        out->f0 = malloc(sizeof(double) * (size_t)mm);
+        B = calloc((size_t)nd * (size_t)(mm + 1), sizeof(double));
+        if (!out->elem || !out->K || !out->f0 || !B) st = gb_fail(err, GB_ENOMEM, "out of memory for the stiffness");
+    }
+    if (!st) {
+        for (int e = 0, q = 0; e < m->n; e++)
+            if (m->group[e] == group) out->elem[q++] = e;
+        /* right-hand sides: -H column of each group DOF; the loads (other groups, remote field) */
+        for (int j = 0; j < mm; j++) {
+            int d = 2 * out->elem[j / 2] + j % 2;
+            const double *h = sys->H + (size_t)d * (size_t)nd;
+            double *b = B + (size_t)j * (size_t)nd;
+            for (int i = 0; i < nd; i++) b[i] = -h[i];
+        }
+        double *b0 = B + (size_t)mm * (size_t)nd;
+        for (int d = 0; d < nd; d++) {
+            if (given[d] == 0) continue;
+            if (m->group[d / 2] == group) continue; /* the group's own (remote) displacement: below */
+            if (tu[d]) {
+                const double *h = sys->H + (size_t)d * (size_t)nd;
+                for (int i = 0; i < nd; i++) b0[i] -= h[i] * given[d];
+            } else {
+                gb_bem_mixed_gcol(&mx, lambda, d, given[d], b0);
+            }
+        }
+        st = gb_bem_lu_solve(&lu, mm + 1, B, err);
+    }
+    if (!st) {
+        for (int j = 0; j < mm + 1; j++) {
+            const double *z = B + (size_t)j * (size_t)nd;
+            double *col = j < mm ? out->K + (size_t)j * (size_t)mm : out->f0;
+            for (int q = 0; q < mm; q++) {
+                int e = out->elem[q / 2];
+                col[q] = m->length[e] * z[2 * e + q % 2]; /* F = L t */
+            }
+        }
+        /* remote field: F = L (t_pert + s_inf n) with u_pert = u - u_inf on the group */
+        if (gb_bem_remote_active(m, prob)) {
+            double *uinf = malloc(sizeof(double) * (size_t)mm);
+            if (!uinf) st = gb_fail(err, GB_ENOMEM, "out of memory");
+            for (int q = 0; !st && q < mm; q += 2) {
+                int e = out->elem[q / 2];
+                double rt[2];
+                gb_bem_remote_u(&sys->material, prob, m->mid + 2 * e, uinf + q);
+                gb_bem_remote_t(prob, m->normal + 2 * e, rt);
+                out->f0[q] += m->length[e] * rt[0];
+                out->f0[q + 1] += m->length[e] * rt[1];
+            }
+            for (int q = 0; !st && q < mm; q++)
+                for (int j = 0; j < mm; j++) out->f0[q] -= out->K[(size_t)j * (size_t)mm + (size_t)q] * uinf[j];
+            free(uinf);
+        }
+    }
+    if (!st) {
+        double num = 0, den = 0;
+        for (int i = 0; i < mm; i++)
+            for (int j = 0; j < mm; j++) {
+                double a = out->K[(size_t)j * (size_t)mm + (size_t)i], b = out->K[(size_t)i * (size_t)mm + (size_t)j];
+                num += (a - b) * (a - b);
+                den += a * a;
+            }
+        out->asymmetry = den > 0 ? sqrt(num / den) : 0;
+        out->rcond = lu.rcond;
+        out->scale = exp(lambda);
+    }
+    if (st) gb_bem_stiffness_free(out);
+    gb_bem_lu_free(&lu);
+    free(tu);
+    free(given);
+    free(B);
+    return st;
+}

@@ -1,0 +1,345 @@
+/* Boundary meshes from closed polygons: checks (zero-length elements, crossings, nesting) and
+ * orientation by the body's outward normal from each loop's signed area. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "bem/kernel.h"
+#include "gembem/bem.h"
+
+gb_bem_mesh_opts gb_bem_mesh_opts_default(void)
+{
+    gb_bem_mesh_opts o;
+    memset(&o, 0, sizeof o);
+    return o;
+}
+
+void gb_bem_mesh_free(gb_bem_mesh *m)
+{
+    if (!m) return;
+    free(m->p0);
+    free(m->p1);
+    free(m->mid);
+    free(m->tangent);
+    free(m->normal);
+    free(m->length);
+    free(m->group);
+    free(m->loop);
+    free(m->loop_start);
+    free(m->loop_outer);
+    free(m->group_name);
+    memset(m, 0, sizeof *m);
+}
+
+int gb_bem_mesh_group(const gb_bem_mesh *m, const char *name)
+{
+    for (int g = 0; g < m->n_groups; g++)
+        if (!strcmp(m->group_name[g], name)) return g;
+    return -1;
+}
+
+static double cross3(const double *o, const double *a, const double *b)
+{
+    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+}
+
+/* Crossing-number test of a point against one closed polygon (vertices v, m of them). */
+static int in_polygon(const double *v, int m, double x, double y)
+{
+    int in = 0;
+    for (int i = 0, j = m - 1; i < m; j = i++) {
+        const double *a = v + 2 * i, *b = v + 2 * j;
+        if ((a[1] > y) != (b[1] > y) && x < (b[0] - a[0]) * (y - a[1]) / (b[1] - a[1]) + a[0]) in = !in;
+    }
+    return in;
+}
+
+int gb_bem_mesh_inside(const gb_bem_mesh *m, double x, double y)
+{
+    for (int k = 0; k < m->n_loops; k++) {
+        int s = m->loop_start[k], cnt = m->loop_start[k + 1] - s;
+        int in = in_polygon(m->p0 + 2 * s, cnt, x, y);
+        if (m->loop_outer[k] ? !in : in) return 0;
+    }
+    return 1;
+}
+
+double gb_bem_mesh_distance(const gb_bem_mesh *m, double x, double y)
+{
+    double best = INFINITY;
+    for (int e = 0; e < m->n; e++) {
+        const double *a = m->p0 + 2 * e, *b = m->p1 + 2 * e;
+        double d[2] = {b[0] - a[0], b[1] - a[1]}, w[2] = {x - a[0], y - a[1]};
+        double s = (w[0] * d[0] + w[1] * d[1]) / (d[0] * d[0] + d[1] * d[1]);
+        s = s < 0 ? 0 : s > 1 ? 1 : s;
+        best = fmin(best, hypot(w[0] - s * d[0], w[1] - s * d[1]));
+    }
+    return best;
+}
+
+/* Do segments [a,b] and [c,d] share any point (touching included)? eps: a length tolerance. */
+static int segments_meet(const double *a, const double *b, const double *c, const double *d, double eps)
+{
+    double lo1[2], hi1[2];
+    for (int i = 0; i < 2; i++) {
+        lo1[i] = fmin(a[i], b[i]) - eps;
+        hi1[i] = fmax(a[i], b[i]) + eps;
+        if (fmax(c[i], d[i]) < lo1[i] || fmin(c[i], d[i]) > hi1[i]) return 0;
+    }
+    double lab = hypot(b[0] - a[0], b[1] - a[1]), lcd = hypot(d[0] - c[0], d[1] - c[1]);
+    double d1 = cross3(a, b, c) / lab, d2 = cross3(a, b, d) / lab; /* signed distances to line ab */
+    double d3 = cross3(c, d, a) / lcd, d4 = cross3(c, d, b) / lcd;
+    if (((d1 > eps && d2 < -eps) || (d1 < -eps && d2 > eps)) && ((d3 > eps && d4 < -eps) || (d3 < -eps && d4 > eps)))
+        return 1; /* proper crossing */
+    /* an end point within eps of the other segment */
+    const double *pts[4] = {c, d, a, b};
+    const double *s0[4] = {a, a, c, c}, *s1[4] = {b, b, d, d};
+    for (int i = 0; i < 4; i++) {
+        const double *p = pts[i], *u = s0[i], *v = s1[i];
+        double e[2] = {v[0] - u[0], v[1] - u[1]}, w[2] = {p[0] - u[0], p[1] - u[1]};
+        double s = (w[0] * e[0] + w[1] * e[1]) / (e[0] * e[0] + e[1] * e[1]);
+        if (s < 0) s = 0;
+        if (s > 1) s = 1;
+        if (hypot(w[0] - s * e[0], w[1] - s * e[1]) <= eps) return 1;
+    }
+    return 0;
+}
+
+typedef struct {
+    double xmin;
+    int e;
+} sweep_item;
+
+static int cmp_sweep(const void *a, const void *b)
+{
+    double x = ((const sweep_item *)a)->xmin, y = ((const sweep_item *)b)->xmin;
+    return x < y ? -1 : x > y;
+}
+
+/* Refuses crossings and touchings between non-adjacent elements, and adjacent elements folding
+ * back on each other; sort-and-sweep on x. */
+static gb_status check_crossings(const gb_bem_mesh *m, double eps, gb_error *err)
+{
+    int n = m->n;
+    sweep_item *it = malloc((size_t)n * sizeof *it);
+    if (!it) return gb_fail(err, GB_ENOMEM, "out of memory");
+    for (int e = 0; e < n; e++) {
+        it[e].xmin = fmin(m->p0[2 * e], m->p1[2 * e]);
+        it[e].e = e;
+    }
+    qsort(it, (size_t)n, sizeof *it, cmp_sweep);
+    gb_status st = GB_OK;
+    for (int a = 0; a < n && !st; a++) {
+        int i = it[a].e;
+        double xmax = fmax(m->p0[2 * i], m->p1[2 * i]) + eps;
+        for (int b = a + 1; b < n && it[b].xmin <= xmax && !st; b++) {
+            int j = it[b].e;
+            int adjacent = 0, first = i, second = j;
+            if (m->loop[i] == m->loop[j]) {
+                int s = m->loop_start[m->loop[i]], c = m->loop_start[m->loop[i] + 1] - s;
+                int di = i - s, dj = j - s;
+                if ((di + 1) % c == dj) adjacent = 1;
+                else if ((dj + 1) % c == di) adjacent = 1, first = j, second = i;
+            }
+            if (adjacent) {
+                /* the shared vertex is fine; a fold-back (the two elements overlap) is not */
+                const double *t1 = m->tangent + 2 * first, *t2 = m->tangent + 2 * second;
+                if (fabs(t1[0] * t2[1] - t1[1] * t2[0]) < 1e-12 && t1[0] * t2[0] + t1[1] * t2[1] < 0)
+                    st = gb_fail(err, GB_EINPUT,
+                                 "the boundary folds back on itself at (%.6g, %.6g) (group '%s')", m->p1[2 * first],
+                                 m->p1[2 * first + 1], m->group_name[m->group[first]]);
+                continue;
+            }
+            if (segments_meet(m->p0 + 2 * i, m->p1 + 2 * i, m->p0 + 2 * j, m->p1 + 2 * j, eps))
+                st = gb_fail(err, GB_EINPUT,
+                             "the boundary crosses or touches itself near (%.6g, %.6g): elements %d (group '%s') "
+                             "and %d (group '%s')",
+                             m->mid[2 * i], m->mid[2 * i + 1], i, m->group_name[m->group[i]], j,
+                             m->group_name[m->group[j]]);
+        }
+    }
+    free(it);
+    return st;
+}
+
+static void fill_geometry(gb_bem_mesh *m, int e)
+{
+    double *a = m->p0 + 2 * e, *b = m->p1 + 2 * e;
+    double L = hypot(b[0] - a[0], b[1] - a[1]);
+    m->length[e] = L;
+    m->mid[2 * e] = 0.5 * (a[0] + b[0]);
+    m->mid[2 * e + 1] = 0.5 * (a[1] + b[1]);
+    m->tangent[2 * e] = L > 0 ? (b[0] - a[0]) / L : 0;
+    m->tangent[2 * e + 1] = L > 0 ? (b[1] - a[1]) / L : 0;
+    m->normal[2 * e] = m->tangent[2 * e + 1];
+    m->normal[2 * e + 1] = -m->tangent[2 * e];
+}
+
+gb_status gb_bem_mesh_from_polygons(int n_loops, const int *loop_n, const double *xy, const int *edge_group,
+                                    int n_groups, const char *const *names, int unbounded, gb_bem_mesh *m,
+                                    gb_error *err)
+{
+    memset(m, 0, sizeof *m);
+    if (n_loops < 1) return gb_fail(err, GB_EINPUT, "the boundary has no closed loop");
+    if (n_groups < 1 || n_groups > GB_BEM_MAX_GROUPS)
+        return gb_fail(err, GB_EINPUT, "%d boundary groups; expected 1 to %d", n_groups, GB_BEM_MAX_GROUPS);
+    int n = 0;
+    for (int k = 0; k < n_loops; k++) {
+        if (loop_n[k] < 3)
+            return gb_fail(err, GB_EINPUT, "loop %d has %d element(s); a closed loop needs at least 3", k, loop_n[k]);
+        n += loop_n[k];
+    }
+    for (int e = 0; e < n; e++)
+        if (edge_group[e] < 0 || edge_group[e] >= n_groups)
+            return gb_fail(err, GB_EINPUT, "element %d: group %d out of range", e, edge_group[e]);
+
+    m->n = n;
+    m->n_loops = n_loops;
+    m->n_groups = n_groups;
+    m->unbounded = unbounded ? 1 : 0;
+    m->p0 = malloc(sizeof(double) * 2 * (size_t)n);
+    m->p1 = malloc(sizeof(double) * 2 * (size_t)n);
+    m->mid = malloc(sizeof(double) * 2 * (size_t)n);
+    m->tangent = malloc(sizeof(double) * 2 * (size_t)n);
+    m->normal = malloc(sizeof(double) * 2 * (size_t)n);
+    m->length = malloc(sizeof(double) * (size_t)n);
+    m->group = malloc(sizeof(int) * (size_t)n);
+    m->loop = malloc(sizeof(int) * (size_t)n);
+    m->loop_start = malloc(sizeof(int) * (size_t)(n_loops + 1));
+    m->loop_outer = calloc((size_t)n_loops, sizeof(int));
+    m->group_name = calloc((size_t)n_groups, sizeof *m->group_name);
+    if (!m->p0 || !m->p1 || !m->mid || !m->tangent || !m->normal || !m->length || !m->group || !m->loop ||
+        !m->loop_start || !m->loop_outer || !m->group_name) {
+        gb_bem_mesh_free(m);
+        return gb_fail(err, GB_ENOMEM, "out of memory for %d boundary elements", n);
+    }
+    for (int g = 0; g < n_groups; g++) {
+        if (names) snprintf(m->group_name[g], GB_BEM_NAME_MAX, "%s", names[g]);
+        else snprintf(m->group_name[g], GB_BEM_NAME_MAX, "group%d", g);
+    }
+
+    /* size of the problem, for tolerances */
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    for (int v = 0; v < n; v++)
+        for (int c = 0; c < 2; c++) {
+            if (!isfinite(xy[2 * v + c])) {
+                gb_bem_mesh_free(m);
+                return gb_fail(err, GB_EINPUT, "boundary vertex %d is not finite", v);
+            }
+            lo[c] = fmin(lo[c], xy[2 * v + c]);
+            hi[c] = fmax(hi[c], xy[2 * v + c]);
+        }
+    double diag = hypot(hi[0] - lo[0], hi[1] - lo[1]);
+    double eps = 1e-10 * diag;
+
+    /* signed areas and nesting (a vertex of one loop inside another: loops do not cross, checked below) */
+    double *area = malloc(sizeof(double) * (size_t)n_loops);
+    int *inside_count = calloc((size_t)n_loops, sizeof(int));
+    int *start = malloc(sizeof(int) * (size_t)(n_loops + 1));
+    if (!area || !inside_count || !start) {
+        free(area);
+        free(inside_count);
+        free(start);
+        gb_bem_mesh_free(m);
+        return gb_fail(err, GB_ENOMEM, "out of memory");
+    }
+    start[0] = 0;
+    for (int k = 0; k < n_loops; k++) start[k + 1] = start[k] + loop_n[k];
+    for (int k = 0; k < n_loops; k++) {
+        double A = 0;
+        for (int i = 0; i < loop_n[k]; i++) {
+            const double *a = xy + 2 * (start[k] + i), *b = xy + 2 * (start[k] + (i + 1) % loop_n[k]);
+            A += a[0] * b[1] - a[1] * b[0];
+        }
+        area[k] = 0.5 * A;
+        for (int j = 0; j < n_loops; j++)
+            if (j != k && in_polygon(xy + 2 * start[j], loop_n[j], xy[2 * start[k]], xy[2 * start[k] + 1]))
+                inside_count[k]++;
+    }
+    gb_status st = GB_OK;
+    int outer = -1;
+    for (int k = 0; k < n_loops && !st; k++) {
+        if (!(fabs(area[k]) > eps * diag))
+            st = gb_fail(err, GB_EINPUT, "loop %d (group '%s') encloses no area (does it cross itself?)", k,
+                         m->group_name[edge_group[start[k]]]);
+        else if (unbounded && inside_count[k] > 0)
+            st = gb_fail(err, GB_EINPUT,
+                         "loop %d (group '%s') lies inside another loop: an infinite plane holds cavities only", k,
+                         m->group_name[edge_group[start[k]]]);
+        else if (!unbounded && inside_count[k] == 0) {
+            if (outer >= 0)
+                st = gb_fail(err, GB_EINPUT,
+                             "loops %d and %d (groups '%s', '%s') are both outermost: a bounded body needs one outer "
+                             "boundary enclosing its cavities (or set the mesh unbounded)",
+                             outer, k, m->group_name[edge_group[start[outer]]], m->group_name[edge_group[start[k]]]);
+            outer = k;
+        } else if (!unbounded && inside_count[k] > 1)
+            st = gb_fail(err, GB_EINPUT, "loop %d (group '%s') lies inside a cavity: islands are not supported", k,
+                         m->group_name[edge_group[start[k]]]);
+    }
+    if (!st && !unbounded && outer < 0) st = gb_fail(err, GB_EINPUT, "no outer boundary found");
+    if (!st && !unbounded && n_loops > 1 && fabs(area[outer]) <= 0)
+        st = gb_fail(err, GB_EINPUT, "the outer boundary encloses no area");
+
+    /* elements in body orientation: outer loop counter-clockwise, cavities clockwise */
+    for (int k = 0; k < n_loops && !st; k++) {
+        int want_ccw = !unbounded && k == outer;
+        int reverse = want_ccw ? area[k] < 0 : area[k] > 0;
+        int c = loop_n[k];
+        m->loop_start[k] = start[k];
+        m->loop_outer[k] = want_ccw;
+        for (int j = 0; j < c; j++) {
+            int e = start[k] + j, src, va, vb;
+            if (!reverse) {
+                src = j;
+                va = j;
+                vb = (j + 1) % c;
+            } else {
+                src = c - 1 - j;
+                va = (src + 1) % c;
+                vb = src;
+            }
+            m->p0[2 * e] = xy[2 * (start[k] + va)];
+            m->p0[2 * e + 1] = xy[2 * (start[k] + va) + 1];
+            m->p1[2 * e] = xy[2 * (start[k] + vb)];
+            m->p1[2 * e + 1] = xy[2 * (start[k] + vb) + 1];
+            m->group[e] = edge_group[start[k] + src];
+            m->loop[e] = k;
+            fill_geometry(m, e);
+            if (!(m->length[e] > eps) && !st)
+                st = gb_fail(err, GB_EINPUT, "zero-length element at (%.6g, %.6g) in group '%s'", m->p0[2 * e],
+                             m->p0[2 * e + 1], m->group_name[m->group[e]]);
+        }
+    }
+    m->loop_start[n_loops] = n;
+    free(area);
+    free(inside_count);
+    free(start);
+    if (!st) st = check_crossings(m, eps, err);
+    if (st) gb_bem_mesh_free(m);
+    return st;
+}
+
+gb_status gb_bem_mesh_circle(double cx, double cy, double r, int n, int unbounded, gb_bem_mesh *mesh, gb_error *err)
+{
+    if (n < 3) return gb_fail(err, GB_EINPUT, "a circle needs at least 3 elements");
+    double *xy = malloc(sizeof(double) * 2 * (size_t)n);
+    int *grp = calloc((size_t)n, sizeof(int));
+    if (!xy || !grp) {
+        free(xy);
+        free(grp);
+        return gb_fail(err, GB_ENOMEM, "out of memory");
+    }
+    for (int i = 0; i < n; i++) {
+        double a = 2 * GB_PI * i / n;
+        xy[2 * i] = cx + r * cos(a);
+        xy[2 * i + 1] = cy + r * sin(a);
+    }
+    const char *names[1] = {unbounded ? "cavity" : "outer"};
+    int ln[1] = {n};
+    gb_status st = gb_bem_mesh_from_polygons(1, ln, xy, grp, 1, names, unbounded, mesh, err);
+    free(xy);
+    free(grp);
+    return st;
+}
