@@ -125,7 +125,8 @@ typedef enum {
     GB_BEM_BC_FIXED,        /* displacement zero */
     GB_BEM_BC_DISPLACEMENT, /* displacement value[0..1] */
     GB_BEM_BC_TRACTION,     /* traction value[0..1] */
-    GB_BEM_BC_PRESSURE      /* traction -value[0] n */
+    GB_BEM_BC_PRESSURE,     /* traction -value[0] n */
+    GB_BEM_BC_NORMAL_DISPLACEMENT /* displacement value[0] n (outward of the body; tangential 0) */
 } gb_bem_bc_kind;
 
 typedef struct {

@@ -13,6 +13,7 @@ typedef struct {
     double nx, ny;     /* unit normal from i towards j */
     double overlap;    /* > 0 */
     double pn, pt;     /* normal (compression positive) and tangential force (K section 2.2) */
+    double diss;       /* energy dissipated at the contact in the last load step (K 28) */
 } gb_contact;
 
 /* One converged (or failed) load step. Stresses and strains: compression positive, 1 = vertical. */
@@ -49,6 +50,8 @@ const gb_grain *gb_sim_grains(const gb_sim *sim);
 gb_box gb_sim_box(const gb_sim *sim);
 /* Copies up to `cap` force-carrying contacts into out (may be NULL) and returns how many there are. */
 int gb_sim_contacts(const gb_sim *sim, gb_contact *out, int cap);
+/* Total elastic energy of the contact springs, sum of (pn^2/kn + pt^2/kt)/2 (K 22). */
+double gb_sim_elastic_energy(const gb_sim *sim);
 /* The fixing force (fx, fy, m/r) of grain i (K 5). */
 void gb_sim_fixing_force(const gb_sim *sim, int i, double F[3]);
 

@@ -71,6 +71,7 @@ typedef struct {
     int snapshot_every;      /* write a VTK snapshot every k steps (0: none) */
     int n_snapshot_steps;
     int *snapshot_steps;     /* and at these global step numbers */
+    int contacts_every;      /* write contacts/contacts_NNNNNN.csv every k steps (and at snapshots) */
 } gb_scene;
 
 /* Reads and validates a scene; on any error *out is left empty and err says file:line:column. */

@@ -36,8 +36,8 @@ void gb_pair_geometry(gb_pair *p, const gb_grain *g, const gb_box *box)
     }
 }
 
-void gb_pair_update(gb_pair *p, const gb_grain *g, const gb_box *box, const double *dX,
-                    const double *wall_dx, const gb_material *mat, double tan_phi)
+double gb_pair_update(gb_pair *p, const gb_grain *g, const gb_box *box, const double *dX,
+                      const double *wall_dx, const gb_material *mat, double tan_phi)
 {
     int was_contact = p->d > 0;
     /* (K 25): tangential relative displacement in the previous tangent t = (-ny, nx). */
@@ -51,15 +51,25 @@ void gb_pair_update(gb_pair *p, const gb_grain *g, const gb_box *box, const doub
     }
     double du_t = -(a[0] - bx) * p->ny + (a[1] - by) * p->nx + a[2] + brot;
     gb_pair_geometry(p, g, box);
+    double pt0 = p->pt, diss = 0;
     if (!(p->d > 0)) {
-        p->pn = p->pt = 0; /* opened (K section 2.5): both forces vanish */
-        return;
+        /* Opened (K section 2.5): both forces vanish, the tangential spring's energy is lost. */
+        if (was_contact && mat->kt > 0) diss = pt0 * pt0 / (2 * mat->kt);
+        p->pn = p->pt = 0;
+        p->diss += diss;
+        return diss;
     }
     p->pn = mat->kn * p->d;
     p->pt = was_contact ? p->pt + mat->kt * du_t : 0.0;
     double limit = p->pn * tan_phi + mat->cohesion; /* (K 13) */
     if (p->pt > limit) p->pt = limit;
     else if (p->pt < -limit) p->pt = -limit;
+    if (was_contact && mat->kt > 0 && pt0 != 0 && p->pt != 0) {
+        double slip = du_t - (p->pt - pt0) / mat->kt;  /* (K 26, 27) */
+        diss = 0.5 * (pt0 + p->pt) * slip;             /* (K 28) */
+    }
+    p->diss += diss;
+    return diss;
 }
 
 static int cmp_int(const void *a, const void *b)

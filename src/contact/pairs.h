@@ -12,6 +12,7 @@ typedef struct {
     double nx, ny;   /* unit normal from i towards j, at the last geometry update */
     double d;        /* overlap; the pair is a contact when d > 0 */
     double pn, pt;   /* contact forces, compression positive; zero when open */
+    double diss;     /* energy dissipated at this contact in the current load step */
 } gb_pair;
 
 typedef struct {
@@ -45,8 +46,11 @@ void gb_pair_geometry(gb_pair *p, const gb_grain *g, const gb_box *box);
  * contact starts at kn d, see METHOD.md section 3); the tangential force is incremental,
  * pt += kt du_t with du_t from (K 25) in the tangent of the previous configuration; a contact
  * that opens (d <= 0) drops both forces; |pt| is capped at pn tan(phi) + c.
- * dX holds (dx, dy, r dw) per grain, wall_dx the translation (dx, dy) of each wall. */
-void gb_pair_update(gb_pair *p, const gb_grain *g, const gb_box *box, const double *dX,
+ * dX holds (dx, dy, r dw) per grain, wall_dx the translation (dx, dy) of each wall.
+ * Returns the energy dissipated by the update, also added to p->diss: the slip
+ * du_d = du_t - dpt/kt times the mean tangential force, zero if either end is zero (K 26-28), and,
+ * when the contact opens, the tangential spring energy pt^2/(2 kt) that it releases. */
+double gb_pair_update(gb_pair *p, const gb_grain *g, const gb_box *box, const double *dX,
                     const double *wall_dx, const gb_material *mat, double tan_phi);
 
 /* Brute-force O(N^2) candidate pairs within `range` of touching, for tests. Returns the count and

@@ -192,11 +192,14 @@ gb_status gb_gem_apply_moves(gb_sim *sim, gb_error *err)
     }
     const gb_material *gg = &sim->scene->grain_grain, *gw = &sim->scene->grain_wall;
     gb_pair *P = sim->pairs.p;
+    double diss = 0;
     for (int k = 0; k < sim->pairs.n; k++) {
         gb_pair *p = &P[k];
-        if (p->j >= 0) gb_pair_update(p, sim->g, b, sim->dX, &sim->wall_dx[0][0], gg, sim->tan_phi_gg);
-        else gb_pair_update(p, sim->g, b, sim->dX, &sim->wall_dx[0][0], gw, sim->tan_phi_gw);
+        if (p->j >= 0) diss += gb_pair_update(p, sim->g, b, sim->dX, &sim->wall_dx[0][0], gg, sim->tan_phi_gg);
+        else diss += gb_pair_update(p, sim->g, b, sim->dX, &sim->wall_dx[0][0], gw, sim->tan_phi_gw);
     }
+    sim->dissipation += diss;
+    sim->dissipation_step += diss;
     return GB_OK;
 }
 

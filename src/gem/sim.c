@@ -125,12 +125,24 @@ int gb_sim_contacts(const gb_sim *sim, gb_contact *out, int cap)
         const gb_pair *p = &sim->pairs.p[k];
         if (!(p->d > 0)) continue;
         if (out && m < cap) {
-            gb_contact c = {p->i, p->j, p->nx, p->ny, p->d, p->pn, p->pt};
+            gb_contact c = {p->i, p->j, p->nx, p->ny, p->d, p->pn, p->pt, p->diss};
             out[m] = c;
         }
         m++;
     }
     return m;
+}
+
+double gb_sim_elastic_energy(const gb_sim *sim)
+{
+    double e = 0;
+    for (int k = 0; k < sim->pairs.n; k++) {
+        const gb_pair *p = &sim->pairs.p[k];
+        if (!(p->d > 0)) continue;
+        const gb_material *m = p->j >= 0 ? &sim->scene->grain_grain : &sim->scene->grain_wall;
+        e += 0.5 * p->pn * p->pn / m->kn + (m->kt > 0 ? 0.5 * p->pt * p->pt / m->kt : 0); /* (K 22) */
+    }
+    return e;
 }
 
 void gb_sim_fixing_force(const gb_sim *sim, int i, double F[3])
@@ -168,6 +180,22 @@ static void save_state(gb_sim *sim, gb_error *err, gb_status *st)
     memcpy(sim->saved_pairs, sim->pairs.p, (size_t)sim->pairs.n * sizeof *sim->pairs.p);
     sim->saved_n_pairs = sim->pairs.n;
     sim->saved_box = sim->box;
+    memcpy(sim->saved_wall_force, sim->wall_force, sizeof sim->wall_force);
+}
+
+/* External work of a converged step, as a quasi-static test measures it: the walls' mean force at
+ * the start and the end of the step times their inward displacement, and the body forces times
+ * the grains' displacement (the saved state is the start of the step; sim->wall_force and
+ * sim->saved_wall_force hold the converged forces). */
+static void add_step_work(gb_sim *sim)
+{
+    const gb_box *a = &sim->saved_box, *b = &sim->box;
+    double inward[GB_N_WALLS] = {b->left - a->left, a->right - b->right, b->bottom - a->bottom, a->top - b->top};
+    for (int w = 0; w < GB_N_WALLS; w++)
+        sim->work_walls += 0.5 * (sim->saved_wall_force[w] + sim->wall_force[w]) * inward[w];
+    for (int i = 0; i < sim->n; i++)
+        sim->work_body += sim->body[2 * i] * (sim->g[i].x - sim->saved_g[i].x) +
+                          sim->body[2 * i + 1] * (sim->g[i].y - sim->saved_g[i].y);
 }
 
 static void restore_state(gb_sim *sim)
@@ -235,6 +263,8 @@ static gb_status load_step(gb_sim *sim, const gb_stage *sg, int k, const double 
     gb_wall_control wc = {GB_WALLS_FIXED, 0, 0, 0};
     gb_status st;
     double f = (double)k / sg->steps;
+    sim->dissipation_step = 0;
+    for (int q = 0; q < sim->pairs.n; q++) sim->pairs.p[q].diss = 0;
     switch (sg->kind) {
     case GB_STAGE_ISOTROPIC:
         wc.mode = GB_WALLS_STRESS;
@@ -270,6 +300,7 @@ gb_status gb_sim_run(gb_sim *sim, gb_step_fn on_step, void *user, gb_error *err)
     rep.stage = -1;
     rep.total_steps = gb_scene_total_steps(sc);
     fill_report(sim, &rep);
+    sim->energy0 = gb_sim_elastic_energy(sim);
     save_state(sim, err, &st);
     if (!st && on_step) st = on_step(user, sim, &rep, err);
     int step = 0;
@@ -309,6 +340,7 @@ gb_status gb_sim_run(gb_sim *sim, gb_step_fn on_step, void *user, gb_error *err)
             rep.step = step;
             rep.iterations = iters;
             fill_report(sim, &rep);
+            add_step_work(sim);
             rep.seconds = now_seconds() - t0;
             save_state(sim, err, &st);
             if (!st && on_step) st = on_step(user, sim, &rep, err);

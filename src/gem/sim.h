@@ -40,7 +40,14 @@ struct gb_sim {
     gb_pair *saved_pairs;
     int saved_n_pairs, saved_cap;
     gb_box saved_box;
+    double saved_wall_force[GB_N_WALLS];
     long iterations_total;
+    /* Energy accounts since the start of the run (absolute, force x length). */
+    double work_walls;        /* done by the walls on the grains */
+    double work_body;         /* done by the body forces */
+    double dissipation;       /* (K 28) summed over contacts and iterations */
+    double dissipation_step;  /* of the current load step */
+    double energy0;           /* elastic energy of the initial state */
 };
 
 /* One iteration of the reference method (K section 2.5, Fig. 1): F and S of every grain, then,

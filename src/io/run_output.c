@@ -8,13 +8,16 @@
 #include <sys/stat.h>
 #include <time.h>
 
+#include "gembem/measure.h"
 #include "gembem/output.h"
 #include "io/file_util.h"
+#include "scene/grains_file.h"
 
 struct gb_run_output {
     char dir[900];
     const gb_scene *scene;
     FILE *steps;
+    FILE *micro;  /* micromechanics.csv */
     char command[1024];
     char started[64];
     int *snap_steps, n_snaps; /* steps that were written, for the .pvd collection */
@@ -118,6 +121,18 @@ gb_status gb_run_output_open(const char *dir, const gb_scene *scene, int overwri
     fprintf(o->steps, "step,stage,e1_minus_e2,e1,e2,ev,s1,s2,stress_ratio,iterations,max_fixing_force,seconds,"
                       "contacts,width,height\n");
     fflush(o->steps);
+    snprintf(path, sizeof path, "%s/micromechanics.csv", dir);
+    if (!(o->micro = fopen(path, "w"))) {
+        fclose(o->steps);
+        free(o);
+        return gb_fail(err, GB_EIO, "%s: %s", path, strerror(errno));
+    }
+    /* Tensors in x (horizontal), y (vertical) components; energies absolute (force x length) and
+     * since the start of the run; densities divide by the area. */
+    fprintf(o->micro, "step,contacts,wall_contacts,coordination,C_xx,C_yy,C_xy,C_major,C_minor,C_angle_deg,"
+                      "E_xx,E_yy,E_xy,E_major,E_minor,E_angle_deg,area,elastic_energy,work,work_walls,work_body,"
+                      "dissipation,dissipation_step,balance,P_max\n");
+    fflush(o->micro);
     *out = o;
     return GB_OK;
 }
@@ -145,17 +160,59 @@ static gb_status write_pvd(const gb_run_output *o, const char *what, gb_error *e
     return gb_atomic_commit(&a, err);
 }
 
+/* Per-contact data of a step: direction, forces, elastic energy (K 22), the step's dissipation. */
+static gb_status write_contacts_csv(const char *path, const gb_sim *sim, gb_error *err)
+{
+    int m = gb_sim_contacts(sim, NULL, 0);
+    gb_contact *c = malloc((size_t)(m > 0 ? m : 1) * sizeof *c);
+    if (!c) return gb_fail(err, GB_ENOMEM, "out of memory");
+    gb_sim_contacts(sim, c, m);
+    const gb_scene *sc = gb_sim_scene(sim);
+    gb_atomic_file a;
+    gb_status st = gb_atomic_open(&a, path, err);
+    if (!st) {
+        fprintf(a.f, "i,j,nx,ny,pn,pt,energy,dissipation\n");
+        for (int k = 0; k < m; k++) {
+            const gb_material *mat = c[k].j >= 0 ? &sc->grain_grain : &sc->grain_wall;
+            double e = 0.5 * c[k].pn * c[k].pn / mat->kn + (mat->kt > 0 ? 0.5 * c[k].pt * c[k].pt / mat->kt : 0);
+            if (c[k].j >= 0) fprintf(a.f, "%d,%d", c[k].i, c[k].j);
+            else fprintf(a.f, "%d,%s", c[k].i, gb_wall_name(-1 - c[k].j));
+            fprintf(a.f, ",%.10e,%.10e,%.10e,%.10e,%.10e,%.10e\n", c[k].nx, c[k].ny, c[k].pn, c[k].pt, e, c[k].diss);
+        }
+        st = gb_atomic_commit(&a, err);
+    }
+    free(c);
+    return st;
+}
+
 gb_status gb_run_output_step(gb_run_output *o, const gb_sim *sim, const gb_step_report *r, gb_error *err)
 {
     fprintf(o->steps, "%d,%d,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%ld,%.6e,%.6e,%d,%.17g,%.17g\n", r->step,
             r->stage + 1, r->e1 - r->e2, r->e1, r->e2, r->ev, r->s1, r->s2, r->stress_ratio, r->iterations,
             r->max_fixing_force, r->seconds, r->n_contacts, r->width, r->height);
     if (fflush(o->steps) != 0 || ferror(o->steps)) return gb_fail(err, GB_EIO, "%s/steps.csv: write failed", o->dir);
-    if (!snapshot_due(o->scene, r->step)) return GB_OK;
+    gb_micro m;
+    gb_micro_measure(sim, &m);
+    fprintf(o->micro, "%d,%d,%d,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.6f,%.10e,%.10e,%.10e,%.10e,%.10e,%.6f,%.17g,"
+                      "%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.6f\n",
+            r->step, m.n_contacts, m.n_wall_contacts, m.coordination, m.fabric.xx, m.fabric.yy, m.fabric.xy,
+            m.fabric.major, m.fabric.minor, m.fabric.angle_deg, m.energy.xx, m.energy.yy, m.energy.xy,
+            m.energy.major, m.energy.minor, m.energy.angle_deg, m.area, m.elastic_energy, m.work, m.work_walls,
+            m.work_body, m.dissipation, m.dissipation_step, m.balance, m.p_max);
+    if (fflush(o->micro) != 0 || ferror(o->micro))
+        return gb_fail(err, GB_EIO, "%s/micromechanics.csv: write failed", o->dir);
+    gb_status st;
+    const gb_scene *sc = o->scene;
     char path[1024];
+    if ((sc->contacts_every > 0 && r->step % sc->contacts_every == 0) || snapshot_due(sc, r->step)) {
+        snprintf(path, sizeof path, "%s/contacts", o->dir);
+        if ((st = make_dirs(path, err))) return st;
+        snprintf(path, sizeof path, "%s/contacts/contacts_%06d.csv", o->dir, r->step);
+        if ((st = write_contacts_csv(path, sim, err))) return st;
+    }
+    if (!snapshot_due(sc, r->step)) return GB_OK;
     snprintf(path, sizeof path, "%s/snapshots", o->dir);
-    gb_status st = make_dirs(path, err);
-    if (st) return st;
+    if ((st = make_dirs(path, err))) return st;
     snprintf(path, sizeof path, "%s/snapshots/grains_%06d.vtp", o->dir, r->step);
     if ((st = gb_vtk_write_grains(path, sim, err))) return st;
     snprintf(path, sizeof path, "%s/snapshots/contacts_%06d.vtp", o->dir, r->step);
@@ -177,7 +234,9 @@ gb_status gb_run_output_close(gb_run_output *o, const gb_sim *sim, gb_status run
 {
     gb_status st = GB_OK;
     if (o->steps && fclose(o->steps) != 0) st = gb_fail(err, GB_EIO, "%s/steps.csv: write failed", o->dir);
-    o->steps = NULL;
+    if (o->micro && fclose(o->micro) != 0 && !st)
+        st = gb_fail(err, GB_EIO, "%s/micromechanics.csv: write failed", o->dir);
+    o->steps = o->micro = NULL;
     if (!st && sim) st = gb_state_write(o->dir, sim, err);
     if (!st) st = write_info(o, run_status == GB_OK ? "completed" : gb_status_name(run_status), message, err);
     free(o->snap_steps);

@@ -189,6 +189,9 @@ static gb_status read_output(gb_ymap *top, gb_scene *s, gb_error *err)
         (st = gb_ymap_find(&m, "snapshot_steps", 0, &list, err)))
         return st;
     s->snapshot_every = (int)every;
+    long contacts_every = 0;
+    if ((st = gb_ymap_int(&m, "contacts_every", 0, 0, 100000000L, &contacts_every, err))) return st;
+    s->contacts_every = (int)contacts_every;
     if (list) {
         int total = gb_scene_total_steps(s);
         if (fy_node_get_type(list) != FYNT_SEQUENCE)

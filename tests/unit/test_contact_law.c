@@ -11,7 +11,7 @@ int main(void)
     double tan_phi = tan(30 * 3.14159265358979323846 / 180);
     double walls[8] = {0};
     double dX[6] = {0};
-    gb_pair p = {0, 1, 0, 0, 0, 0, 0};
+    gb_pair p = {.i = 0, .j = 1};
     gb_pair_geometry(&p, g, &box);
     CHECK_NEAR(p.d, 0.01, 1e-15);
     p.pn = m.kn * p.d;
@@ -24,11 +24,16 @@ int main(void)
     CHECK_NEAR(p.pt, m.kt * (1e-6 + 2e-6 + 3e-6), 1e-6);
     CHECK_NEAR(p.pn, m.kn * (2 - hypot(1.99, 1e-6)), 1e-3);
 
-    /* A large tangential move: |pt| is capped at pn tan(phi) (K 13). */
+    /* A large tangential move: |pt| is capped at pn tan(phi) (K 13); the slip beyond the elastic
+     * part dissipates mean(pt) x (du_t - dpt/kt) (K 26-28). */
+    double pt_before = p.pt;
     dX[1] = 1e-2, dX[2] = dX[5] = 0;
     g[0].y += dX[1];
-    gb_pair_update(&p, g, &box, dX, walls, &m, tan_phi);
+    double du_t = 1e-2; /* along t = (-ny, nx) = (0, 1) of the previous normal (1, 0) */
+    double diss = gb_pair_update(&p, g, &box, dX, walls, &m, tan_phi);
     CHECK_NEAR(p.pt, p.pn * tan_phi, 1e-9 * p.pn);
+    CHECK_NEAR(diss, 0.5 * (pt_before + p.pt) * (du_t - (p.pt - pt_before) / m.kt), 1e-9 * diss);
+    CHECK(diss > 0);
     /* and the other way */
     dX[1] = -3e-2;
     g[0].y += dX[1];
@@ -46,8 +51,11 @@ int main(void)
     /* Opening: a move apart drops both forces; touching again starts with pt = 0. */
     dX[0] = -0.02, dX[1] = 0;
     g[0].x += dX[0];
-    gb_pair_update(&p, g, &box, dX, walls, &m, tan_phi);
+    pt_before = p.pt;
+    diss = gb_pair_update(&p, g, &box, dX, walls, &m, tan_phi);
     CHECK(p.d < 0);
+    /* Opening releases the tangential spring's energy. */
+    CHECK_NEAR(diss, pt_before * pt_before / (2 * m.kt), 1e-12 * diss);
     CHECK_NEAR(p.pn, 0, 0);
     CHECK_NEAR(p.pt, 0, 0);
     dX[0] = 0.015, dX[1] = 1e-4;
@@ -61,7 +69,7 @@ int main(void)
     /* A wall contact: the wall's own translation enters du_t and du_n. */
     gb_grain w[1] = {{0, 0.999, 1, 0}};
     gb_box b2 = {-100, 100, 0, 100};
-    gb_pair q = {0, -1 - GB_WALL_BOTTOM, 0, 0, 0, 0, 0};
+    gb_pair q = {.i = 0, .j = -1 - GB_WALL_BOTTOM};
     gb_pair_geometry(&q, w, &b2);
     CHECK_NEAR(q.d, 1e-3, 1e-15);
     CHECK(q.nx == 0 && q.ny == -1);

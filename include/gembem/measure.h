@@ -1,0 +1,37 @@
+/* Micromechanics of a granular state (Kishino 1989, section 4): fabric and energy tensors, work,
+ * dissipation and the energy balance. Only force-carrying contacts count; a grain-wall contact
+ * counts once where a grain-grain contact counts twice (once from each grain), so that walls carry
+ * "the other half" (K 23, 24, 29). Tensors are in x (horizontal), y (vertical) components. */
+#ifndef GEMBEM_MEASURE_H
+#define GEMBEM_MEASURE_H
+
+#include "gembem/gem.h"
+
+typedef struct {
+    double xx, yy, xy;
+    double major, minor;  /* principal values */
+    double angle_deg;     /* direction of the major axis, from the x axis, in (-90, 90] */
+} gb_tensor2;
+
+typedef struct {
+    int n_contacts;          /* force-carrying contacts (grain-grain and grain-wall) */
+    int n_wall_contacts;
+    double coordination;     /* (2 N_gg + N_gw) / N, equal to the trace of the fabric tensor */
+    gb_tensor2 fabric;       /* C_ij = sum_grains sum_contacts n_i n_j / N (K 23) */
+    gb_tensor2 energy;       /* E_ij = sum_grains sum_contacts e_c n_i n_j / 2A (K 24) */
+    double area;             /* A: the box */
+    double elastic_energy;   /* all springs, walls' included in full */
+    double work;             /* external work since the start: walls + body forces */
+    double work_walls, work_body;
+    double dissipation;      /* since the start (K 28, summed over iterations) */
+    double dissipation_step; /* of the last load step */
+    double p_max;            /* largest single-contact share of the last step's dissipation */
+    double balance;          /* W - D - (elastic energy - its initial value) */
+} gb_micro;
+
+void gb_micro_measure(const gb_sim *sim, gb_micro *m);
+
+/* Principal values and direction of a symmetric 2x2 tensor. */
+void gb_tensor2_principal(gb_tensor2 *t);
+
+#endif
