@@ -1,8 +1,15 @@
-/* (H 3-5): the influence matrices H and G of constant elements, dense and column-major. */
+/* (H 3-5): the influence matrices H and G of constant elements, dense and column-major. The
+ * closed forms of bem/segment.c, specialised for speed: the column block of element j is filled
+ * for every collocation point i, log r at the element's start node is reused from the previous
+ * element of the loop (its end node), and the columns are shared between threads. */
+#define _POSIX_C_SOURCE 200809L
+#include <math.h>
+#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
-#include "bem/segment.h"
+#include "bem/kernel.h"
 #include "gembem/bem.h"
 
 void gb_bem_system_free(gb_bem_system *sys)
@@ -11,6 +18,75 @@ void gb_bem_system_free(gb_bem_system *sys)
     free(sys->H);
     free(sys->G);
     memset(sys, 0, sizeof *sys);
+}
+
+typedef struct {
+    const gb_bem_mesh *m;
+    const gb_bem_kconst *k;
+    gb_bem_system *sys;
+    int j0, j1;  /* columns (elements) of this worker */
+    double *lr;  /* 2 n: log r to the start and end node of the current element, per row */
+} work;
+
+static void fill_columns(work *w)
+{
+    const gb_bem_mesh *m = w->m;
+    const gb_bem_kconst *k = w->k;
+    size_t nd = 2 * (size_t)m->n;
+    int n = m->n;
+    double nu = k->nu, c34 = 3 - 4 * nu, c12 = 1 - 2 * nu, cu = k->cu, cp = k->cp;
+    double *pe = w->lr, *ce = w->lr + n; /* logs at the previous element's end node, this one's */
+    const double *X = m->mid;
+    for (int j = w->j0; j < w->j1; j++) {
+        const double *a = m->p0 + 2 * j, *t = m->tangent + 2 * j;
+        double L = m->length[j], tx = t[0], ty = t[1], txx = tx * tx, tyy = ty * ty, txy = tx * ty;
+        /* the start node's logs are the previous element's end-node logs when it is the same node */
+        int reuse = j > w->j0 && m->loop[j - 1] == m->loop[j];
+        double *H0 = w->sys->H + (size_t)(2 * j) * nd, *H1 = H0 + nd;
+        double *G0 = w->sys->G + (size_t)(2 * j) * nd, *G1 = G0 + nd;
+        for (int i = 0; i < n; i++) {
+            double ax = a[0] - X[2 * i], ay = a[1] - X[2 * i + 1];
+            double u1 = ax * tx + ay * ty, hh = ax * ty - ay * tx, u2 = u1 + L;
+            double h2 = hh * hh, r1s = u1 * u1 + h2, r2s = u2 * u2 + h2;
+            double lr1 = reuse ? pe[i] : 0.5 * log(r1s), lr2 = 0.5 * log(r2s);
+            ce[i] = lr2;
+            double th, P, Q, dl;
+            if (i == j) {
+                th = P = Q = dl = 0;
+                hh = 0;
+            } else {
+                th = atan2(hh * L, u1 * u2 + h2);
+                P = 0.5 * hh * (u2 / r2s - u1 / r1s);
+                Q = 0.5 * h2 * (1 / r2s - 1 / r1s);
+                dl = lr2 - lr1;
+            }
+            double I0 = u2 * lr2 - u1 * lr1 - L + hh * th;
+            double g00 = cu * (-c34 * I0 + (L - hh * th)), g01 = cu * hh * dl, g11 = cu * (-c34 * I0 + hh * th);
+            double h00 = cp * (c12 * th + th - 2 * P), h01 = cp * (-2 * Q - c12 * dl);
+            double h10 = cp * (-2 * Q + c12 * dl), h11 = cp * (c12 * th + th + 2 * P);
+            /* M = R M_loc R^t, R = [t n], n = (ty, -tx) */
+            G0[2 * i] = g00 * txx + g11 * tyy + 2 * g01 * txy;
+            G1[2 * i + 1] = g00 * tyy + g11 * txx - 2 * g01 * txy;
+            G1[2 * i] = G0[2 * i + 1] = (g00 - g11) * txy - g01 * (txx - tyy);
+            H0[2 * i] = h00 * txx + h11 * tyy + (h01 + h10) * txy;
+            H1[2 * i + 1] = h00 * tyy + h11 * txx - (h01 + h10) * txy;
+            H1[2 * i] = (h00 - h11) * txy - h01 * txx + h10 * tyy;
+            H0[2 * i + 1] = (h00 - h11) * txy + h01 * tyy - h10 * txx;
+            if (i == j) { /* c = 1/2 I at a smooth midpoint */
+                H0[2 * i] += 0.5;
+                H1[2 * i + 1] += 0.5;
+            }
+        }
+        double *tmp = pe; /* this element's end node starts the next one */
+        pe = ce;
+        ce = tmp;
+    }
+}
+
+static void *worker(void *arg)
+{
+    fill_columns(arg);
+    return NULL;
 }
 
 gb_status gb_bem_assemble(const gb_bem_mesh *m, const gb_bem_material *mat, gb_bem_system *sys, gb_error *err)
@@ -25,31 +101,26 @@ gb_status gb_bem_assemble(const gb_bem_mesh *m, const gb_bem_material *mat, gb_b
     sys->material = *mat;
     sys->H = malloc(sizeof(double) * nd * nd);
     sys->G = malloc(sizeof(double) * nd * nd);
-    if (!sys->H || !sys->G) {
+    long ncpu = sysconf(_SC_NPROCESSORS_ONLN);
+    int nt = m->n < 400 ? 1 : ncpu < 1 ? 1 : ncpu > 8 ? 8 : (int)ncpu;
+    work w[8];
+    double *lr = malloc(sizeof(double) * 2 * (size_t)m->n * (size_t)nt);
+    if (!sys->H || !sys->G || !lr) {
+        free(lr);
         gb_bem_system_free(sys);
         return gb_fail(err, GB_ENOMEM, "out of memory for %zu x %zu influence matrices", nd, nd);
     }
-    /* column block j (element j), rows i (collocation points): contiguous writes */
-    for (int j = 0; j < m->n; j++) {
-        const double *a = m->p0 + 2 * j, *b = m->p1 + 2 * j;
-        double *H0 = sys->H + (size_t)(2 * j) * nd, *H1 = H0 + nd;
-        double *G0 = sys->G + (size_t)(2 * j) * nd, *G1 = G0 + nd;
-        for (int i = 0; i < m->n; i++) {
-            double g[4], h[4];
-            gb_bem_segment_gh(&k, m->mid + 2 * i, a, b, i == j, g, h);
-            if (i == j) { /* c = 1/2 I at a smooth midpoint */
-                h[0] += 0.5;
-                h[3] += 0.5;
-            }
-            H0[2 * i] = h[0];
-            H0[2 * i + 1] = h[2];
-            H1[2 * i] = h[1];
-            H1[2 * i + 1] = h[3];
-            G0[2 * i] = g[0];
-            G0[2 * i + 1] = g[2];
-            G1[2 * i] = g[1];
-            G1[2 * i + 1] = g[3];
-        }
+    pthread_t th[8];
+    int started[8] = {0};
+    for (int i = 0; i < nt; i++) {
+        w[i] = (work){m, &k, sys, (int)((long)m->n * i / nt), (int)((long)m->n * (i + 1) / nt), lr + 2 * (size_t)m->n * (size_t)i};
+        if (i > 0) started[i] = pthread_create(&th[i], NULL, worker, &w[i]) == 0;
     }
+    fill_columns(&w[0]);
+    for (int i = 1; i < nt; i++) {
+        if (started[i]) pthread_join(th[i], NULL);
+        else fill_columns(&w[i]); /* no thread: do it here */
+    }
+    free(lr);
     return GB_OK;
 }

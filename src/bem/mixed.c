@@ -9,7 +9,7 @@
 gb_bem_guard gb_bem_guard_default(void)
 {
     gb_bem_guard g;
-    g.rcond_min = 0; /* auto: 1e-2 / n */
+    g.rcond_min = 0; /* auto: 0.05 / n (a sound G of n unknowns: about 1 / n) */
     return g;
 }
 
@@ -102,7 +102,7 @@ gb_status gb_bem_mixed_factor(const gb_bem_mixed *mx, const gb_bem_guard *guard,
     gb_bem_mixed_fill(mx, 0, lu->a);
     if ((st = gb_bem_lu_factor(lu, err))) return st;
     *rcond_first = lu->rcond;
-    double rmin = guard->rcond_min > 0 ? guard->rcond_min : guard->rcond_min == 0 ? 1e-2 / na : 0;
+    double rmin = guard->rcond_min > 0 ? guard->rcond_min : guard->rcond_min == 0 ? 0.05 / na : 0;
     if (has_g && lu->rcond < rmin) {
         /* near a degenerate scale: redo in lengths where the body's half-diagonal is 1/4 */
         double r0 = lu->rcond, l1 = log(0.25 / half_diagonal(mx->mesh));

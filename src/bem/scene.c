@@ -165,13 +165,16 @@ static gb_status read_boundary(const gb_yaml_doc *doc, gb_ymap *root, gb_bem_sce
             if ((st = gb_ymap_find(&c, "pressure", 0, &v, err))) return st;
             if (v) found++, bc->kind = GB_BEM_BC_PRESSURE;
             if ((st = gb_ymap_number(&c, "pressure", 0, &bc->value[0], err))) return st;
+            if ((st = gb_ymap_find(&c, "normal_displacement", 0, &v, err))) return st;
+            if (v) found++, bc->kind = GB_BEM_BC_NORMAL_DISPLACEMENT;
+            if ((st = gb_ymap_number(&c, "normal_displacement", 0, &bc->value[0], err))) return st;
             if ((st = gb_ymap_close(&c, err))) return st;
             if (found != 1)
-                return gb_yaml_fail(doc, val, err, "%s: expected exactly one of displacement, traction, pressure", path);
+                return gb_yaml_fail(doc, val, err, "%s: expected exactly one of displacement, traction, pressure, normal_displacement", path);
         } else {
             return gb_yaml_fail(doc, val ? val : key, err,
-                                "boundary.%s: expected fixed, free, {displacement: [ux, uy]}, {traction: [tx, ty]} or "
-                                "{pressure: p}",
+                                "boundary.%s: expected fixed, free, {displacement: [ux, uy]}, {traction: [tx, ty]}, "
+                                "{pressure: p} or {normal_displacement: d}",
                                 gname);
         }
     }

@@ -1,0 +1,3 @@
+Point(1) = {0,0,0}; Point(2) = {1,0,0}; Point(3) = {1,1,0}; Point(4) = {0,1,0};
+Line(1) = {1,2}; Line(2) = {2,3}; Line(3) = {3,4};
+Physical Curve("outer") = {1,2,3};
