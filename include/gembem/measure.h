@@ -25,8 +25,15 @@ typedef struct {
     double work_walls, work_body;
     double dissipation;      /* since the start (K 28, summed over iterations) */
     double dissipation_step; /* of the last load step */
+    double dissipation_step_k28; /* the same from the step's start and end states alone (K 25-28) */
     double p_max;            /* largest single-contact share of the last step's dissipation */
-    double balance;          /* W - D - (elastic energy - its initial value) */
+    double balance;          /* W - D - (elastic energy - its initial value): the paper's check */
+    /* The iteration's own books: the walls' work as they are moved (instant strain increments and
+     * stress-control moves), the energy absorbed by the fixing forces (-sum F.dX: what a dynamic
+     * system would damp), and W_iter - D - L - dE, zero to the accuracy of the trapezoid rule. */
+    double work_walls_iter;
+    double relaxation;
+    double balance_iter;
 } gb_micro;
 
 void gb_micro_measure(const gb_sim *sim, gb_micro *m);

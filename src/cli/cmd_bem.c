@@ -102,7 +102,7 @@ static gb_status write_all(const char *dir, run *r, gb_error *err)
     if (!st && r->has_k && r->sc.stiffness_write)
         st = gb_bem_write_stiffness_csv(OUT("stiffness.csv"), &r->sc.mesh, &r->k, err);
     int used = snprintf(text, sizeof text,
-                        "gembem %s\nscene: %s\nmesh: %s (%d elements, %d loops, %s)\nunits: length %s, force %s\n"
+                        "gembem %s\nscene: %s\nmesh: %s (%d elements, %d loop(s), %s)\nunits: length %s, force %s\n"
                         "system rcond: %.6e (at the scene's own lengths: %.6e), length scale used: %.6g\n",
                         gb_version(), r->sc.path, r->sc.mesh_path, r->sc.mesh.n, r->sc.mesh.n_loops,
                         r->sc.mesh.unbounded ? "unbounded" : "bounded", r->sc.length_unit, r->sc.force_unit,

@@ -129,6 +129,14 @@ void gb_gem_grain_move(const gb_sim *sim, int i, double dX[3])
     dX[1] = an * ey + at * ex;
 }
 
+/* sum over grains of F.dX with the current F and dX */
+static double fixing_work(const gb_sim *sim)
+{
+    double w = 0;
+    for (int k = 0; k < 3 * sim->n; k++) w += sim->F[k] * sim->dX[k];
+    return w;
+}
+
 /* Wall moves of this iteration; returns the walls' residual force (0 for fixed walls). */
 static double wall_moves(gb_sim *sim, const gb_wall_control *wc)
 {
@@ -192,12 +200,22 @@ gb_status gb_gem_apply_moves(gb_sim *sim, gb_error *err)
     }
     const gb_material *gg = &sim->scene->grain_grain, *gw = &sim->scene->grain_wall;
     gb_pair *P = sim->pairs.p;
-    double diss = 0;
+    double diss = 0, wall_after[GB_N_WALLS] = {0, 0, 0, 0};
     for (int k = 0; k < sim->pairs.n; k++) {
         gb_pair *p = &P[k];
-        if (p->j >= 0) diss += gb_pair_update(p, sim->g, b, sim->dX, &sim->wall_dx[0][0], gg, sim->tan_phi_gg);
-        else diss += gb_pair_update(p, sim->g, b, sim->dX, &sim->wall_dx[0][0], gw, sim->tan_phi_gw);
+        if (p->j >= 0) {
+            diss += gb_pair_update(p, sim->g, b, sim->dX, &sim->wall_dx[0][0], gg, sim->tan_phi_gg);
+        } else {
+            diss += gb_pair_update(p, sim->g, b, sim->dX, &sim->wall_dx[0][0], gw, sim->tan_phi_gw);
+            wall_after[-1 - p->j] += p->pn;
+        }
     }
+    /* The walls' work in this move: mean normal force times inward displacement (sim->wall_force
+     * holds the forces before the move). */
+    double inward[GB_N_WALLS] = {sim->wall_dx[GB_WALL_LEFT][0], -sim->wall_dx[GB_WALL_RIGHT][0],
+                                 sim->wall_dx[GB_WALL_BOTTOM][1], -sim->wall_dx[GB_WALL_TOP][1]};
+    for (int w = 0; w < GB_N_WALLS; w++)
+        sim->work_walls_iter += 0.5 * (sim->wall_force[w] + wall_after[w]) * inward[w];
     sim->dissipation += diss;
     sim->dissipation_step += diss;
     return GB_OK;
@@ -215,6 +233,11 @@ int gb_gem_iterate(gb_sim *sim, const gb_wall_control *wc, double *max_force, do
         if (f2 > max2 || f2 != f2) max2 = f2;
     }
     *max_force = sqrt(max2);
+    /* Energy absorbed by the fixing forces (the "hand" that holds each grain) over a move, by the
+     * trapezoid rule: the springs' energy changes by sum (F + B).dX + walls' work - dissipation,
+     * so -sum F.dX is what the quasi-static iteration loses where a dynamic system would damp. */
+    if (sim->half_pending) sim->relaxation -= 0.5 * fixing_work(sim);
+    sim->half_pending = 0;
     *wall_residual = wall_moves(sim, wc);
     if (!isfinite(*max_force) || !isfinite(*wall_residual)) {
         *st = gb_fail(err, GB_ENUMERIC, "a fixing force became non-finite");
@@ -227,6 +250,8 @@ int gb_gem_iterate(gb_sim *sim, const gb_wall_control *wc, double *max_force, do
     }
     /* Every grain's move from the same configuration, then all at once (order-independent). */
     for (int i = 0; i < sim->n; i++) gb_gem_grain_move(sim, i, &sim->dX[3 * i]);
+    sim->relaxation -= 0.5 * fixing_work(sim);
+    sim->half_pending = 1;
     *st = gb_gem_apply_moves(sim, err);
     return 0;
 }

@@ -215,6 +215,8 @@ static void restore_state(gb_sim *sim)
 /* Imposes a strain increment (compression positive) on the walls, symmetrically, grains held. */
 static gb_status impose_strain(gb_sim *sim, double de1, double de2, gb_error *err)
 {
+    gb_gem_forces(sim); /* the walls' forces before the move, for their work */
+    sim->half_pending = 0;
     memset(sim->dX, 0, (size_t)sim->n * 3 * sizeof(double));
     memset(sim->wall_dx, 0, sizeof sim->wall_dx);
     double dy = 0.5 * de1 * sim->ref_height, dx = 0.5 * de2 * sim->ref_width;
@@ -342,8 +344,9 @@ gb_status gb_sim_run(gb_sim *sim, gb_step_fn on_step, void *user, gb_error *err)
             fill_report(sim, &rep);
             add_step_work(sim);
             rep.seconds = now_seconds() - t0;
-            save_state(sim, err, &st);
-            if (!st && on_step) st = on_step(user, sim, &rep, err);
+            /* The output sees the step's start in the saved state; then it becomes the start of the next. */
+            if (on_step) st = on_step(user, sim, &rep, err);
+            if (!st) save_state(sim, err, &st);
         }
     }
     return st;

@@ -43,7 +43,10 @@ struct gb_sim {
     double saved_wall_force[GB_N_WALLS];
     long iterations_total;
     /* Energy accounts since the start of the run (absolute, force x length). */
-    double work_walls;        /* done by the walls on the grains */
+    double work_walls;        /* done by the walls: quasi-static, from converged steps' forces */
+    double work_walls_iter;   /* done by the walls as the iterations move them */
+    double relaxation;        /* absorbed by the fixing forces: -sum F.dX over the iterations */
+    int half_pending;         /* the second half of the last move's relaxation is still due */
     double work_body;         /* done by the body forces */
     double dissipation;       /* (K 28) summed over contacts and iterations */
     double dissipation_step;  /* of the current load step */

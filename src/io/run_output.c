@@ -131,7 +131,8 @@ gb_status gb_run_output_open(const char *dir, const gb_scene *scene, int overwri
      * since the start of the run; densities divide by the area. */
     fprintf(o->micro, "step,contacts,wall_contacts,coordination,C_xx,C_yy,C_xy,C_major,C_minor,C_angle_deg,"
                       "E_xx,E_yy,E_xy,E_major,E_minor,E_angle_deg,area,elastic_energy,work,work_walls,work_body,"
-                      "dissipation,dissipation_step,balance,P_max\n");
+                      "dissipation,dissipation_step,dissipation_step_k28,balance,P_max,work_walls_iter,relaxation,"
+                      "balance_iter\n");
     fflush(o->micro);
     *out = o;
     return GB_OK;
@@ -171,13 +172,23 @@ static gb_status write_contacts_csv(const char *path, const gb_sim *sim, gb_erro
     gb_atomic_file a;
     gb_status st = gb_atomic_open(&a, path, err);
     if (!st) {
-        fprintf(a.f, "i,j,nx,ny,pn,pt,energy,dissipation\n");
+        /* (xi, yi) - (xj, yj): grain i's centre to grain j's, or to the contact point on a wall. */
+        fprintf(a.f, "i,j,nx,ny,pn,pt,energy,dissipation,xi,yi,xj,yj\n");
+        const gb_grain *g = gb_sim_grains(sim);
         for (int k = 0; k < m; k++) {
             const gb_material *mat = c[k].j >= 0 ? &sc->grain_grain : &sc->grain_wall;
             double e = 0.5 * c[k].pn * c[k].pn / mat->kn + (mat->kt > 0 ? 0.5 * c[k].pt * c[k].pt / mat->kt : 0);
-            if (c[k].j >= 0) fprintf(a.f, "%d,%d", c[k].i, c[k].j);
-            else fprintf(a.f, "%d,%s", c[k].i, gb_wall_name(-1 - c[k].j));
-            fprintf(a.f, ",%.10e,%.10e,%.10e,%.10e,%.10e,%.10e\n", c[k].nx, c[k].ny, c[k].pn, c[k].pt, e, c[k].diss);
+            const gb_grain *gi = &g[c[k].i];
+            double xj, yj;
+            if (c[k].j >= 0) {
+                xj = g[c[k].j].x, yj = g[c[k].j].y;
+                fprintf(a.f, "%d,%d", c[k].i, c[k].j);
+            } else {
+                xj = gi->x + c[k].nx * (gi->r - c[k].overlap), yj = gi->y + c[k].ny * (gi->r - c[k].overlap);
+                fprintf(a.f, "%d,%s", c[k].i, gb_wall_name(-1 - c[k].j));
+            }
+            fprintf(a.f, ",%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e\n", c[k].nx, c[k].ny, c[k].pn,
+                    c[k].pt, e, c[k].diss, gi->x, gi->y, xj, yj);
         }
         st = gb_atomic_commit(&a, err);
     }
@@ -194,11 +205,12 @@ gb_status gb_run_output_step(gb_run_output *o, const gb_sim *sim, const gb_step_
     gb_micro m;
     gb_micro_measure(sim, &m);
     fprintf(o->micro, "%d,%d,%d,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.6f,%.10e,%.10e,%.10e,%.10e,%.10e,%.6f,%.17g,"
-                      "%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.6f\n",
+                      "%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.6f,%.10e,%.10e,%.10e\n",
             r->step, m.n_contacts, m.n_wall_contacts, m.coordination, m.fabric.xx, m.fabric.yy, m.fabric.xy,
             m.fabric.major, m.fabric.minor, m.fabric.angle_deg, m.energy.xx, m.energy.yy, m.energy.xy,
             m.energy.major, m.energy.minor, m.energy.angle_deg, m.area, m.elastic_energy, m.work, m.work_walls,
-            m.work_body, m.dissipation, m.dissipation_step, m.balance, m.p_max);
+            m.work_body, m.dissipation, m.dissipation_step, m.dissipation_step_k28, m.balance, m.p_max,
+            m.work_walls_iter, m.relaxation, m.balance_iter);
     if (fflush(o->micro) != 0 || ferror(o->micro))
         return gb_fail(err, GB_EIO, "%s/micromechanics.csv: write failed", o->dir);
     gb_status st;
@@ -209,6 +221,8 @@ gb_status gb_run_output_step(gb_run_output *o, const gb_sim *sim, const gb_step_
         if ((st = make_dirs(path, err))) return st;
         snprintf(path, sizeof path, "%s/contacts/contacts_%06d.csv", o->dir, r->step);
         if ((st = write_contacts_csv(path, sim, err))) return st;
+        snprintf(path, sizeof path, "%s/contacts/grains_%06d.csv", o->dir, r->step);
+        if ((st = gb_grains_csv_write(path, sim, err))) return st;
     }
     if (!snapshot_due(sc, r->step)) return GB_OK;
     snprintf(path, sizeof path, "%s/snapshots", o->dir);

@@ -7,7 +7,7 @@
 
 #include <stdlib.h>
 
-static gb_status write_grains(const char *path, const gb_sim *sim, gb_error *err)
+gb_status gb_grains_csv_write(const char *path, const gb_sim *sim, gb_error *err)
 {
     gb_atomic_file a;
     gb_status st = gb_atomic_open(&a, path, err);
@@ -45,7 +45,7 @@ gb_status gb_state_write(const char *dir, const gb_sim *sim, gb_error *err)
     char path[1024];
     gb_status st;
     snprintf(path, sizeof path, "%s/state_grains.csv", dir);
-    if ((st = write_grains(path, sim, err))) return st;
+    if ((st = gb_grains_csv_write(path, sim, err))) return st;
     snprintf(path, sizeof path, "%s/state_contacts.csv", dir);
     if ((st = write_contacts(path, sim, err))) return st;
     snprintf(path, sizeof path, "%s/state.yaml", dir);

@@ -17,6 +17,40 @@ void gb_tensor2_principal(gb_tensor2 *t)
     t->angle_deg = a <= -90 ? a + 180 : a;
 }
 
+/* The step's dissipation as the paper computes it, from the step's start and end alone:
+ * du_t of the whole step (K 25) in the tangent at the start, its elastic part dpt/kt (K 26), the
+ * slip (K 27) times the mean tangential force, zero if either end is zero (K 28). */
+static double step_dissipation_k28(const gb_sim *sim)
+{
+    const gb_pair *a = sim->saved_pairs, *b = sim->pairs.p;
+    int na = sim->saved_n_pairs, nb = sim->pairs.n, ia = 0;
+    const gb_box *b0 = &sim->saved_box, *b1 = &sim->box;
+    double wall_dx[GB_N_WALLS][2] = {{b1->left - b0->left, 0}, {b1->right - b0->right, 0},
+                                     {0, b1->bottom - b0->bottom}, {0, b1->top - b0->top}};
+    double total = 0;
+    for (int k = 0; k < nb; k++) {
+        const gb_pair *q = &b[k];
+        if (!(q->d > 0) || q->pt == 0) continue;
+        while (ia < na && (a[ia].i < q->i || (a[ia].i == q->i && a[ia].j < q->j))) ia++;
+        if (ia >= na || a[ia].i != q->i || a[ia].j != q->j) continue;
+        const gb_pair *p = &a[ia];
+        if (!(p->d > 0) || p->pt == 0) continue;
+        const gb_material *mat = q->j >= 0 ? &sim->scene->grain_grain : &sim->scene->grain_wall;
+        if (!(mat->kt > 0)) continue;
+        const gb_grain *g0 = &sim->saved_g[q->i], *g1 = &sim->g[q->i];
+        double dx = g1->x - g0->x, dy = g1->y - g0->y, rot = g1->r * (g1->rot - g0->rot);
+        if (q->j >= 0) {
+            const gb_grain *h0 = &sim->saved_g[q->j], *h1 = &sim->g[q->j];
+            dx -= h1->x - h0->x, dy -= h1->y - h0->y, rot += h1->r * (h1->rot - h0->rot);
+        } else {
+            dx -= wall_dx[-1 - q->j][0], dy -= wall_dx[-1 - q->j][1];
+        }
+        double du_t = -dx * p->ny + dy * p->nx + rot;
+        total += 0.5 * (p->pt + q->pt) * (du_t - (q->pt - p->pt) / mat->kt);
+    }
+    return total;
+}
+
 void gb_micro_measure(const gb_sim *sim, gb_micro *m)
 {
     memset(m, 0, sizeof *m);
@@ -52,5 +86,10 @@ void gb_micro_measure(const gb_sim *sim, gb_micro *m)
     m->dissipation = sim->dissipation;
     m->dissipation_step = sim->dissipation_step;
     m->p_max = sim->dissipation_step > 0 ? max_diss / sim->dissipation_step : 0;
+    m->dissipation_step_k28 = step_dissipation_k28(sim);
     m->balance = m->work - m->dissipation - (m->elastic_energy - sim->energy0);
+    m->work_walls_iter = sim->work_walls_iter;
+    m->relaxation = sim->relaxation;
+    m->balance_iter = sim->work_walls_iter + sim->work_body - m->dissipation - sim->relaxation -
+                      (m->elastic_energy - sim->energy0);
 }
