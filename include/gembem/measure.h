@@ -38,6 +38,12 @@ typedef struct {
 
 void gb_micro_measure(const gb_sim *sim, gb_micro *m);
 
+/* Contact normals by direction, from the grains' side (K Figs. 11, 12): nbins sectors over
+ * [0, 360) degrees; a grain-grain contact counts in the direction of n and of -n, a grain-wall
+ * contact once, towards the wall, so the counts add up to N times the coordination number.
+ * `energy` is the same weighted by the contact's elastic energy (K 22). */
+void gb_micro_rose(const gb_sim *sim, int nbins, double *count, double *energy);
+
 /* Principal values and direction of a symmetric 2x2 tensor. */
 void gb_tensor2_principal(gb_tensor2 *t);
 

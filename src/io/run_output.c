@@ -161,6 +161,20 @@ static gb_status write_pvd(const gb_run_output *o, const char *what, gb_error *e
     return gb_atomic_commit(&a, err);
 }
 
+/* Contact normals by direction (K Figs. 11, 12), 36 sectors of 10 degrees. */
+static gb_status write_rose_csv(const char *path, const gb_sim *sim, gb_error *err)
+{
+    enum { NB = 36 };
+    double count[NB], energy[NB];
+    gb_micro_rose(sim, NB, count, energy);
+    gb_atomic_file a;
+    gb_status st = gb_atomic_open(&a, path, err);
+    if (st) return st;
+    fprintf(a.f, "from_deg,to_deg,count,energy\n");
+    for (int b = 0; b < NB; b++) fprintf(a.f, "%d,%d,%.0f,%.10e\n", 10 * b, 10 * (b + 1), count[b], energy[b]);
+    return gb_atomic_commit(&a, err);
+}
+
 /* Per-contact data of a step: direction, forces, elastic energy (K 22), the step's dissipation. */
 static gb_status write_contacts_csv(const char *path, const gb_sim *sim, gb_error *err)
 {
@@ -223,6 +237,8 @@ gb_status gb_run_output_step(gb_run_output *o, const gb_sim *sim, const gb_step_
         if ((st = write_contacts_csv(path, sim, err))) return st;
         snprintf(path, sizeof path, "%s/contacts/grains_%06d.csv", o->dir, r->step);
         if ((st = gb_grains_csv_write(path, sim, err))) return st;
+        snprintf(path, sizeof path, "%s/contacts/rose_%06d.csv", o->dir, r->step);
+        if ((st = write_rose_csv(path, sim, err))) return st;
     }
     if (!snapshot_due(sc, r->step)) return GB_OK;
     snprintf(path, sizeof path, "%s/snapshots", o->dir);

@@ -93,3 +93,23 @@ void gb_micro_measure(const gb_sim *sim, gb_micro *m)
     m->balance_iter = sim->work_walls_iter + sim->work_body - m->dissipation - sim->relaxation -
                       (m->elastic_energy - sim->energy0);
 }
+
+void gb_micro_rose(const gb_sim *sim, int nbins, double *count, double *energy)
+{
+    for (int b = 0; b < nbins; b++) count[b] = energy[b] = 0;
+    for (int k = 0; k < sim->pairs.n; k++) {
+        const gb_pair *p = &sim->pairs.p[k];
+        if (!(p->d > 0) || !(p->pn > 0)) continue;
+        const gb_material *mat = p->j >= 0 ? &sim->scene->grain_grain : &sim->scene->grain_wall;
+        double e = 0.5 * p->pn * p->pn / mat->kn + (mat->kt > 0 ? 0.5 * p->pt * p->pt / mat->kt : 0);
+        /* Seen from grain i the normal is n; from grain j (if a grain) it is -n. */
+        for (int side = 0; side < (p->j >= 0 ? 2 : 1); side++) {
+            double a = atan2(side ? -p->ny : p->ny, side ? -p->nx : p->nx);
+            if (a < 0) a += 2 * PI;
+            int b = (int)(a / (2 * PI) * nbins);
+            if (b >= nbins) b = nbins - 1;
+            count[b] += 1;
+            energy[b] += e;
+        }
+    }
+}

@@ -38,6 +38,9 @@ class Run:
     def contacts(self, step):
         return read_csv(os.path.join(self.dir, "contacts", f"contacts_{step:06d}.csv"))
 
+    def rose(self, step):
+        return read_csv(os.path.join(self.dir, "contacts", f"rose_{step:06d}.csv"))
+
     def grains(self, step):
         return read_csv(os.path.join(self.dir, "contacts", f"grains_{step:06d}.csv"))
 

@@ -39,21 +39,17 @@ def force_chains(run, step, title, path):
     plt.close(fig)
 
 
-def rose(run, steps, labels, weight, title, path):
-    """Contact normals by direction, in 10-degree bins over 0-180 (n and -n are one direction),
-    wall contacts counted half (K section 4 (2)); weighted by count or by elastic energy (K 22)."""
+def rose(run, steps, labels, column, title, path):
+    """Contact normals by direction from gembem's rose_NNNNNN.csv (36 sectors, from the grains'
+    side: a grain-grain contact in n and -n, a grain-wall contact once), in per cent."""
     fig = plt.figure(figsize=(8, 4))
     for k, (step, label) in enumerate(zip(steps, labels)):
-        bins = [0.0] * 18
-        for c in run.contacts(step):
-            a = math.degrees(math.atan2(float(c["ny"]), float(c["nx"]))) % 180
-            w = (1.0 if weight == "count" else float(c["energy"])) * (0.5 if c["j"].isalpha() else 1.0)
-            bins[int(a // 10) % 18] += w
-        total = sum(bins)
-        pct = [100 * b / total for b in bins]
+        rows = run.rose(step)
+        vals = [float(r[column]) for r in rows]
+        total = sum(vals)
         ax = fig.add_subplot(1, 2, k + 1, projection="polar")
-        th = [math.radians(5 + 10 * i) for i in range(18)]
-        ax.bar(th + [t + math.pi for t in th], pct + pct, width=math.radians(10), edgecolor="k", color="0.8")
+        th = [math.radians(float(r["from_deg"]) + 5) for r in rows]
+        ax.bar(th, [100 * v / total for v in vals], width=math.radians(10), edgecolor="k", color="0.8")
         ax.set_title(f"{label} (step {step})", fontsize=10)
     fig.suptitle(title)
     fig.tight_layout()
