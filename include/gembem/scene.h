@@ -53,7 +53,13 @@ typedef struct {
     double beta, beta1;    /* beta: drift of a grain without contact, b); beta1 (beta'): rolling, c) */
     double accuracy;       /* a: every grain's |F| <= a [force] */
     long max_iterations;   /* cap per load step */
+    int method;            /* GB_METHOD_REFERENCE (Jacobi-like, per grain) or GB_METHOD_GLOBAL */
+    int linear;            /* global: GB_LINEAR_CHOLMOD or GB_LINEAR_UMFPACK */
+    double global_alpha;   /* global: share of the solution taken per iteration (default 1) */
+    double max_move;       /* global: largest move per iteration, as a share of the grain's radius */
 } gb_solver_settings;
+
+enum { GB_METHOD_REFERENCE = 0, GB_METHOD_GLOBAL = 1 };
 
 typedef struct {
     char path[512];          /* the scene file */

@@ -100,7 +100,13 @@ static gb_status group_curves(extract *x, int g, int **tags, size_t *n, gb_error
     return GB_OK;
 }
 
-/* Length of the current 1D mesh of one curve. */
+static int cmp_size(const void *a, const void *b)
+{
+    size_t x = *(const size_t *)a, y = *(const size_t *)b;
+    return x < y ? -1 : x > y;
+}
+
+/* Length of the current 1D mesh of one curve (node tags sorted once, then looked up). */
 static double curve_mesh_length(int curve)
 {
     size_t *et = NULL, net = 0, *nt = NULL, nnt = 0, *ntag = NULL, nntag = 0;
@@ -110,12 +116,20 @@ static double curve_mesh_length(int curve)
     double len = 0;
     gmshModelMeshGetElementsByType(1, &et, &net, &nt, &nnt, curve, 0, 1, &ierr);
     gmshModelMeshGetNodes(&ntag, &nntag, &xyz, &nxyz, &par, &npar, 1, curve, 1, 0, &ierr);
-    for (size_t e = 0; e < nnt / 2; e++) {
-        double p[2][3] = {{0}};
-        for (int k = 0; k < 2; k++)
-            for (size_t i = 0; i < nntag; i++)
-                if (ntag[i] == nt[2 * e + k]) memcpy(p[k], xyz + 3 * i, sizeof p[k]);
-        len += hypot(p[1][0] - p[0][0], p[1][1] - p[0][1]);
+    size_t *order = malloc(sizeof(size_t) * 2 * (nntag ? nntag : 1));
+    if (order) {
+        for (size_t i = 0; i < nntag; i++) order[2 * i] = ntag[i], order[2 * i + 1] = i;
+        qsort(order, nntag, 2 * sizeof(size_t), cmp_size);
+        for (size_t e = 0; e < nnt / 2; e++) {
+            const double *p[2] = {NULL, NULL};
+            for (int k = 0; k < 2; k++) {
+                size_t key[2] = {nt[2 * e + k], 0};
+                size_t *hit = bsearch(key, order, nntag, 2 * sizeof(size_t), cmp_size);
+                if (hit) p[k] = xyz + 3 * hit[1];
+            }
+            if (p[0] && p[1]) len += hypot(p[1][0] - p[0][0], p[1][1] - p[0][1]);
+        }
+        free(order);
     }
     if (et) gmshFree(et);
     if (nt) gmshFree(nt);
@@ -159,7 +173,7 @@ static gb_status mesh_geo(extract *x, const gb_bem_mesh_opts *o, gb_error *err)
         for (size_t c = 0; c < nc && !st; c++) {
             int ne;
             if (gs->count > 0) { /* largest-remainder share of what is left, at least 1 */
-                ne = c + 1 == nc ? left : (int)lround(left * len[c] / left_len);
+                ne = c + 1 == nc ? left : left_len > 0 ? (int)lround(left * len[c] / left_len) : left / (int)(nc - c);
                 if (ne < 1) ne = 1;
                 if (c + 1 < nc && left - ne < (int)(nc - c - 1)) ne = left - (int)(nc - c - 1);
                 left -= ne;

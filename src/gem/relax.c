@@ -249,7 +249,11 @@ int gb_gem_iterate(gb_sim *sim, const gb_wall_control *wc, double *max_force, do
         return 1;
     }
     /* Every grain's move from the same configuration, then all at once (order-independent). */
-    for (int i = 0; i < sim->n; i++) gb_gem_grain_move(sim, i, &sim->dX[3 * i]);
+    if (sim->global) {
+        if ((*st = gb_global_moves(sim->global, sim, wc, *max_force + *wall_residual, err))) return 0;
+    } else {
+        for (int i = 0; i < sim->n; i++) gb_gem_grain_move(sim, i, &sim->dX[3 * i]);
+    }
     sim->relaxation -= 0.5 * fixing_work(sim);
     sim->half_pending = 1;
     *st = gb_gem_apply_moves(sim, err);
@@ -260,6 +264,7 @@ gb_status gb_gem_relax(gb_sim *sim, const gb_wall_control *wc, long cap, long *i
                        double *wall_residual, gb_error *err)
 {
     gb_status st = GB_OK;
+    if (sim->global) gb_global_restart(sim->global);
     for (long it = 0; it <= cap; it++) {
         if (gb_gem_iterate(sim, wc, max_force, wall_residual, err, &st)) {
             *iterations += it;

@@ -30,6 +30,7 @@ void gb_sim_free(gb_sim *sim)
     free(sim->saved_g);
     free(sim->saved_pairs);
     gb_pairs_free(&sim->pairs);
+    gb_global_free(sim->global);
     free(sim);
 }
 
@@ -108,6 +109,11 @@ gb_status gb_sim_create(const gb_scene *scene, gb_sim **out, gb_error *err)
         }
         /* Seen from the lower index the tangential force keeps its sign (K 25). */
         p->pt = ci->pt;
+    }
+    if (scene->solver.method == GB_METHOD_GLOBAL &&
+        (st = gb_global_create((gb_linear_kind)scene->solver.linear, n, &sim->global, err))) {
+        gb_sim_free(sim);
+        return st;
     }
     *out = sim;
     return GB_OK;

@@ -4,6 +4,7 @@
 
 #include "contact/pairs.h"
 #include "gembem/gem.h"
+#include "global/global.h"
 
 /* How the walls move during one relaxation. */
 typedef enum {
@@ -12,7 +13,7 @@ typedef enum {
     GB_WALLS_MEAN        /* an isotropic strain moves the walls to reach the mean stress */
 } gb_wall_mode;
 
-typedef struct {
+typedef struct gb_wall_control_s {
     gb_wall_mode mode;
     double s1, s2;  /* GB_WALLS_STRESS targets */
     double mean;    /* GB_WALLS_MEAN target */
@@ -29,6 +30,7 @@ struct gb_sim {
     int *nc;            /* contacts per grain */
     double *one;        /* per grain, of its last contact: normal towards the other side, kn */
     gb_pair_list pairs;
+    gb_global *global;  /* the global solver, when the scene asks for it */
     gb_box box;
     double wall_force[GB_N_WALLS]; /* normal force of the grains on each wall (compression +) */
     double wall_k[GB_N_WALLS];     /* wall contact stiffness: sum of kn of its contacts */

@@ -10,7 +10,7 @@
 
 gb_solver_settings gb_solver_defaults(void)
 {
-    gb_solver_settings s = {0.75, 0.5, 20.0, 20.0, 0.0, 100000};
+    gb_solver_settings s = {0.75, 0.5, 20.0, 20.0, 0.0, 100000, GB_METHOD_REFERENCE, 0, 1.0, 0.1};
     return s;
 }
 
@@ -82,14 +82,25 @@ static gb_status read_solver(gb_ymap *top, gb_solver_settings *sv, gb_error *err
     gb_status st;
     *sv = gb_solver_defaults();
     if ((st = gb_ymap_map(top, "solver", GB_Y_REQUIRED, &m, err))) return st;
-    char method[32] = "reference";
-    if ((st = gb_ymap_string(&m, "method", 0, method, sizeof method, err))) return st;
-    if (strcmp(method, "reference")) {
-        struct fy_node *v;
+    char method[32] = "reference", linear[32] = "cholmod";
+    if ((st = gb_ymap_string(&m, "method", 0, method, sizeof method, err)) ||
+        (st = gb_ymap_string(&m, "linear", 0, linear, sizeof linear, err)))
+        return st;
+    struct fy_node *v;
+    if (!strcmp(method, "global")) sv->method = GB_METHOD_GLOBAL;
+    else if (strcmp(method, "reference")) {
         gb_ymap_find(&m, "method", 0, &v, err);
-        return gb_yaml_fail(m.doc, v, err, "solver.method: expected 'reference' (the GEM iteration), found '%s'",
-                            method);
+        return gb_yaml_fail(m.doc, v, err, "solver.method: expected 'reference' (the GEM iteration) or 'global' "
+                                           "(one sparse system), found '%s'", method);
     }
+    if (!strcmp(linear, "umfpack")) sv->linear = 1;
+    else if (strcmp(linear, "cholmod")) {
+        gb_ymap_find(&m, "linear", 0, &v, err);
+        return gb_yaml_fail(m.doc, v, err, "solver.linear: expected 'cholmod' or 'umfpack', found '%s'", linear);
+    }
+    if ((st = gb_ymap_number(&m, "global_alpha", GB_Y_POSITIVE, &sv->global_alpha, err)) ||
+        (st = gb_ymap_number(&m, "max_move", GB_Y_POSITIVE, &sv->max_move, err)))
+        return st;
     if ((st = gb_ymap_number(&m, "alpha", GB_Y_POSITIVE, &sv->alpha, err)) ||
         (st = gb_ymap_number(&m, "alpha1", GB_Y_POSITIVE, &sv->alpha1, err)) ||
         (st = gb_ymap_number(&m, "beta", GB_Y_NONNEG, &sv->beta, err)) ||

@@ -1,0 +1,38 @@
+/* The global solver for granular scenes: every grain's move from one sparse system, the contact
+ * stiffness assembled over all contacts (3 DOFs per grain, METHOD.md section 3), K dX = -F, solved
+ * with CHOLMOD (symmetric) or UMFPACK; the symbolic analysis is reused while the candidate-pair
+ * list (the sparsity pattern) stays the same. */
+#ifndef GB_GLOBAL_H
+#define GB_GLOBAL_H
+
+#include "gembem/status.h"
+
+struct gb_sim;
+typedef struct gb_global gb_global;
+
+typedef enum { GB_LINEAR_CHOLMOD = 0, GB_LINEAR_UMFPACK = 1 } gb_linear_kind;
+
+/* Time spent, for benchmarks (seconds, cumulative). */
+typedef struct {
+    double assemble, analyse, factorise, solve;
+    long analyses, factorisations, regularised;
+} gb_global_stats;
+
+gb_status gb_global_create(gb_linear_kind kind, int n_grains, gb_global **out, gb_error *err);
+void gb_global_free(gb_global *gl);
+
+/* Fills sim->dX for every grain. Grains with fewer than two contacts move as in the reference
+ * iteration (cases b, c) and are held in the system; a rotation without stiffness (kt = 0) is held;
+ * the rest solve K dX = -F together, with the walls under stress control as DOFs of the same system
+ * (their residual: force minus target). `residual` (largest fixing force plus the walls' residual)
+ * steers the damping of the step. A move larger than `max_move` scales the whole step down.
+ * Fills sim->wall_dx too. */
+struct gb_wall_control_s;
+gb_status gb_global_moves(gb_global *gl, struct gb_sim *sim, const struct gb_wall_control_s *wc, double residual,
+                          gb_error *err);
+/* Forgets the residual history (a new relaxation starts). */
+void gb_global_restart(gb_global *gl);
+
+const gb_global_stats *gb_global_statistics(const gb_global *gl);
+
+#endif
