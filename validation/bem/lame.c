@@ -86,21 +86,17 @@ int main(int argc, char **argv)
                         double ou = v_order(prev.eu, r.eu, 2), os = v_order(prev.es, r.es, 2), ot = v_order(prev.ett, r.ett, 2);
                         printf("| %d | %.3e | %.2f | %.3e | %.2f | %.3e | %.2f | %.2e |\n", n, r.eu, ou, r.es, os, r.ett, ot,
                                r.rcond);
-                        if (inu == 0) {
-                            /* constant elements converge at first order: asserted for the last refinements */
-                            if (l >= 3) {
-                                V_CHECK(ou > 0.85 && ou < 1.3, "order of u_r %.3f at N = %d", ou, n);
-                                V_CHECK(os > 0.85 && os < 1.3, "order of s_rr %.3f at N = %d", os, n);
-                            }
-                            /* error constants of the study, N err < C (README.md): 0.49 fixed, 1.08 free */
-                            V_CHECK(r.eu * n < (of ? 1.2 : 0.55), "u_r error %.3e at N = %d", r.eu, n);
-                            V_CHECK(r.es * n < (of ? 1.2 : 0.55), "s_rr error %.3e at N = %d", r.es, n);
-                        } else if (!of) { /* nu = 0.499, outer fixed: as accurate as nu = 0.3 or better */
-                            V_CHECK(r.eu < 2e-3 && r.es < 2e-3, "nu = 0.499: errors %.3e %.3e at N = %d", r.eu, r.es, n);
-                        } else if (n == 256) { /* traction-free outer: see README (near-incompressible volume mode) */
-                            V_CHECK(r.eu < 0.05 && r.es < 0.05 && ou > 1.5, "nu = 0.499 free: %.3e %.3e order %.2f", r.eu,
-                                    r.es, ou);
+                        /* constant elements converge at first order: asserted for the last refinements
+                         * (nu = 0.499 with the outer boundary fixed: errors far smaller, no clean order) */
+                        if (l >= 3 && !(inu && !of)) {
+                            V_CHECK(ou > 0.85 && ou < 1.3, "order of u_r %.3f at N = %d", ou, n);
+                            V_CHECK(os > 0.85 && os < 1.3, "order of s_rr %.3f at N = %d", os, n);
                         }
+                        /* error constants of the study, N err < C (README.md): at most 0.42 (fixed),
+                         * 0.85 (free); nu = 0.499 with the outer boundary fixed: 0.11 */
+                        double C = inu ? (of ? 1.0 : 0.15) : (of ? 1.0 : 0.5);
+                        V_CHECK(r.eu * n < C, "u_r error %.3e at N = %d", r.eu, n);
+                        V_CHECK(r.es * n < C, "s_rr error %.3e at N = %d", r.es, n);
                     }
                     prev = r;
                 }
