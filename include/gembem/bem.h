@@ -126,12 +126,15 @@ typedef enum {
     GB_BEM_BC_DISPLACEMENT, /* displacement value[0..1] */
     GB_BEM_BC_TRACTION,     /* traction value[0..1] */
     GB_BEM_BC_PRESSURE,     /* traction -value[0] n */
-    GB_BEM_BC_NORMAL_DISPLACEMENT /* displacement value[0] n (outward of the body; tangential 0) */
+    GB_BEM_BC_NORMAL_DISPLACEMENT, /* displacement value[0] n (outward of the body; tangential 0) */
+    GB_BEM_BC_COMPONENTS           /* per component c: displacement value[c] if bit c of
+                                      u_given is set, else traction value[c] (rollers, symmetry) */
 } gb_bem_bc_kind;
 
 typedef struct {
     gb_bem_bc_kind kind;
     double value[2];
+    int u_given; /* GB_BEM_BC_COMPONENTS only: bit 0 x, bit 1 y */
 } gb_bem_bc;
 
 typedef struct {

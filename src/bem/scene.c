@@ -168,13 +168,34 @@ static gb_status read_boundary(const gb_yaml_doc *doc, gb_ymap *root, gb_bem_sce
             if ((st = gb_ymap_find(&c, "normal_displacement", 0, &v, err))) return st;
             if (v) found++, bc->kind = GB_BEM_BC_NORMAL_DISPLACEMENT;
             if ((st = gb_ymap_number(&c, "normal_displacement", 0, &bc->value[0], err))) return st;
+            /* component-wise: one of ux / tx and one of uy / ty */
+            static const char *ck[4] = {"ux", "tx", "uy", "ty"};
+            int per[2] = {0, 0};
+            for (int q = 0; q < 4; q++) {
+                double x = 0;
+                if ((st = gb_ymap_find(&c, ck[q], 0, &v, err))) return st;
+                if (!v) continue;
+                if ((st = gb_ymap_number(&c, ck[q], 0, &x, err))) return st;
+                per[q / 2]++;
+                bc->value[q / 2] = x;
+                if (q % 2 == 0) bc->u_given |= 1 << (q / 2);
+            }
+            if (per[0] || per[1]) {
+                found++;
+                bc->kind = GB_BEM_BC_COMPONENTS;
+                if (per[0] != 1 || per[1] != 1)
+                    return gb_yaml_fail(doc, val, err, "%s: give one of ux, tx and one of uy, ty", path);
+            }
             if ((st = gb_ymap_close(&c, err))) return st;
             if (found != 1)
-                return gb_yaml_fail(doc, val, err, "%s: expected exactly one of displacement, traction, pressure, normal_displacement", path);
+                return gb_yaml_fail(doc, val, err,
+                                    "%s: expected exactly one of displacement, traction, pressure, normal_displacement, "
+                                    "or component-wise {ux | tx, uy | ty}",
+                                    path);
         } else {
             return gb_yaml_fail(doc, val ? val : key, err,
                                 "boundary.%s: expected fixed, free, {displacement: [ux, uy]}, {traction: [tx, ty]}, "
-                                "{pressure: p} or {normal_displacement: d}",
+                                "{pressure: p}, {normal_displacement: d} or {ux | tx: a, uy | ty: b}",
                                 gname);
         }
     }
