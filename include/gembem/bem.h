@@ -170,6 +170,14 @@ gb_status gb_bem_solve(const gb_bem_mesh *mesh, const gb_bem_system *sys, const 
                        const gb_bem_guard *guard, gb_bem_solution *sol, gb_error *err);
 void gb_bem_solution_free(gb_bem_solution *sol);
 
+/* The same with one group's displacements given element by element (u_group: 2 per element of
+ * the group, in mesh order, which is gb_bem_stiffness.elem's order; total displacements, remote
+ * part included): the host's whole state after a coupled solve, for its tractions elsewhere and
+ * its interior fields. The group's own condition in prob is ignored. */
+gb_status gb_bem_solve_group_displacement(const gb_bem_mesh *mesh, const gb_bem_system *sys,
+                                          const gb_bem_problem *prob, int group, const double *u_group,
+                                          const gb_bem_guard *guard, gb_bem_solution *sol, gb_error *err);
+
 /* Displacement (2 per point) and stress (sxx, syy, sxy per point) at points inside the body
  * (H 1 with c = 1 and the stress kernels D and S). Either output may be NULL. Points on or
  * outside the boundary are refused (GB_EINPUT). */

@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "bem/scene_read.h"
 #include "gembem/bem.h"
 #include "scene/yaml_read.h"
 
@@ -25,6 +26,12 @@ static const char *scalar_of(struct fy_node *n, size_t *len)
     return fy_node_get_scalar(n, len);
 }
 
+/* A key's node without marking it asked again (for messages about a value already read). */
+static struct fy_node *lookup(const gb_ymap *m, const char *key)
+{
+    return m->node ? fy_node_mapping_lookup_by_string(m->node, key, FY_NT) : NULL;
+}
+
 static int scalar_is(struct fy_node *n, const char *word)
 {
     size_t len;
@@ -42,18 +49,14 @@ static gb_status read_material(const gb_yaml_doc *doc, gb_ymap *root, gb_bem_sce
         return st;
     if ((st = gb_ymap_number(&m, "poisson", GB_Y_REQUIRED, &s->material.poisson, err))) return st;
     if (!(s->material.poisson > -1 && s->material.poisson < 0.5)) {
-        struct fy_node *v;
-        gb_ymap_find(&m, "poisson", 0, &v, err);
-        return gb_yaml_fail(doc, v, err, "material.poisson: expected a number in (-1, 0.5), found %g",
+        return gb_yaml_fail(doc, lookup(&m, "poisson"), err, "material.poisson: expected a number in (-1, 0.5), found %g",
                             s->material.poisson);
     }
     if ((st = gb_ymap_string(&m, "plane", GB_Y_REQUIRED, plane, sizeof plane, err))) return st;
     if (!strcmp(plane, "strain")) s->material.plane = GB_BEM_PLANE_STRAIN;
     else if (!strcmp(plane, "stress")) s->material.plane = GB_BEM_PLANE_STRESS;
     else {
-        struct fy_node *v;
-        gb_ymap_find(&m, "plane", 0, &v, err);
-        return gb_yaml_fail(doc, v, err, "material.plane: expected strain or stress, found '%s'", plane);
+        return gb_yaml_fail(doc, lookup(&m, "plane"), err, "material.plane: expected strain or stress, found '%s'", plane);
     }
     return gb_ymap_close(&m, err);
 }
@@ -68,7 +71,7 @@ static gb_status read_mesh(const gb_yaml_doc *doc, gb_ymap *root, gb_bem_scene *
     s->mesh_opts = gb_bem_mesh_opts_default();
     if ((st = gb_ymap_map(root, "mesh", GB_Y_REQUIRED, &m, err))) return st;
     if ((st = gb_ymap_string(&m, "file", GB_Y_REQUIRED, file, sizeof file, err))) return st;
-    gb_ymap_find(&m, "file", 0, &file_node, err);
+    file_node = lookup(&m, "file");
     if ((st = gb_ymap_bool(&m, "unbounded", 0, &s->mesh_opts.unbounded, err))) return st;
     if ((st = gb_ymap_number(&m, "size", GB_Y_POSITIVE, &s->mesh_opts.size, err))) return st;
     if ((st = gb_ymap_find(&m, "groups", 0, &groups, err))) return st;
@@ -156,26 +159,21 @@ static gb_status read_boundary(const gb_yaml_doc *doc, gb_ymap *root, gb_bem_sce
             struct fy_node *v;
             int found = 0;
             if ((st = gb_ymap_open(doc, val, path, &c, err))) return st;
-            if ((st = gb_ymap_find(&c, "displacement", 0, &v, err))) return st;
-            if (v) found++, bc->kind = GB_BEM_BC_DISPLACEMENT;
+            if ((v = lookup(&c, "displacement"))) found++, bc->kind = GB_BEM_BC_DISPLACEMENT;
             if ((st = gb_ymap_vector(&c, "displacement", 0, 2, bc->value, err))) return st;
-            if ((st = gb_ymap_find(&c, "traction", 0, &v, err))) return st;
-            if (v) found++, bc->kind = GB_BEM_BC_TRACTION;
+            if ((v = lookup(&c, "traction"))) found++, bc->kind = GB_BEM_BC_TRACTION;
             if ((st = gb_ymap_vector(&c, "traction", 0, 2, bc->value, err))) return st;
-            if ((st = gb_ymap_find(&c, "pressure", 0, &v, err))) return st;
-            if (v) found++, bc->kind = GB_BEM_BC_PRESSURE;
+            if ((v = lookup(&c, "pressure"))) found++, bc->kind = GB_BEM_BC_PRESSURE;
             if ((st = gb_ymap_number(&c, "pressure", 0, &bc->value[0], err))) return st;
-            if ((st = gb_ymap_find(&c, "normal_displacement", 0, &v, err))) return st;
-            if (v) found++, bc->kind = GB_BEM_BC_NORMAL_DISPLACEMENT;
+            if ((v = lookup(&c, "normal_displacement"))) found++, bc->kind = GB_BEM_BC_NORMAL_DISPLACEMENT;
             if ((st = gb_ymap_number(&c, "normal_displacement", 0, &bc->value[0], err))) return st;
             /* component-wise: one of ux / tx and one of uy / ty */
             static const char *ck[4] = {"ux", "tx", "uy", "ty"};
             int per[2] = {0, 0};
             for (int q = 0; q < 4; q++) {
-                double x = 0;
-                if ((st = gb_ymap_find(&c, ck[q], 0, &v, err))) return st;
-                if (!v) continue;
+                double x = NAN;
                 if ((st = gb_ymap_number(&c, ck[q], 0, &x, err))) return st;
+                if (isnan(x)) continue; /* absent */
                 per[q / 2]++;
                 bc->value[q / 2] = x;
                 if (q % 2 == 0) bc->u_given |= 1 << (q / 2);
@@ -241,8 +239,7 @@ static gb_status read_interior(const gb_yaml_doc *doc, gb_ymap *root, gb_bem_sce
         if ((st = gb_ymap_vector(&grid, "x", GB_Y_REQUIRED, 2, xr, err))) return st;
         if ((st = gb_ymap_vector(&grid, "y", GB_Y_REQUIRED, 2, yr, err))) return st;
         if ((st = gb_ymap_vector(&grid, "n", GB_Y_REQUIRED, 2, n, err))) return st;
-        struct fy_node *nn;
-        gb_ymap_find(&grid, "n", 0, &nn, err);
+        struct fy_node *nn = lookup(&grid, "n");
         if (n[0] != floor(n[0]) || n[1] != floor(n[1]) || n[0] < 2 || n[1] < 2 || n[0] * n[1] > 1e6)
             return gb_yaml_fail(doc, nn, err, "interior.grid.n: expected two whole numbers >= 2 (at most 1e6 points)");
         if (!(xr[1] > xr[0]) || !(yr[1] > yr[0]))
@@ -277,6 +274,18 @@ static gb_status read_interior(const gb_yaml_doc *doc, gb_ymap *root, gb_bem_sce
     return gb_ymap_close(&in, err);
 }
 
+gb_status gb_bem_host_read(const gb_yaml_doc *doc, gb_ymap *root, gb_bem_scene *s, gb_error *err)
+{
+    gb_status st = read_material(doc, root, s, err);
+    if (!st) st = read_mesh(doc, root, s, err);
+    if (!st) st = read_boundary(doc, root, s, err);
+    struct fy_node *rs = lookup(root, "remote_stress");
+    if (!st) st = gb_ymap_vector(root, "remote_stress", 0, 3, s->problem.remote_stress, err);
+    if (!st && rs && !s->mesh.unbounded)
+        st = gb_yaml_fail(doc, rs, err, "remote_stress: applies to an unbounded body only (mesh.unbounded: true)");
+    return st;
+}
+
 gb_status gb_bem_scene_load(const char *path, gb_bem_scene *s, gb_error *err)
 {
     memset(s, 0, sizeof *s);
@@ -290,20 +299,13 @@ gb_status gb_bem_scene_load(const char *path, gb_bem_scene *s, gb_error *err)
     if (!st) st = gb_ymap_string(&units, "length", GB_Y_REQUIRED, s->length_unit, sizeof s->length_unit, err);
     if (!st) st = gb_ymap_string(&units, "force", GB_Y_REQUIRED, s->force_unit, sizeof s->force_unit, err);
     if (!st) st = gb_ymap_close(&units, err);
-    if (!st) st = read_material(&doc, &root, s, err);
-    if (!st) st = read_mesh(&doc, &root, s, err);
-    if (!st) st = read_boundary(&doc, &root, s, err);
-    struct fy_node *rs = NULL;
-    if (!st) st = gb_ymap_find(&root, "remote_stress", 0, &rs, err);
-    if (!st) st = gb_ymap_vector(&root, "remote_stress", 0, 3, s->problem.remote_stress, err);
-    if (!st && rs && !s->mesh.unbounded)
-        st = gb_yaml_fail(&doc, rs, err, "remote_stress: applies to an unbounded body only (mesh.unbounded: true)");
+    if (!st) st = gb_bem_host_read(&doc, &root, s, err);
     if (!st) st = read_interior(&doc, &root, s, err);
     if (!st) st = gb_ymap_map(&root, "stiffness", 0, &stiff, err);
     if (!st) {
         struct fy_node *g = NULL;
         st = gb_ymap_string(&stiff, "group", 0, s->stiffness_group, sizeof s->stiffness_group, err);
-        if (!st) gb_ymap_find(&stiff, "group", 0, &g, err);
+        if (!st) g = lookup(&stiff, "group");
         if (!st && g && gb_bem_mesh_group(&s->mesh, s->stiffness_group) < 0)
             st = gb_yaml_fail(&doc, g, err, "stiffness.group: the mesh has no group '%s'", s->stiffness_group);
         if (!st) st = gb_ymap_bool(&stiff, "write", 0, &s->stiffness_write, err);

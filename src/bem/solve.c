@@ -37,8 +37,8 @@ static gb_status check_equilibrium(const gb_bem_mesh *m, const double *t, gb_err
     return GB_OK;
 }
 
-gb_status gb_bem_solve(const gb_bem_mesh *m, const gb_bem_system *sys, const gb_bem_problem *prob,
-                       const gb_bem_guard *guard, gb_bem_solution *sol, gb_error *err)
+static gb_status solve(const gb_bem_mesh *m, const gb_bem_system *sys, const gb_bem_problem *prob, int group,
+                       const double *u_group, const gb_bem_guard *guard, gb_bem_solution *sol, gb_error *err)
 {
     memset(sol, 0, sizeof *sol);
     int nd = 2 * m->n;
@@ -47,7 +47,23 @@ gb_status gb_bem_solve(const gb_bem_mesh *m, const gb_bem_system *sys, const gb_
     gb_bem_lu lu;
     memset(&lu, 0, sizeof lu);
     gb_status st = (!tu || !given) ? gb_fail(err, GB_ENOMEM, "out of memory") : GB_OK;
-    if (!st) st = gb_bem_bc_dofs(m, &sys->material, prob, tu, given, err);
+    if (!st && group >= 0) { /* the group's own condition is replaced: any valid kind will do */
+        gb_bem_problem p = *prob;
+        p.bc[group].kind = GB_BEM_BC_FIXED;
+        st = gb_bem_bc_dofs(m, &sys->material, &p, tu, given, err);
+        for (int e = 0, q = 0; !st && e < m->n; e++) {
+            if (m->group[e] != group) continue;
+            double ru[2] = {0, 0};
+            if (gb_bem_remote_active(m, prob)) gb_bem_remote_u(&sys->material, prob, m->mid + 2 * e, ru);
+            for (int c = 0; c < 2; c++) {
+                tu[2 * e + c] = 1;
+                given[2 * e + c] = u_group[2 * q + c] - ru[c];
+            }
+            q++;
+        }
+    } else if (!st) {
+        st = gb_bem_bc_dofs(m, &sys->material, prob, tu, given, err);
+    }
     int any_u = 0;
     for (int d = 0; !st && d < nd; d++) any_u |= tu[d];
     int border = !st && !m->unbounded && !any_u;
@@ -104,4 +120,20 @@ gb_status gb_bem_solve(const gb_bem_mesh *m, const gb_bem_system *sys, const gb_
     free(given);
     free(b);
     return st;
+}
+
+gb_status gb_bem_solve(const gb_bem_mesh *m, const gb_bem_system *sys, const gb_bem_problem *prob,
+                       const gb_bem_guard *guard, gb_bem_solution *sol, gb_error *err)
+{
+    return solve(m, sys, prob, -1, NULL, guard, sol, err);
+}
+
+gb_status gb_bem_solve_group_displacement(const gb_bem_mesh *m, const gb_bem_system *sys,
+                                          const gb_bem_problem *prob, int group, const double *u_group,
+                                          const gb_bem_guard *guard, gb_bem_solution *sol, gb_error *err)
+{
+    memset(sol, 0, sizeof *sol);
+    if (group < 0 || group >= m->n_groups || !u_group)
+        return gb_fail(err, GB_EINPUT, "no boundary group %d, or no displacements for it", group);
+    return solve(m, sys, prob, group, u_group, guard, sol, err);
 }

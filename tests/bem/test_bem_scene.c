@@ -6,6 +6,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "bem/scene_read.h"
 #include "check.h"
 #include "gembem/bem.h"
 
@@ -60,5 +61,27 @@ int main(void)
     CHECK(gb_bem_scene_load("/tmp/gb_test_bem_roller.yaml", &sc, &err) == GB_EINPUT);
     CHECK(strstr(err.msg, ":5:10: boundary.left: give one of ux, tx and one of uy, ty") != NULL);
     if (!strstr(err.msg, ":5:10:")) fprintf(stderr, "%s\n", err.msg);
+
+    /* a host embedded in another scene's mapping */
+    f = fopen("/tmp/gb_test_bem_host.yaml", "w");
+    fprintf(f, "grains: 27\nhost:\n  material: {shear_modulus: 95000, poisson: 0.1, plane: strain}\n"
+               "  mesh: {file: %s/meshes/square_cavity.geo, groups: {outer: {count: 20}, cavity: {count: 24}}}\n"
+               "  boundary: {outer: fixed, cavity: free}\n  colour: blue\n",
+            cwd);
+    fclose(f);
+    gb_yaml_doc doc;
+    gb_ymap root, host;
+    CHECK(gb_yaml_load("/tmp/gb_test_bem_host.yaml", &doc, &err) == GB_OK);
+    CHECK(gb_ymap_open(&doc, fy_document_root(doc.fyd), "", &root, &err) == GB_OK);
+    CHECK(gb_ymap_map(&root, "host", GB_Y_REQUIRED, &host, &err) == GB_OK);
+    memset(&sc, 0, sizeof sc);
+    CHECK(gb_bem_host_read(&doc, &host, &sc, &err) == GB_OK);
+    CHECK(sc.mesh.n == 44 && sc.material.shear_modulus == 95000);
+    CHECK(sc.problem.bc[gb_bem_mesh_group(&sc.mesh, "outer")].kind == GB_BEM_BC_FIXED);
+    CHECK(gb_ymap_close(&host, &err) == GB_EINPUT);
+    CHECK(strstr(err.msg, ":6:3: host: unknown key 'colour'; expected one of: material, mesh, boundary, remote_stress") &&
+          !strstr(err.msg, "remote_stress, remote_stress"));
+    gb_bem_scene_free(&sc);
+    gb_yaml_free(&doc);
     TEST_END();
 }
