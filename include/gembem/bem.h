@@ -106,7 +106,10 @@ void gb_bem_mesh_free(gb_bem_mesh *mesh);
 /* Dense influence matrices of size 2n x 2n, column-major (LAPACK order), DOF 2e+c is component c
  * (0: x, 1: y) of element e. (H 3-5): H U = G P, with H's diagonal blocks 1/2 I (smooth midpoint)
  * plus the principal value (zero on a straight element) and G's diagonal in closed form. All
- * element integrals are closed-form for straight elements, exact also for nearly singular points. */
+ * element integrals are closed-form for straight elements, exact also for nearly singular points.
+ * H carries a rank-one correction per loop that makes the flux identities of its incompressible
+ * part exact (O(h^2); it keeps nearly incompressible traction problems accurate, see
+ * validation/bem/README.md). The columns are filled by as many threads as there are cores. */
 typedef struct {
     int ndof;
     double *H, *G;
@@ -142,10 +145,13 @@ typedef struct {
     double remote_stress[3];         /* sxx, syy, sxy at infinity (unbounded bodies only) */
 } gb_bem_problem;
 
-/* Settings of the degenerate-scale guard (defaults from gb_bem_guard_default). */
+/* The degenerate-scale guard (METHOD.md section 9; defaults from gb_bem_guard_default, and NULL
+ * means the defaults). A system holding G columns whose reciprocal condition (dgecon, 1-norm,
+ * columns equilibrated) is below rcond_min is rebuilt at lengths where the body's half-diagonal
+ * is 1/4 (exact scaling of G, no reassembly) and the better conditioned one is solved. */
 typedef struct {
-    double rcond_min; /* a system whose estimated 1-norm reciprocal condition is below this is
-                         treated as near a degenerate scale and solved in rescaled lengths */
+    double rcond_min; /* > 0: the threshold; 0 (default): 0.05 / n for n unknowns (a sound G has
+                         about 1 / n); < 0: the guard is off */
 } gb_bem_guard;
 
 gb_bem_guard gb_bem_guard_default(void);
