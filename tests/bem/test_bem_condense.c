@@ -7,6 +7,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <lapacke.h>
+
 #include "check.h"
 #include "gembem/bem.h"
 
@@ -31,6 +33,18 @@ static void annulus(int n, double a, double b, gb_bem_mesh *m)
     CHECK(gb_bem_mesh_from_polygons(2, ln, xy, g, 2, names, 0, m, &err) == GB_OK);
     free(xy);
     free(g);
+}
+
+/* eigenvalues (ascending) of the symmetric part of K, relative to the largest */
+static void sym_eigs(const gb_bem_stiffness *k, double *w)
+{
+    size_t m = (size_t)k->m;
+    double *S = malloc(sizeof(double) * m * m);
+    for (size_t i = 0; i < m; i++)
+        for (size_t j = 0; j < m; j++) S[j * m + i] = 0.5 * (k->K[j * m + i] + k->K[i * m + j]);
+    LAPACKE_dsyev(LAPACK_COL_MAJOR, 'N', 'U', (int)m, S, (int)m, w);
+    for (size_t i = 0; i < m; i++) w[i] /= w[m - 1];
+    free(S);
 }
 
 /* max |K u + f0 - L t| / max |L t| over the group, u and t from a solution */
@@ -97,6 +111,11 @@ int main(void)
         }
     CHECK_NEAR(k.asymmetry, sqrt(num / den), 1e-12);
     CHECK(k.asymmetry > 0 && k.asymmetry < 0.05);
+    /* the host stores energy: the symmetric part of K is positive definite with the outer fixed */
+    double *w = malloc(sizeof(double) * (size_t)k.m);
+    sym_eigs(&k, w);
+    printf("outer fixed: eigenvalues of (K + K^t)/2 / largest from %.3e\n", w[0]);
+    CHECK(w[0] > 1e-3);
     /* the solver's answer satisfies F = K u + f0 to round-off */
     gb_bem_solution s;
     CHECK(gb_bem_solve(&m, &sys, &p, NULL, &s, &err) == GB_OK);
@@ -144,6 +163,12 @@ int main(void)
     }
     printf("outer free: |K t_x| / |K| = %.3e\n", fmaxv / kmax);
     CHECK(fmaxv < 1e-10 * kmax);
+    /* a free body: two translations (K t = 0 to round-off; its symmetric part only to the
+     * asymmetry) and a rotation (O(h)) cost nothing, the rest is stiff */
+    sym_eigs(&k, w);
+    printf("outer free: smallest eigenvalues of (K + K^t)/2 / largest %.2e %.2e %.2e %.2e\n", w[0], w[1], w[2], w[3]);
+    CHECK(fabs(w[0]) < 1e-8 && fabs(w[1]) < 1e-8 && fabs(w[2]) < 1e-3 && w[3] > 2e-3);
+    free(w);
     gb_bem_stiffness_free(&k);
     gb_bem_system_free(&sys);
     gb_bem_mesh_free(&m);
