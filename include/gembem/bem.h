@@ -23,7 +23,7 @@
 
 #include "gembem/status.h"
 
-#define GB_BEM_NAME_MAX 64
+#define GB_BEM_NAME_MAX   64
 #define GB_BEM_MAX_GROUPS 32
 
 /* ---------------------------------------------------------------- material */
@@ -39,20 +39,20 @@ typedef struct {
 /* ---------------------------------------------------------------- boundary mesh */
 
 typedef struct {
-    int n;               /* number of elements */
-    double *p0, *p1;     /* end points, 2n each, in loop order (body on the left) */
-    double *mid;         /* midpoints (collocation points), 2n */
-    double *tangent;     /* unit tangent p1 - p0, 2n */
-    double *normal;      /* unit outward normal of the body, 2n */
-    double *length;      /* n */
-    int *group;          /* physical group index of each element, n */
-    int *loop;           /* loop index of each element, n */
+    int n;           /* number of elements */
+    double *p0, *p1; /* end points, 2n each, in loop order (body on the left) */
+    double *mid;     /* midpoints (collocation points), 2n */
+    double *tangent; /* unit tangent p1 - p0, 2n */
+    double *normal;  /* unit outward normal of the body, 2n */
+    double *length;  /* n */
+    int *group;      /* physical group index of each element, n */
+    int *loop;       /* loop index of each element, n */
     int n_loops;
-    int *loop_start;     /* elements of loop k: loop_start[k] .. loop_start[k+1]-1 */
-    int *loop_outer;     /* 1 for the outer boundary, 0 for a cavity */
+    int *loop_start; /* elements of loop k: loop_start[k] .. loop_start[k+1]-1 */
+    int *loop_outer; /* 1 for the outer boundary, 0 for a cavity */
     int n_groups;
     char (*group_name)[GB_BEM_NAME_MAX];
-    int unbounded;       /* 1: an infinite plane with cavities (no outer loop) */
+    int unbounded; /* 1: an infinite plane with cavities (no outer loop) */
 } gb_bem_mesh;
 
 /* Meshing options: a global element size and/or a size or element count per physical group. */
@@ -63,7 +63,7 @@ typedef struct {
 } gb_bem_group_size;
 
 typedef struct {
-    double size;   /* target element length everywhere (0: the .geo file's own sizes) */
+    double size; /* target element length everywhere (0: the .geo file's own sizes) */
     int n_group_sizes;
     gb_bem_group_size group_sizes[GB_BEM_MAX_GROUPS];
     int unbounded; /* every loop is a cavity in an infinite plane */
@@ -87,8 +87,7 @@ gb_status gb_bem_mesh_from_polygons(int n_loops, const int *loop_n, const double
                                     gb_error *err);
 
 /* A regular polygon of n elements on a circle (center cx, cy, radius r): a test helper. */
-gb_status gb_bem_mesh_circle(double cx, double cy, double r, int n, int unbounded, gb_bem_mesh *mesh,
-                             gb_error *err);
+gb_status gb_bem_mesh_circle(double cx, double cy, double r, int n, int unbounded, gb_bem_mesh *mesh, gb_error *err);
 
 /* Index of a group by name, or -1. */
 int gb_bem_mesh_group(const gb_bem_mesh *mesh, const char *name);
@@ -116,19 +115,18 @@ typedef struct {
     gb_bem_material material;
 } gb_bem_system;
 
-gb_status gb_bem_assemble(const gb_bem_mesh *mesh, const gb_bem_material *mat, gb_bem_system *sys,
-                          gb_error *err);
+gb_status gb_bem_assemble(const gb_bem_mesh *mesh, const gb_bem_material *mat, gb_bem_system *sys, gb_error *err);
 void gb_bem_system_free(gb_bem_system *sys);
 
 /* ---------------------------------------------------------------- boundary conditions */
 
 typedef enum {
-    GB_BEM_BC_NONE = 0,     /* not set: an error when solving */
-    GB_BEM_BC_FREE,         /* traction zero */
-    GB_BEM_BC_FIXED,        /* displacement zero */
-    GB_BEM_BC_DISPLACEMENT, /* displacement value[0..1] */
-    GB_BEM_BC_TRACTION,     /* traction value[0..1] */
-    GB_BEM_BC_PRESSURE,     /* traction -value[0] n */
+    GB_BEM_BC_NONE = 0,            /* not set: an error when solving */
+    GB_BEM_BC_FREE,                /* traction zero */
+    GB_BEM_BC_FIXED,               /* displacement zero */
+    GB_BEM_BC_DISPLACEMENT,        /* displacement value[0..1] */
+    GB_BEM_BC_TRACTION,            /* traction value[0..1] */
+    GB_BEM_BC_PRESSURE,            /* traction -value[0] n */
     GB_BEM_BC_NORMAL_DISPLACEMENT, /* displacement value[0] n (outward of the body; tangential 0) */
     GB_BEM_BC_COMPONENTS           /* per component c: displacement value[c] if bit c of
                                       u_given is set, else traction value[c] (rollers, symmetry) */
@@ -160,11 +158,11 @@ gb_bem_guard gb_bem_guard_default(void);
 
 typedef struct {
     int ndof;
-    double *u; /* boundary displacement, 2n (total field, remote part included) */
-    double *t; /* boundary traction, 2n (total field) */
-    double rcond;       /* reciprocal condition number (1-norm, column-equilibrated) of the system solved */
-    double rcond_first; /* ... at the problem's own length scale */
-    double scale;       /* length scale factor used (1: none; else the degenerate scale was avoided) */
+    double *u;             /* boundary displacement, 2n (total field, remote part included) */
+    double *t;             /* boundary traction, 2n (total field) */
+    double rcond;          /* reciprocal condition number (1-norm, column-equilibrated) of the system solved */
+    double rcond_first;    /* ... at the problem's own length scale */
+    double scale;          /* length scale factor used (1: none; else the degenerate scale was avoided) */
     int rigid_constrained; /* 1: traction-only bounded body, rigid motions removed */
 } gb_bem_solution;
 
@@ -180,9 +178,9 @@ void gb_bem_solution_free(gb_bem_solution *sol);
  * the group, in mesh order, which is gb_bem_stiffness.elem's order; total displacements, remote
  * part included): the host's whole state after a coupled solve, for its tractions elsewhere and
  * its interior fields. The group's own condition in prob is ignored. */
-gb_status gb_bem_solve_group_displacement(const gb_bem_mesh *mesh, const gb_bem_system *sys,
-                                          const gb_bem_problem *prob, int group, const double *u_group,
-                                          const gb_bem_guard *guard, gb_bem_solution *sol, gb_error *err);
+gb_status gb_bem_solve_group_displacement(const gb_bem_mesh *mesh, const gb_bem_system *sys, const gb_bem_problem *prob,
+                                          int group, const double *u_group, const gb_bem_guard *guard,
+                                          gb_bem_solution *sol, gb_error *err);
 
 /* Displacement (2 per point) and stress (sxx, syy, sxy per point) at points inside the body
  * (H 1 with c = 1 and the stress kernels D and S). Either output may be NULL. Points on or
@@ -193,8 +191,8 @@ gb_status gb_bem_interior(const gb_bem_mesh *mesh, const gb_bem_material *mat, c
 
 /* Boundary stress at element midpoints (sxx, syy, sxy per element) from the traction and the
  * tangential strain of the boundary displacement (central differences along each loop). */
-gb_status gb_bem_boundary_stress(const gb_bem_mesh *mesh, const gb_bem_material *mat,
-                                 const gb_bem_solution *sol, double *stress, gb_error *err);
+gb_status gb_bem_boundary_stress(const gb_bem_mesh *mesh, const gb_bem_material *mat, const gb_bem_solution *sol,
+                                 double *stress, gb_error *err);
 
 /* ---------------------------------------------------------------- condensed stiffness */
 
@@ -203,18 +201,18 @@ gb_status gb_bem_boundary_stress(const gb_bem_mesh *mesh, const gb_bem_material 
  * complement, one LU of the mixed system through LAPACKE). K is m x m, m = 2 x (elements of the
  * group), column-major, DOFs in the group's element order (elem[]). */
 typedef struct {
-    int m;              /* 2 x number of group elements */
-    int *elem;          /* mesh element index of each group element, m/2 */
-    double *K;          /* m x m, column-major */
-    double *f0;         /* m: the forces with the group held at u = 0 (loads elsewhere, remote stress) */
-    double asymmetry;   /* ||K - K^t||_F / ||K||_F */
-    double rcond;       /* of the system factorised */
+    int m;            /* 2 x number of group elements */
+    int *elem;        /* mesh element index of each group element, m/2 */
+    double *K;        /* m x m, column-major */
+    double *f0;       /* m: the forces with the group held at u = 0 (loads elsewhere, remote stress) */
+    double asymmetry; /* ||K - K^t||_F / ||K||_F */
+    double rcond;     /* of the system factorised */
     double rcond_first;
     double scale;
 } gb_bem_stiffness;
 
-gb_status gb_bem_condense(const gb_bem_mesh *mesh, const gb_bem_system *sys, const gb_bem_problem *prob,
-                          int group, const gb_bem_guard *guard, gb_bem_stiffness *k, gb_error *err);
+gb_status gb_bem_condense(const gb_bem_mesh *mesh, const gb_bem_system *sys, const gb_bem_problem *prob, int group,
+                          const gb_bem_guard *guard, gb_bem_stiffness *k, gb_error *err);
 void gb_bem_stiffness_free(gb_bem_stiffness *k);
 
 /* ---------------------------------------------------------------- scenes */
@@ -229,11 +227,12 @@ typedef struct {
     gb_bem_mesh mesh;
     gb_bem_problem problem;
     int npts;
-    double *pts;       /* interior points, 2 per point */
+    double *pts;          /* interior points, 2 per point */
     int grid_nx, grid_ny; /* >0: pts[0 .. nx*ny) is a grid, row by row (x fastest); may hold outside points */
-    int *pt_inside;    /* 1 if pts[i] is inside the body */
+    int *pt_inside;       /* 1 if pts[i] is inside the body */
     char stiffness_group[GB_BEM_NAME_MAX]; /* "" : no condensation */
     int stiffness_write;
+    int write_boundary_csv, write_boundary_vtp, write_interior_vtu, write_interior_csv; /* output: default 1 */
 } gb_bem_scene;
 
 /* Reads and checks the scene, then meshes it; every error names file:line:column (GB_EINPUT). */

@@ -24,8 +24,8 @@ typedef struct {
     const gb_bem_mesh *m;
     const gb_bem_kconst *k;
     gb_bem_system *sys;
-    int j0, j1;  /* columns (elements) of this worker */
-    double *lr;  /* 2 n: log r to the start and end node of the current element, per row */
+    int j0, j1;   /* columns (elements) of this worker */
+    double *lr;   /* 2 n: log r to the start and end node of the current element, per row */
     double *flux; /* n_loops x 2n: w_k^t H_half, see gb_bem_assemble */
 } work;
 
@@ -153,13 +153,21 @@ gb_status gb_bem_assemble(const gb_bem_mesh *m, const gb_bem_material *mat, gb_b
     pthread_t th[8];
     int started[8] = {0};
     for (int i = 0; i < nt; i++) {
-        w[i] = (work){m, &k, sys, (int)((long)m->n * i / nt), (int)((long)m->n * (i + 1) / nt), lr + 2 * (size_t)m->n * (size_t)i, flux};
+        w[i] = (work){m,
+                      &k,
+                      sys,
+                      (int)((long)m->n * i / nt),
+                      (int)((long)m->n * (i + 1) / nt),
+                      lr + 2 * (size_t)m->n * (size_t)i,
+                      flux};
         if (i > 0) started[i] = pthread_create(&th[i], NULL, worker, &w[i]) == 0;
     }
     fill_columns(&w[0]);
     for (int i = 1; i < nt; i++) {
-        if (started[i]) pthread_join(th[i], NULL);
-        else fill_columns(&w[i]); /* no thread: do it here */
+        if (started[i])
+            pthread_join(th[i], NULL);
+        else
+            fill_columns(&w[i]); /* no thread: do it here */
     }
     free(lr);
     breathing_correction(m, sys, flux);

@@ -7,7 +7,8 @@ gb_status gb_bem_bc_dofs(const gb_bem_mesh *m, const gb_bem_material *mat, const
 {
     const double *s = prob->remote_stress;
     if (!m->unbounded && (s[0] != 0 || s[1] != 0 || s[2] != 0))
-        return gb_fail(err, GB_EINPUT, "a remote stress applies to an unbounded body (a cavity in an infinite plane) only");
+        return gb_fail(err, GB_EINPUT,
+                       "a remote stress applies to an unbounded body (a cavity in an infinite plane) only");
     for (int g = 0; g < m->n_groups; g++)
         if (prob->bc[g].kind <= GB_BEM_BC_NONE || prob->bc[g].kind > GB_BEM_BC_COMPONENTS)
             return gb_fail(err, GB_EINPUT, "boundary group '%s' has no condition", m->group_name[g]);
@@ -16,7 +17,8 @@ gb_status gb_bem_bc_dofs(const gb_bem_mesh *m, const gb_bem_material *mat, const
         const gb_bem_bc *bc = &prob->bc[m->group[e]];
         const double *n = m->normal + 2 * e;
         double v[2] = {0, 0}, r[2] = {0, 0};
-        int disp = bc->kind == GB_BEM_BC_FIXED || bc->kind == GB_BEM_BC_DISPLACEMENT || bc->kind == GB_BEM_BC_NORMAL_DISPLACEMENT;
+        int disp = bc->kind == GB_BEM_BC_FIXED || bc->kind == GB_BEM_BC_DISPLACEMENT ||
+                   bc->kind == GB_BEM_BC_NORMAL_DISPLACEMENT;
         if (bc->kind == GB_BEM_BC_DISPLACEMENT || bc->kind == GB_BEM_BC_TRACTION || bc->kind == GB_BEM_BC_COMPONENTS)
             v[0] = bc->value[0], v[1] = bc->value[1];
         if (bc->kind == GB_BEM_BC_PRESSURE) v[0] = -bc->value[0] * n[0], v[1] = -bc->value[0] * n[1];

@@ -48,7 +48,8 @@ gb_status gb_bem_interior(const gb_bem_mesh *m, const gb_bem_material *mat, cons
             if (u) {
                 double g[4], h[4];
                 gb_bem_segment_gh(&k, x, a, b, 0, g, h);
-                for (int l = 0; l < 2; l++) uu[l] += g[2 * l] * te[0] + g[2 * l + 1] * te[1] - h[2 * l] * ue[0] - h[2 * l + 1] * ue[1];
+                for (int l = 0; l < 2; l++)
+                    uu[l] += g[2 * l] * te[0] + g[2 * l + 1] * te[1] - h[2 * l] * ue[0] - h[2 * l + 1] * ue[1];
             }
             if (stress) {
                 double d[6], s[6];

@@ -35,8 +35,7 @@ void gb_bem_kelvin_p(const gb_bem_kconst *k, const double x[2], const double y[2
     double drdn = g[0] * n[0] + g[1] * n[1], a = 1 - 2 * k->nu;
     for (int l = 0; l < 2; l++)
         for (int m = 0; m < 2; m++)
-            p[2 * l + m] =
-                k->cp / r * (drdn * ((l == m ? a : 0) + 2 * g[l] * g[m]) - a * (g[l] * n[m] - g[m] * n[l]));
+            p[2 * l + m] = k->cp / r * (drdn * ((l == m ? a : 0) + 2 * g[l] * g[m]) - a * (g[l] * n[m] - g[m] * n[l]));
 }
 
 void gb_bem_kelvin_ds(const gb_bem_kconst *k, const double x[2], const double y[2], const double n[2], double d[6],
@@ -51,11 +50,10 @@ void gb_bem_kelvin_ds(const gb_bem_kconst *k, const double x[2], const double y[
             int i = I[c], j = J[c];
             double dki = kk == i, dkj = kk == j, dij = i == j;
             d[3 * kk + c] = k->cd / r * (a * (g[j] * dki + g[i] * dkj - g[kk] * dij) + 2 * g[i] * g[j] * g[kk]);
-            s[3 * kk + c] =
-                k->cs / (r * r) *
-                (2 * drdn * (a * dij * g[kk] + nu * (g[j] * dki + g[i] * dkj) - 4 * g[i] * g[j] * g[kk]) +
-                 2 * nu * (n[i] * g[j] * g[kk] + n[j] * g[i] * g[kk]) +
-                 a * (2 * n[kk] * g[i] * g[j] + n[j] * dki + n[i] * dkj) - (1 - 4 * nu) * n[kk] * dij);
+            s[3 * kk + c] = k->cs / (r * r) *
+                            (2 * drdn * (a * dij * g[kk] + nu * (g[j] * dki + g[i] * dkj) - 4 * g[i] * g[j] * g[kk]) +
+                             2 * nu * (n[i] * g[j] * g[kk] + n[j] * g[i] * g[kk]) +
+                             a * (2 * n[kk] * g[i] * g[j] + n[j] * dki + n[i] * dkj) - (1 - 4 * nu) * n[kk] * dij);
         }
     }
 }

@@ -6,11 +6,11 @@
 
 typedef struct {
     int n;
-    double *a;     /* n x n column-major; the caller fills it, gb_bem_lu_factor overwrites it */
+    double *a; /* n x n column-major; the caller fills it, gb_bem_lu_factor overwrites it */
     int *ipiv;
-    double *cs;    /* column scale factors: A diag(cs) is factorised */
-    double rcond;  /* 1-norm reciprocal condition estimate of A diag(cs) (dgecon) */
-    int singular;  /* dgetrf met an exact zero pivot */
+    double *cs;   /* column scale factors: A diag(cs) is factorised */
+    double rcond; /* 1-norm reciprocal condition estimate of A diag(cs) (dgecon) */
+    int singular; /* dgetrf met an exact zero pivot */
 } gb_bem_lu;
 
 gb_status gb_bem_lu_alloc(gb_bem_lu *lu, int n, gb_error *err);

@@ -139,16 +139,17 @@ static gb_status check_crossings(const gb_bem_mesh *m, double eps, gb_error *err
             if (m->loop[i] == m->loop[j]) {
                 int s = m->loop_start[m->loop[i]], c = m->loop_start[m->loop[i] + 1] - s;
                 int di = i - s, dj = j - s;
-                if ((di + 1) % c == dj) adjacent = 1;
-                else if ((dj + 1) % c == di) adjacent = 1, first = j, second = i;
+                if ((di + 1) % c == dj)
+                    adjacent = 1;
+                else if ((dj + 1) % c == di)
+                    adjacent = 1, first = j, second = i;
             }
             if (adjacent) {
                 /* the shared vertex is fine; a fold-back (the two elements overlap) is not */
                 const double *t1 = m->tangent + 2 * first, *t2 = m->tangent + 2 * second;
                 if (fabs(t1[0] * t2[1] - t1[1] * t2[0]) < 1e-12 && t1[0] * t2[0] + t1[1] * t2[1] < 0)
-                    st = gb_fail(err, GB_EINPUT,
-                                 "the boundary folds back on itself at (%.6g, %.6g) (group '%s')", m->p1[2 * first],
-                                 m->p1[2 * first + 1], m->group_name[m->group[first]]);
+                    st = gb_fail(err, GB_EINPUT, "the boundary folds back on itself at (%.6g, %.6g) (group '%s')",
+                                 m->p1[2 * first], m->p1[2 * first + 1], m->group_name[m->group[first]]);
                 continue;
             }
             if (segments_meet(m->p0 + 2 * i, m->p1 + 2 * i, m->p0 + 2 * j, m->p1 + 2 * j, eps))
@@ -215,8 +216,10 @@ gb_status gb_bem_mesh_from_polygons(int n_loops, const int *loop_n, const double
         return gb_fail(err, GB_ENOMEM, "out of memory for %d boundary elements", n);
     }
     for (int g = 0; g < n_groups; g++) {
-        if (names) snprintf(m->group_name[g], GB_BEM_NAME_MAX, "%s", names[g]);
-        else snprintf(m->group_name[g], GB_BEM_NAME_MAX, "group%d", g);
+        if (names)
+            snprintf(m->group_name[g], GB_BEM_NAME_MAX, "%s", names[g]);
+        else
+            snprintf(m->group_name[g], GB_BEM_NAME_MAX, "group%d", g);
     }
 
     /* size of the problem, for tolerances */

@@ -30,8 +30,8 @@ static gb_status gmsh_error(const char *path, const char *what, gb_error *err)
     char *msg = NULL;
     int ierr = 0;
     gmshLoggerGetLastError(&msg, &ierr);
-    gb_status st = gb_fail(err, GB_EINPUT, "%s: gmsh could not %s%s%s", path, what, msg && msg[0] ? ": " : "",
-                           msg ? msg : "");
+    gb_status st =
+        gb_fail(err, GB_EINPUT, "%s: gmsh could not %s%s%s", path, what, msg && msg[0] ? ": " : "", msg ? msg : "");
     if (msg) gmshFree(msg);
     return st;
 }
@@ -73,8 +73,10 @@ static gb_status read_groups(extract *x, gb_error *err)
         char *name = NULL;
         x->tags[i] = dt[2 * i + 1];
         gmshModelGetPhysicalName(1, x->tags[i], &name, &ierr);
-        if (name && name[0]) snprintf(x->names[i], GB_BEM_NAME_MAX, "%s", name);
-        else snprintf(x->names[i], GB_BEM_NAME_MAX, "physical%d", x->tags[i]);
+        if (name && name[0])
+            snprintf(x->names[i], GB_BEM_NAME_MAX, "%s", name);
+        else
+            snprintf(x->names[i], GB_BEM_NAME_MAX, "physical%d", x->tags[i]);
         if (name) gmshFree(name);
         x->n_groups++;
     }
@@ -185,7 +187,8 @@ static gb_status mesh_geo(extract *x, const gb_bem_mesh_opts *o, gb_error *err)
             if (ne < 1 || (gs->count > 0 && gs->count < (int)nc))
                 st = gb_fail(err, GB_EINPUT, "%s: group '%s' has %zu curves; it needs at least that many elements",
                              x->path, gs->group, nc);
-            else gmshModelMeshSetTransfiniteCurve(curves[c], ne + 1, "Progression", 1.0, &ierr);
+            else
+                gmshModelMeshSetTransfiniteCurve(curves[c], ne + 1, "Progression", 1.0, &ierr);
         }
         free(len);
         if (curves) gmshFree(curves);
@@ -234,7 +237,8 @@ static gb_status read_segments(extract *x, gb_error *err)
             if (st) break;
             if (nseen == seen_cap) {
                 seen_cap *= 2;
-                int *a = realloc(seen, sizeof(int) * (size_t)seen_cap), *b = a ? realloc(seen_g, sizeof(int) * (size_t)seen_cap) : NULL;
+                int *a = realloc(seen, sizeof(int) * (size_t)seen_cap),
+                    *b = a ? realloc(seen_g, sizeof(int) * (size_t)seen_cap) : NULL;
                 if (a) seen = a;
                 if (b) seen_g = b;
                 if (!a || !b) {
@@ -258,7 +262,8 @@ static gb_status read_segments(extract *x, gb_error *err)
             gmshModelMeshGetElementsByType(1, &et, &net, &nt, &nnt, curves[c], 0, 1, &ierr);
             if (ierr && !st) st = gmsh_error(x->path, "read the boundary elements", err);
             if (!st && nnt == 0)
-                st = gb_fail(err, GB_EINPUT, "%s: curve %d of group '%s' has no elements", x->path, curves[c], x->names[g]);
+                st = gb_fail(err, GB_EINPUT, "%s: curve %d of group '%s' has no elements", x->path, curves[c],
+                             x->names[g]);
             for (size_t e = 0; e < nnt / 2 && !st; e++) st = push_seg(x, nt[2 * e], nt[2 * e + 1], g, err);
             if (et) gmshFree(et);
             if (nt) gmshFree(nt);
@@ -383,7 +388,8 @@ gb_status gb_bem_mesh_load(const char *path, const gb_bem_mesh_opts *opts, gb_be
     if (o->size < 0) return gb_fail(err, GB_EINPUT, "element size must be positive");
     for (int i = 0; i < o->n_group_sizes; i++)
         if (!(o->group_sizes[i].size > 0) && o->group_sizes[i].count <= 0)
-            return gb_fail(err, GB_EINPUT, "group '%s': give a positive element size or count", o->group_sizes[i].group);
+            return gb_fail(err, GB_EINPUT, "group '%s': give a positive element size or count",
+                           o->group_sizes[i].group);
 
     extract x;
     memset(&x, 0, sizeof x);

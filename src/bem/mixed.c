@@ -28,7 +28,10 @@ gb_status gb_bem_mixed_init(gb_bem_mixed *mx, const gb_bem_mesh *mesh, const gb_
     return GB_OK;
 }
 
-int gb_bem_mixed_size(const gb_bem_mixed *mx) { return mx->sys->ndof + (mx->border ? 3 : 0); }
+int gb_bem_mixed_size(const gb_bem_mixed *mx)
+{
+    return mx->sys->ndof + (mx->border ? 3 : 0);
+}
 
 void gb_bem_mixed_gcol(const gb_bem_mixed *mx, double lambda, int d, double f, double *y)
 {

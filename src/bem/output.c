@@ -29,7 +29,9 @@ gb_status gb_bem_write_boundary_csv(const char *path, const gb_bem_mesh *m, cons
     fprintf(f, "element,group,loop,x,y,nx,ny,length,ux,uy,tx,ty,un,ut,tn,tt,sxx,syy,sxy\n");
     for (int e = 0; e < m->n; e++) {
         const double *n = m->normal + 2 * e, *t = m->tangent + 2 * e, *u = sol->u + 2 * e, *tr = sol->t + 2 * e;
-        fprintf(f, "%d,%s,%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n",
+        fprintf(f,
+                "%d,%s,%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%."
+                "17g\n",
                 e, m->group_name[m->group[e]], m->loop[e], m->mid[2 * e], m->mid[2 * e + 1], n[0], n[1], m->length[e],
                 u[0], u[1], tr[0], tr[1], u[0] * n[0] + u[1] * n[1], u[0] * t[0] + u[1] * t[1],
                 tr[0] * n[0] + tr[1] * n[1], tr[0] * t[0] + tr[1] * t[1], bs[3 * e], bs[3 * e + 1], bs[3 * e + 2]);
@@ -37,15 +39,15 @@ gb_status gb_bem_write_boundary_csv(const char *path, const gb_bem_mesh *m, cons
     return close_out(path, f, err);
 }
 
-gb_status gb_bem_write_boundary_vtp(const char *path, const gb_bem_mesh *m, const gb_bem_solution *sol,
-                                    gb_error *err)
+gb_status gb_bem_write_boundary_vtp(const char *path, const gb_bem_mesh *m, const gb_bem_solution *sol, gb_error *err)
 {
     FILE *f;
     gb_status st = open_out(path, &f, err);
     if (st) return st;
-    fprintf(f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-               "<PolyData>\n<Piece NumberOfPoints=\"%d\" NumberOfLines=\"%d\">\n<Points>\n"
-               "<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n",
+    fprintf(f,
+            "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+            "<PolyData>\n<Piece NumberOfPoints=\"%d\" NumberOfLines=\"%d\">\n<Points>\n"
+            "<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n",
             2 * m->n, m->n);
     for (int e = 0; e < m->n; e++)
         fprintf(f, "%.17g %.17g 0\n%.17g %.17g 0\n", m->p0[2 * e], m->p0[2 * e + 1], m->p1[2 * e], m->p1[2 * e + 1]);
@@ -87,9 +89,10 @@ gb_status gb_bem_write_interior_vtu(const char *path, const gb_bem_scene *sc, co
         free(id);
         return st;
     }
-    fprintf(f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-               "<UnstructuredGrid>\n<Piece NumberOfPoints=\"%d\" NumberOfCells=\"%d\">\n<Points>\n"
-               "<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n",
+    fprintf(f,
+            "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+            "<UnstructuredGrid>\n<Piece NumberOfPoints=\"%d\" NumberOfCells=\"%d\">\n<Points>\n"
+            "<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n",
             nin, nquad + nvert);
     for (int i = 0; i < n; i++)
         if (id[i] >= 0) fprintf(f, "%.17g %.17g 0\n", sc->pts[2 * i], sc->pts[2 * i + 1]);
@@ -97,7 +100,8 @@ gb_status gb_bem_write_interior_vtu(const char *path, const gb_bem_scene *sc, co
     for (int j = 0; j + 1 < sc->grid_ny; j++)
         for (int i = 0; i + 1 < sc->grid_nx; i++) {
             int a = j * sc->grid_nx + i, b = a + 1, c = a + sc->grid_nx + 1, d = a + sc->grid_nx;
-            if (id[a] >= 0 && id[b] >= 0 && id[c] >= 0 && id[d] >= 0) fprintf(f, "%d %d %d %d\n", id[a], id[b], id[c], id[d]);
+            if (id[a] >= 0 && id[b] >= 0 && id[c] >= 0 && id[d] >= 0)
+                fprintf(f, "%d %d %d %d\n", id[a], id[b], id[c], id[d]);
         }
     for (int i = ngrid; i < n; i++)
         if (id[i] >= 0) fprintf(f, "%d\n", id[i]);
@@ -111,7 +115,8 @@ gb_status gb_bem_write_interior_vtu(const char *path, const gb_bem_scene *sc, co
     fprintf(f, "<DataArray type=\"Float64\" Name=\"displacement\" NumberOfComponents=\"3\" format=\"ascii\">\n");
     for (int i = 0; i < n; i++)
         if (id[i] >= 0) fprintf(f, "%.17g %.17g 0\n", u[2 * i], u[2 * i + 1]);
-    fprintf(f, "</DataArray>\n<DataArray type=\"Float64\" Name=\"stress\" NumberOfComponents=\"9\" format=\"ascii\">\n");
+    fprintf(f,
+            "</DataArray>\n<DataArray type=\"Float64\" Name=\"stress\" NumberOfComponents=\"9\" format=\"ascii\">\n");
     for (int i = 0; i < n; i++)
         if (id[i] >= 0) {
             const double *q = s + 3 * i;

@@ -49,14 +49,17 @@ static gb_status read_material(const gb_yaml_doc *doc, gb_ymap *root, gb_bem_sce
         return st;
     if ((st = gb_ymap_number(&m, "poisson", GB_Y_REQUIRED, &s->material.poisson, err))) return st;
     if (!(s->material.poisson > -1 && s->material.poisson < 0.5)) {
-        return gb_yaml_fail(doc, lookup(&m, "poisson"), err, "material.poisson: expected a number in (-1, 0.5), found %g",
-                            s->material.poisson);
+        return gb_yaml_fail(doc, lookup(&m, "poisson"), err,
+                            "material.poisson: expected a number in (-1, 0.5), found %g", s->material.poisson);
     }
     if ((st = gb_ymap_string(&m, "plane", GB_Y_REQUIRED, plane, sizeof plane, err))) return st;
-    if (!strcmp(plane, "strain")) s->material.plane = GB_BEM_PLANE_STRAIN;
-    else if (!strcmp(plane, "stress")) s->material.plane = GB_BEM_PLANE_STRESS;
+    if (!strcmp(plane, "strain"))
+        s->material.plane = GB_BEM_PLANE_STRAIN;
+    else if (!strcmp(plane, "stress"))
+        s->material.plane = GB_BEM_PLANE_STRESS;
     else {
-        return gb_yaml_fail(doc, lookup(&m, "plane"), err, "material.plane: expected strain or stress, found '%s'", plane);
+        return gb_yaml_fail(doc, lookup(&m, "plane"), err, "material.plane: expected strain or stress, found '%s'",
+                            plane);
     }
     return gb_ymap_close(&m, err);
 }
@@ -77,7 +80,8 @@ static gb_status read_mesh(const gb_yaml_doc *doc, gb_ymap *root, gb_bem_scene *
     if ((st = gb_ymap_find(&m, "groups", 0, &groups, err))) return st;
     if (groups) {
         if (fy_node_get_type(groups) != FYNT_MAPPING)
-            return gb_yaml_fail(doc, groups, err, "mesh.groups: expected a mapping of group names to {size: h} or {count: n}");
+            return gb_yaml_fail(doc, groups, err,
+                                "mesh.groups: expected a mapping of group names to {size: h} or {count: n}");
         void *it = NULL;
         struct fy_node_pair *p;
         while ((p = fy_node_mapping_iterate(groups, &it))) {
@@ -145,13 +149,17 @@ static gb_status read_boundary(const gb_yaml_doc *doc, gb_ymap *root, gb_bem_sce
             char known[600] = "";
             size_t used = 0;
             for (int i = 0; i < s->mesh.n_groups && used < sizeof known - 1; i++)
-                used += (size_t)snprintf(known + used, sizeof known - used, "%s%s", i ? ", " : "", s->mesh.group_name[i]);
-            return gb_yaml_fail(doc, key, err, "boundary: the mesh has no group '%s'; its groups are: %s", gname, known);
+                used +=
+                    (size_t)snprintf(known + used, sizeof known - used, "%s%s", i ? ", " : "", s->mesh.group_name[i]);
+            return gb_yaml_fail(doc, key, err, "boundary: the mesh has no group '%s'; its groups are: %s", gname,
+                                known);
         }
         gb_bem_bc *bc = &s->problem.bc[g];
         if (bc->kind != GB_BEM_BC_NONE) return gb_yaml_fail(doc, key, err, "boundary: group '%s' given twice", gname);
-        if (scalar_is(val, "fixed")) bc->kind = GB_BEM_BC_FIXED;
-        else if (scalar_is(val, "free")) bc->kind = GB_BEM_BC_FREE;
+        if (scalar_is(val, "fixed"))
+            bc->kind = GB_BEM_BC_FIXED;
+        else if (scalar_is(val, "free"))
+            bc->kind = GB_BEM_BC_FREE;
         else if (val && fy_node_get_type(val) == FYNT_MAPPING) {
             char path[128];
             snprintf(path, sizeof path, "boundary.%s", gname);
@@ -168,7 +176,7 @@ static gb_status read_boundary(const gb_yaml_doc *doc, gb_ymap *root, gb_bem_sce
             if ((v = lookup(&c, "normal_displacement"))) found++, bc->kind = GB_BEM_BC_NORMAL_DISPLACEMENT;
             if ((st = gb_ymap_number(&c, "normal_displacement", 0, &bc->value[0], err))) return st;
             /* component-wise: one of ux / tx and one of uy / ty */
-            static const char *ck[4] = {"ux", "tx", "uy", "ty"};
+            static const char *const ck[4] = {"ux", "tx", "uy", "ty"};
             int per[2] = {0, 0};
             for (int q = 0; q < 4; q++) {
                 double x = NAN;
@@ -186,10 +194,11 @@ static gb_status read_boundary(const gb_yaml_doc *doc, gb_ymap *root, gb_bem_sce
             }
             if ((st = gb_ymap_close(&c, err))) return st;
             if (found != 1)
-                return gb_yaml_fail(doc, val, err,
-                                    "%s: expected exactly one of displacement, traction, pressure, normal_displacement, "
-                                    "or component-wise {ux | tx, uy | ty}",
-                                    path);
+                return gb_yaml_fail(
+                    doc, val, err,
+                    "%s: expected exactly one of displacement, traction, pressure, normal_displacement, "
+                    "or component-wise {ux | tx, uy | ty}",
+                    path);
         } else {
             return gb_yaml_fail(doc, val ? val : key, err,
                                 "boundary.%s: expected fixed, free, {displacement: [ux, uy]}, {traction: [tx, ty]}, "
@@ -243,7 +252,8 @@ static gb_status read_interior(const gb_yaml_doc *doc, gb_ymap *root, gb_bem_sce
         if (n[0] != floor(n[0]) || n[1] != floor(n[1]) || n[0] < 2 || n[1] < 2 || n[0] * n[1] > 1e6)
             return gb_yaml_fail(doc, nn, err, "interior.grid.n: expected two whole numbers >= 2 (at most 1e6 points)");
         if (!(xr[1] > xr[0]) || !(yr[1] > yr[0]))
-            return gb_yaml_fail(doc, gnode, err, "interior.grid: expected x: [min, max] and y: [min, max] with min < max");
+            return gb_yaml_fail(doc, gnode, err,
+                                "interior.grid: expected x: [min, max] and y: [min, max] with min < max");
         if ((st = gb_ymap_close(&grid, err))) return st;
         s->grid_nx = (int)n[0];
         s->grid_ny = (int)n[1];
@@ -268,7 +278,9 @@ static gb_status read_interior(const gb_yaml_doc *doc, gb_ymap *root, gb_bem_sce
                     return st;
             if ((st = add_point(s, &cap, v[0], v[1], err))) return st;
             if (!s->pt_inside[s->npts - 1])
-                return gb_yaml_fail(doc, p, err, "interior.points[%d]: (%g, %g) is not inside the body (or lies on its boundary)", i, v[0], v[1]);
+                return gb_yaml_fail(doc, p, err,
+                                    "interior.points[%d]: (%g, %g) is not inside the body (or lies on its boundary)", i,
+                                    v[0], v[1]);
         }
     }
     return gb_ymap_close(&in, err);
@@ -312,6 +324,14 @@ gb_status gb_bem_scene_load(const char *path, gb_bem_scene *s, gb_error *err)
         if (!st && s->stiffness_write && !g) st = gb_yaml_fail(&doc, stiff.node, err, "stiffness: write needs a group");
         if (!st) st = gb_ymap_close(&stiff, err);
     }
+    gb_ymap out;
+    s->write_boundary_csv = s->write_boundary_vtp = s->write_interior_vtu = s->write_interior_csv = 1;
+    if (!st) st = gb_ymap_map(&root, "output", 0, &out, err);
+    if (!st) st = gb_ymap_bool(&out, "boundary_csv", 0, &s->write_boundary_csv, err);
+    if (!st) st = gb_ymap_bool(&out, "boundary_vtp", 0, &s->write_boundary_vtp, err);
+    if (!st) st = gb_ymap_bool(&out, "interior_vtu", 0, &s->write_interior_vtu, err);
+    if (!st) st = gb_ymap_bool(&out, "interior_csv", 0, &s->write_interior_csv, err);
+    if (!st) st = gb_ymap_close(&out, err);
     if (!st) st = gb_ymap_close(&root, err);
     gb_yaml_free(&doc);
     if (st) gb_bem_scene_free(s);

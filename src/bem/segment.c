@@ -70,11 +70,11 @@ static double seg_dist(const double x[2], const double a[2], const double b[2])
     return hypot(w[0] - s * e[0], w[1] - s * e[1]);
 }
 
-typedef void (*kernel_fn)(const gb_bem_kconst *k, const double x[2], const double y[2], const double n[2],
-                          double *o1, double *o2);
+typedef void (*kernel_fn)(const gb_bem_kconst *k, const double x[2], const double y[2], const double n[2], double *o1,
+                          double *o2);
 
-static void adapt(const gb_bem_kconst *k, kernel_fn f, int m, const double x[2], const double a[2],
-                  const double b[2], const double n[2], int depth, double *o1, double *o2)
+static void adapt(const gb_bem_kconst *k, kernel_fn f, int m, const double x[2], const double a[2], const double b[2],
+                  const double n[2], int depth, double *o1, double *o2)
 {
     double L = hypot(b[0] - a[0], b[1] - a[1]);
     if (depth < 48 && L > 0.25 * seg_dist(x, a, b)) {
@@ -115,8 +115,8 @@ static void gh_fn(const gb_bem_kconst *k, const double x[2], const double y[2], 
     gb_bem_kelvin_p(k, x, y, n, o2);
 }
 
-void gb_bem_segment_ds(const gb_bem_kconst *k, const double x[2], const double a[2], const double b[2],
-                       double d[6], double s[6])
+void gb_bem_segment_ds(const gb_bem_kconst *k, const double x[2], const double a[2], const double b[2], double d[6],
+                       double s[6])
 {
     double n[2];
     normal_of(a, b, n);

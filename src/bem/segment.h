@@ -13,8 +13,8 @@ void gb_bem_segment_gh(const gb_bem_kconst *k, const double x[2], const double a
 
 /* Adaptive Gauss-Legendre integration of int D and int S ([k][ij], ij = xx, yy, xy) over [a, b]
  * from an interior point x: pieces longer than a quarter of their distance to x are halved. */
-void gb_bem_segment_ds(const gb_bem_kconst *k, const double x[2], const double a[2], const double b[2],
-                       double d[6], double s[6]);
+void gb_bem_segment_ds(const gb_bem_kconst *k, const double x[2], const double a[2], const double b[2], double d[6],
+                       double s[6]);
 
 /* The same adaptive rule for u* and p* (to check the closed forms). */
 void gb_bem_segment_gh_quadrature(const gb_bem_kconst *k, const double x[2], const double a[2], const double b[2],

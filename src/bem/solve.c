@@ -128,9 +128,9 @@ gb_status gb_bem_solve(const gb_bem_mesh *m, const gb_bem_system *sys, const gb_
     return solve(m, sys, prob, -1, NULL, guard, sol, err);
 }
 
-gb_status gb_bem_solve_group_displacement(const gb_bem_mesh *m, const gb_bem_system *sys,
-                                          const gb_bem_problem *prob, int group, const double *u_group,
-                                          const gb_bem_guard *guard, gb_bem_solution *sol, gb_error *err)
+gb_status gb_bem_solve_group_displacement(const gb_bem_mesh *m, const gb_bem_system *sys, const gb_bem_problem *prob,
+                                          int group, const double *u_group, const gb_bem_guard *guard,
+                                          gb_bem_solution *sol, gb_error *err)
 {
     memset(sol, 0, sizeof *sol);
     if (group < 0 || group >= m->n_groups || !u_group)

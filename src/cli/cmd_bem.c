@@ -95,10 +95,11 @@ static gb_status write_all(const char *dir, run *r, gb_error *err)
     char text[4096];
     snprintf(text, sizeof text, "gembem %s\n", gb_version());
     if (!st) st = write_text(OUT("version.txt"), text, err);
-    if (!st) st = gb_bem_write_boundary_csv(OUT("boundary.csv"), &r->sc.mesh, &r->sol, r->bs, err);
-    if (!st) st = gb_bem_write_boundary_vtp(OUT("boundary.vtp"), &r->sc.mesh, &r->sol, err);
-    if (!st) st = gb_bem_write_interior_vtu(OUT("interior.vtu"), &r->sc, r->u, r->s, err);
-    if (!st) st = gb_bem_write_interior_csv(OUT("interior.csv"), &r->sc, r->u, r->s, err);
+    if (!st && r->sc.write_boundary_csv)
+        st = gb_bem_write_boundary_csv(OUT("boundary.csv"), &r->sc.mesh, &r->sol, r->bs, err);
+    if (!st && r->sc.write_boundary_vtp) st = gb_bem_write_boundary_vtp(OUT("boundary.vtp"), &r->sc.mesh, &r->sol, err);
+    if (!st && r->sc.write_interior_vtu) st = gb_bem_write_interior_vtu(OUT("interior.vtu"), &r->sc, r->u, r->s, err);
+    if (!st && r->sc.write_interior_csv) st = gb_bem_write_interior_csv(OUT("interior.csv"), &r->sc, r->u, r->s, err);
     if (!st && r->has_k && r->sc.stiffness_write)
         st = gb_bem_write_stiffness_csv(OUT("stiffness.csv"), &r->sc.mesh, &r->k, err);
     int used = snprintf(text, sizeof text,
@@ -125,8 +126,10 @@ int gb_cli_bem(int argc, char **argv)
             usage(stdout);
             return 0;
         }
-        if (!strcmp(argv[i], "-o") && i + 1 < argc) out = argv[++i];
-        else if (argv[i][0] != '-' && !scene) scene = argv[i];
+        if (!strcmp(argv[i], "-o") && i + 1 < argc)
+            out = argv[++i];
+        else if (argv[i][0] != '-' && !scene)
+            scene = argv[i];
         else {
             fprintf(stderr, "gembem bem: unexpected argument '%s'\n", argv[i]);
             usage(stderr);

@@ -47,7 +47,8 @@ int main(void)
             for (int l = 0; l < 2; l++)
                 for (int c = 0; c < 2; c++) {
                     size_t at = (size_t)(2 * j + c) * nd + (size_t)(2 * i + l);
-                    double half = -(2 * h4[2 * l + c] / k4.cp - h0[2 * l + c] / k0.cp) / (2 * GB_PI) + (i == j && l == c ? 0.5 : 0);
+                    double half = -(2 * h4[2 * l + c] / k4.cp - h0[2 * l + c] / k0.cp) / (2 * GB_PI) +
+                                  (i == j && l == c ? 0.5 : 0);
                     H[at] = hh[2 * l + c] + (i == j && l == c ? 0.5 : 0);
                     flux[(size_t)m.loop[i] * nd + (size_t)(2 * j + c)] += m.length[i] * m.normal[2 * i + l] * half;
                     worst_g = fmax(worst_g, fabs(s.G[at] - gg[2 * l + c]) / k.cu);

@@ -53,7 +53,8 @@ static double consistency(const gb_bem_mesh *m, const gb_bem_stiffness *k, const
     double num = 0, den = 0;
     for (int i = 0; i < k->m; i++) {
         double f = k->f0[i];
-        for (int j = 0; j < k->m; j++) f += k->K[(size_t)j * (size_t)k->m + (size_t)i] * s->u[2 * k->elem[j / 2] + j % 2];
+        for (int j = 0; j < k->m; j++)
+            f += k->K[(size_t)j * (size_t)k->m + (size_t)i] * s->u[2 * k->elem[j / 2] + j % 2];
         int e = k->elem[i / 2];
         double want = m->length[e] * s->t[2 * e + i % 2];
         num = fmax(num, fabs(f - want));
@@ -91,7 +92,8 @@ int main(void)
             const double *x = m.mid + 2 * k.elem[j / 2];
             double r = hypot(x[0], x[1]), u[2] = {d * x[0] / r, d * x[1] / r};
             for (int c = 0; c < 2; c++)
-                f[c] += k.K[(size_t)j * (size_t)k.m + (size_t)(i + c)] * u[0] + k.K[(size_t)(j + 1) * (size_t)k.m + (size_t)(i + c)] * u[1];
+                f[c] += k.K[(size_t)j * (size_t)k.m + (size_t)(i + c)] * u[0] +
+                        k.K[(size_t)(j + 1) * (size_t)k.m + (size_t)(i + c)] * u[1];
         }
         int e = k.elem[i / 2];
         const double *x = m.mid + 2 * e;

@@ -27,8 +27,10 @@ static int well_oriented(const gb_bem_mesh *m)
             int next = e + 1 < m->loop_start[k + 1] ? e + 1 : m->loop_start[k];
             ok &= hypot(m->p1[2 * e] - m->p0[2 * next], m->p1[2 * e + 1] - m->p0[2 * next + 1]) < 1e-12;
             double d = 0.05 * m->length[e];
-            ok &= gb_bem_mesh_inside(m, m->mid[2 * e] - d * m->normal[2 * e], m->mid[2 * e + 1] - d * m->normal[2 * e + 1]);
-            ok &= !gb_bem_mesh_inside(m, m->mid[2 * e] + d * m->normal[2 * e], m->mid[2 * e + 1] + d * m->normal[2 * e + 1]);
+            ok &= gb_bem_mesh_inside(m, m->mid[2 * e] - d * m->normal[2 * e],
+                                     m->mid[2 * e + 1] - d * m->normal[2 * e + 1]);
+            ok &= !gb_bem_mesh_inside(m, m->mid[2 * e] + d * m->normal[2 * e],
+                                      m->mid[2 * e + 1] + d * m->normal[2 * e + 1]);
         }
     }
     return ok;
@@ -75,9 +77,12 @@ int main(void)
     CHECK(gc >= 0 && go >= 0 && gb_bem_mesh_group(&m, "nope") == -1);
     for (int e = 0; e < m.n; e++) {
         nc += m.group[e] == gc;
-        double r = hypot(m.mid[2 * e], m.mid[2 * e + 1]), rn = (m.mid[2 * e] * m.normal[2 * e] + m.mid[2 * e + 1] * m.normal[2 * e + 1]) / r;
-        if (m.group[e] == gc) CHECK(r < 1.01 && rn < -0.99); /* cavity normal points to the centre */
-        else CHECK(r > 1.9 && rn > 0.99);
+        double r = hypot(m.mid[2 * e], m.mid[2 * e + 1]),
+               rn = (m.mid[2 * e] * m.normal[2 * e] + m.mid[2 * e + 1] * m.normal[2 * e + 1]) / r;
+        if (m.group[e] == gc)
+            CHECK(r < 1.01 && rn < -0.99); /* cavity normal points to the centre */
+        else
+            CHECK(r > 1.9 && rn > 0.99);
     }
     CHECK(nc == 40);
     CHECK(well_oriented(&m));
@@ -111,12 +116,15 @@ int main(void)
     /* broken input */
     CHECK(refused("meshes/does_not_exist.geo", &o, "cannot open"));
     CHECK(refused(write_tmp("syntax.geo", "Point(1) = {0, 0, 0\nLine(1) = {1, 2};\n"), &o, "gmsh could not read"));
-    CHECK(refused(write_tmp("open.geo", "Point(1) = {0,0,0}; Point(2) = {1,0,0}; Point(3) = {1,1,0}; Point(4) = {0,1,0};\n"
-                                        "Line(1) = {1,2}; Line(2) = {2,3}; Line(3) = {3,4};\nPhysical Curve(\"outer\") = {1,2,3};\n"),
-                  &o, "open at node"));
-    CHECK(refused(write_tmp("cross.geo", "Point(1) = {0,0,0}; Point(2) = {2,1,0}; Point(3) = {2,0,0}; Point(4) = {0,2,0};\n"
-                                         "Line(1) = {1,2}; Line(2) = {2,3}; Line(3) = {3,4}; Line(4) = {4,1};\n"
-                                         "Physical Curve(\"outer\") = {1,2,3,4};\n"),
+    CHECK(
+        refused(write_tmp("open.geo",
+                          "Point(1) = {0,0,0}; Point(2) = {1,0,0}; Point(3) = {1,1,0}; Point(4) = {0,1,0};\n"
+                          "Line(1) = {1,2}; Line(2) = {2,3}; Line(3) = {3,4};\nPhysical Curve(\"outer\") = {1,2,3};\n"),
+                &o, "open at node"));
+    CHECK(refused(write_tmp("cross.geo",
+                            "Point(1) = {0,0,0}; Point(2) = {2,1,0}; Point(3) = {2,0,0}; Point(4) = {0,2,0};\n"
+                            "Line(1) = {1,2}; Line(2) = {2,3}; Line(3) = {3,4}; Line(4) = {4,1};\n"
+                            "Physical Curve(\"outer\") = {1,2,3,4};\n"),
                   &o, "crosses or touches"));
     CHECK(refused(write_tmp("nogroup.geo", "Point(1) = {0,0,0}; Point(2) = {1,0,0}; Point(3) = {0,1,0};\n"
                                            "Line(1) = {1,2}; Line(2) = {2,3}; Line(3) = {3,1};\n"),
@@ -137,7 +145,8 @@ int main(void)
     /* polygons: zero-length element, fold-back, orientation of a clockwise outer loop */
     double sq[] = {0, 0, 1, 0, 1, 0, 1, 1, 0, 1};
     int g5[5] = {0}, n5[1] = {5};
-    CHECK(gb_bem_mesh_from_polygons(1, n5, sq, g5, 1, NULL, 0, &m, &err) == GB_EINPUT && strstr(err.msg, "zero-length"));
+    CHECK(gb_bem_mesh_from_polygons(1, n5, sq, g5, 1, NULL, 0, &m, &err) == GB_EINPUT &&
+          strstr(err.msg, "zero-length"));
     double fold[] = {0, 0, 2, 0, 1, 0, 1, 1};
     int n4[1] = {4};
     CHECK(gb_bem_mesh_from_polygons(1, n4, fold, g5, 1, NULL, 0, &m, &err) == GB_EINPUT);

@@ -17,7 +17,8 @@ int main(void)
     CHECK(gb_bem_scene_load("tests/bem/scenes/plate_tension.yaml", &sc, &err) == GB_OK);
     if (err.code) fprintf(stderr, "%s\n", err.msg);
     CHECK(!strcmp(sc.length_unit, "m") && !strcmp(sc.force_unit, "N"));
-    CHECK(sc.material.shear_modulus == 100.0 && sc.material.poisson == 0.25 && sc.material.plane == GB_BEM_PLANE_STRESS);
+    CHECK(sc.material.shear_modulus == 100.0 && sc.material.poisson == 0.25 &&
+          sc.material.plane == GB_BEM_PLANE_STRESS);
     CHECK(sc.mesh.n_groups == 4 && sc.mesh.n == 80 && !sc.mesh.unbounded);
     int left = gb_bem_mesh_group(&sc.mesh, "left"), bottom = gb_bem_mesh_group(&sc.mesh, "bottom");
     int right = gb_bem_mesh_group(&sc.mesh, "right"), top = gb_bem_mesh_group(&sc.mesh, "top");
@@ -42,8 +43,8 @@ int main(void)
         worst_u = fmax(worst_u, fmax(fabs(u[0] - exx * (x[0] + 1)), fabs(u[1] - eyy * (x[1] + 1))) / (2 * exx));
         worst_s = fmax(worst_s, fmax(fabs(st[0] - s), fmax(fabs(st[1]), fabs(st[2]))) / s);
     }
-    printf("plate in tension on rollers, %d elements: max u error %.2e, max stress error %.2e (relative)\n",
-           sc.mesh.n, worst_u, worst_s);
+    printf("plate in tension on rollers, %d elements: max u error %.2e, max stress error %.2e (relative)\n", sc.mesh.n,
+           worst_u, worst_s);
     CHECK(worst_u < 5e-3 && worst_s < 5e-3);
     gb_bem_solution_free(&sol);
     gb_bem_system_free(&sys);
@@ -53,9 +54,10 @@ int main(void)
     char cwd[400];
     CHECK(getcwd(cwd, sizeof cwd) != NULL);
     FILE *f = fopen("/tmp/gb_test_bem_roller.yaml", "w");
-    fprintf(f, "units: {length: m, force: N}\nmaterial: {shear_modulus: 1, poisson: 0.3, plane: strain}\n"
-               "mesh: {file: %s/tests/bem/scenes/plate.geo}\n"
-               "boundary:\n  left: {ux: 0, tx: 0}\n  bottom: fixed\n  right: free\n  top: free\n",
+    fprintf(f,
+            "units: {length: m, force: N}\nmaterial: {shear_modulus: 1, poisson: 0.3, plane: strain}\n"
+            "mesh: {file: %s/tests/bem/scenes/plate.geo}\n"
+            "boundary:\n  left: {ux: 0, tx: 0}\n  bottom: fixed\n  right: free\n  top: free\n",
             cwd);
     fclose(f);
     CHECK(gb_bem_scene_load("/tmp/gb_test_bem_roller.yaml", &sc, &err) == GB_EINPUT);
@@ -64,9 +66,10 @@ int main(void)
 
     /* a host embedded in another scene's mapping */
     f = fopen("/tmp/gb_test_bem_host.yaml", "w");
-    fprintf(f, "grains: 27\nhost:\n  material: {shear_modulus: 95000, poisson: 0.1, plane: strain}\n"
-               "  mesh: {file: %s/meshes/square_cavity.geo, groups: {outer: {count: 20}, cavity: {count: 24}}}\n"
-               "  boundary: {outer: fixed, cavity: free}\n  colour: blue\n",
+    fprintf(f,
+            "grains: 27\nhost:\n  material: {shear_modulus: 95000, poisson: 0.1, plane: strain}\n"
+            "  mesh: {file: %s/meshes/square_cavity.geo, groups: {outer: {count: 20}, cavity: {count: 24}}}\n"
+            "  boundary: {outer: fixed, cavity: free}\n  colour: blue\n",
             cwd);
     fclose(f);
     gb_yaml_doc doc;
@@ -79,8 +82,9 @@ int main(void)
     CHECK(sc.mesh.n == 44 && sc.material.shear_modulus == 95000);
     CHECK(sc.problem.bc[gb_bem_mesh_group(&sc.mesh, "outer")].kind == GB_BEM_BC_FIXED);
     CHECK(gb_ymap_close(&host, &err) == GB_EINPUT);
-    CHECK(strstr(err.msg, ":6:3: host: unknown key 'colour'; expected one of: material, mesh, boundary, remote_stress") &&
-          !strstr(err.msg, "remote_stress, remote_stress"));
+    CHECK(
+        strstr(err.msg, ":6:3: host: unknown key 'colour'; expected one of: material, mesh, boundary, remote_stress") &&
+        !strstr(err.msg, "remote_stress, remote_stress"));
     gb_bem_scene_free(&sc);
     gb_yaml_free(&doc);
     TEST_END();

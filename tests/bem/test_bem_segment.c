@@ -24,8 +24,8 @@ int main(void)
     double L = hypot(b[0] - a[0], b[1] - a[1]);
     double t[2] = {(b[0] - a[0]) / L, (b[1] - a[1]) / L}, n[2] = {t[1], -t[0]};
     /* points at (along, across) offsets in element lengths, both sides, near the ends too */
-    double offs[][2] = {{0.5, 3.0},  {0.5, 0.1},   {0.5, -0.1},  {0.2, 1e-3},  {0.9, -1e-6}, {1.05, 0.01},
-                        {-0.01, 0.02}, {2.0, 0.0}, {-1.5, 0.0},  {0.5, 1e-9}, {1.3, -0.4}, {0.0, 0.05}};
+    double offs[][2] = {{0.5, 3.0},    {0.5, 0.1}, {0.5, -0.1}, {0.2, 1e-3}, {0.9, -1e-6}, {1.05, 0.01},
+                        {-0.01, 0.02}, {2.0, 0.0}, {-1.5, 0.0}, {0.5, 1e-9}, {1.3, -0.4},  {0.0, 0.05}};
     for (size_t p = 0; p < sizeof offs / sizeof offs[0]; p++) {
         double x[2] = {a[0] + offs[p][0] * L * t[0] + offs[p][1] * L * n[0],
                        a[1] + offs[p][0] * L * t[1] + offs[p][1] * L * n[1]};
@@ -39,15 +39,16 @@ int main(void)
         double htol = (fabs(offs[p][1]) >= 1e-3 ? 1e-11 : 4e-9) * fmax(hs, 1e-3);
         CHECK(maxabs4(h, hq) <= htol);
         if (!(maxabs4(h, hq) <= htol) || !(maxabs4(g, gq) <= 1e-12 * fmax(gs, k.cu)))
-            fprintf(stderr, "point %zu: |dg| %.3g |dh| %.3g (scale %.3g %.3g)\n", p, maxabs4(g, gq), maxabs4(h, hq),
-                    gs, hs);
+            fprintf(stderr, "point %zu: |dg| %.3g |dh| %.3g (scale %.3g %.3g)\n", p, maxabs4(g, gq), maxabs4(h, hq), gs,
+                    hs);
     }
     /* the singular element: G_ii = L [(3 - 4 nu)(1 - ln(L/2)) I + t t^t] / (8 pi mu (1 - nu)), PV of H = 0 */
     double mid[2] = {0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])}, g[4], h[4];
     gb_bem_segment_gh(&k, mid, a, b, 1, g, h);
     for (int l = 0; l < 2; l++)
         for (int m = 0; m < 2; m++) {
-            double want = L * ((3 - 4 * k.nu) * (1 - log(L / 2)) * (l == m) + t[l] * t[m]) / (8 * GB_PI * k.mu * (1 - k.nu));
+            double want =
+                L * ((3 - 4 * k.nu) * (1 - log(L / 2)) * (l == m) + t[l] * t[m]) / (8 * GB_PI * k.mu * (1 - k.nu));
             CHECK_NEAR(g[2 * l + m], want, 1e-14);
             CHECK_NEAR(h[2 * l + m], 0, 1e-15);
         }
@@ -71,7 +72,8 @@ int main(void)
             x[j] += sgn * hstep;
             double gg[4], hh[4], u[2];
             gb_bem_segment_gh(&k, x, a, b, 0, gg, hh);
-            for (int l = 0; l < 2; l++) u[l] = gg[2 * l] * tt[0] + gg[2 * l + 1] * tt[1] - hh[2 * l] * uu[0] - hh[2 * l + 1] * uu[1];
+            for (int l = 0; l < 2; l++)
+                u[l] = gg[2 * l] * tt[0] + gg[2 * l + 1] * tt[1] - hh[2 * l] * uu[0] - hh[2 * l + 1] * uu[1];
             for (int l = 0; l < 2; l++) (sgn > 0 ? up : um)[l] = u[l];
         }
         for (int i = 0; i < 2; i++) grad[i][j] = (up[i] - um[i]) / (2 * hstep);

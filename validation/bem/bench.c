@@ -99,7 +99,8 @@ int main(int argc, char **argv)
     const char *env = getenv("OPENBLAS_NUM_THREADS");
     printf("### Benchmark: %s, %s %s, %s, OPENBLAS_NUM_THREADS=%s (OpenBLAS uses %d threads)\n\n", cpu, u.sysname,
            u.release, date, env ? env : "unset", openblas_get_num_threads());
-    printf("| elements | DOFs | assembly s | condensation s | LU s (dgetrf, DOFs) | LU GFLOP/s | DGEMM GFLOP/s | LU / DGEMM | asymmetry of K |\n");
+    printf("| elements | DOFs | assembly s | condensation s | LU s (dgetrf, DOFs) | LU GFLOP/s | DGEMM GFLOP/s | LU / "
+           "DGEMM | asymmetry of K |\n");
     printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     int sizes[] = {100, 250, 500, 1000, 2000, 3000, 4000};
     for (size_t k = 0; k < sizeof sizes / sizeof sizes[0] && sizes[k] <= nmax; k++) {

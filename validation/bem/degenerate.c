@@ -101,7 +101,8 @@ int main(int argc, char **argv)
     double a_an = exp(1 / (2 * (3 - 4 * nu))), safe = 0.5;
     int ns[3] = {64, 256, 1024};
     printf("### Degenerate scale, plane strain nu = 0.3: analytic radius a* = exp(1/(2(3 - 4 nu))) = %.6f\n\n", a_an);
-    printf("| problem | N | radius | rcond (own lengths) | rcond solved | length scale used | diff to safe size | err vs exact |\n");
+    printf("| problem | N | radius | rcond (own lengths) | rcond solved | length scale used | diff to safe size | err "
+           "vs exact |\n");
     printf("|---|---:|---:|---:|---:|---:|---:|---:|\n");
     for (int k = 0; k < (full ? 3 : 2); k++) {
         int n = ns[k];
@@ -115,7 +116,8 @@ int main(int argc, char **argv)
                 return 1;
             }
             double exact = 2 * (lam + mu) * strain;
-            printf("| %s | %d | %.6f (safe) | %.2e | %.2e | %.4g | 0 | %s |\n", name, n, safe, ref.rcond_first, ref.rcond, ref.scale, "");
+            printf("| %s | %d | %.6f (safe) | %.2e | %.2e | %.4g | 0 | %s |\n", name, n, safe, ref.rcond_first,
+                   ref.rcond, ref.scale, "");
             double radii[2] = {a_an, ad[0]};
             for (int r = 0; r < 2; r++) {
                 outcome o = solve(n, radii[r], unb, mu, nu, strain, 1);
@@ -131,23 +133,26 @@ int main(int argc, char **argv)
                 if (!unb) snprintf(ex, sizeof ex, "%.2e", eex);
                 printf("| %s | %d | %.6f (%s) | %.2e | %.2e | %.4g | %.1e | %s |\n", name, n, radii[r],
                        r ? "mesh's degenerate" : "analytic", o.rcond_first, o.rcond, o.scale, d, ex);
-                if (off.st) printf("| %s, no guard | %d | %.6f | | singular (GB_ENUMERIC) | | | |\n", name, n, radii[r]);
+                if (off.st)
+                    printf("| %s, no guard | %d | %.6f | | singular (GB_ENUMERIC) | | | |\n", name, n, radii[r]);
                 else {
                     double doff = tdiff(off.t, ref.t, n);
-                    printf("| %s, no guard | %d | %.6f | %.2e | %.2e | 1 | %.1e | |\n", name, n, radii[r], off.rcond_first,
-                           off.rcond, doff);
+                    printf("| %s, no guard | %d | %.6f | %.2e | %.2e | 1 | %.1e | |\n", name, n, radii[r],
+                           off.rcond_first, off.rcond, doff);
                 }
                 /* detection: far below the safe size's rcond; handled: the safe size's answer */
                 /* the analytic radius is within 1e-4 of the mesh's own from N = 256 on (0.1 % at N = 64,
                  * where G is not near-singular there: rcond only 11 times the safe size's) */
                 if (r == 1 || n >= 256) {
-                    V_CHECK(o.rcond_first < 0.05 * ref.rcond_first, "%s N = %d: rcond %.2e not detected", name, n, o.rcond_first);
+                    V_CHECK(o.rcond_first < 0.05 * ref.rcond_first, "%s N = %d: rcond %.2e not detected", name, n,
+                            o.rcond_first);
                     V_CHECK(o.scale != 1, "%s N = %d a = %.6f: not rescaled", name, n, radii[r]);
                 }
                 V_CHECK(d < 1e-9, "%s N = %d a = %.6f: differs from the safe size by %.2e", name, n, radii[r], d);
                 if (!unb) V_CHECK(eex < 2.0 / n, "disk N = %d: error %.2e vs exact", n, eex);
-                if (r == 1) V_CHECK(off.st == GB_ENUMERIC || tdiff(off.t, ref.t, n) > 1e-3,
-                                    "%s N = %d: the mesh's degenerate radius should break the unguarded solve", name, n);
+                if (r == 1)
+                    V_CHECK(off.st == GB_ENUMERIC || tdiff(off.t, ref.t, n) > 1e-3,
+                            "%s N = %d: the mesh's degenerate radius should break the unguarded solve", name, n);
                 free(o.t);
                 free(off.t);
             }
@@ -158,7 +163,8 @@ int main(int argc, char **argv)
      * the size: at the mesh's degenerate radius it equals the safe size's, up to the discrete
      * resultant of the tractions of a unit DOF displacement (zero in the continuum), which the
      * rescaling weights differently: 5e-7 at N = 64, 2e-9 at N = 256 (like h^4) */
-    printf("\n| condensed K of the disk | N | radius | rcond (own lengths) | length scale used | max |K - K_safe| / max |K_safe| |\n");
+    printf("\n| condensed K of the disk | N | radius | rcond (own lengths) | length scale used | max |K - K_safe| / "
+           "max |K_safe| |\n");
     printf("|---|---:|---:|---:|---:|---:|\n");
     for (int k = 0; k < 2; k++) {
         int n = ns[k];
@@ -182,9 +188,12 @@ int main(int argc, char **argv)
             gb_bem_mesh_free(&m);
         }
         double num = 0, den = 0;
-        for (int i = 0; i < K[0].m * K[0].m; i++) num = fmax(num, fabs(K[1].K[i] - K[0].K[i])), den = fmax(den, fabs(K[0].K[i]));
-        printf("| disk | %d | %.6f (mesh's degenerate) | %.2e | %.4g | %.1e |\n", n, r[1], K[1].rcond_first, K[1].scale, num / den);
-        V_CHECK(K[1].scale != 1 && num < 1e-5 * den, "condensed K at the degenerate radius, N = %d: %.2e", n, num / den);
+        for (int i = 0; i < K[0].m * K[0].m; i++)
+            num = fmax(num, fabs(K[1].K[i] - K[0].K[i])), den = fmax(den, fabs(K[0].K[i]));
+        printf("| disk | %d | %.6f (mesh's degenerate) | %.2e | %.4g | %.1e |\n", n, r[1], K[1].rcond_first, K[1].scale,
+               num / den);
+        V_CHECK(K[1].scale != 1 && num < 1e-5 * den, "condensed K at the degenerate radius, N = %d: %.2e", n,
+                num / den);
         gb_bem_stiffness_free(&K[0]);
         gb_bem_stiffness_free(&K[1]);
     }

@@ -74,18 +74,22 @@ int main(int argc, char **argv)
             if (inu == 1 && ps == 1) continue; /* nu = 0.499 matters in plane strain */
             for (int of = 0; of < 2; of++) {
                 double nu = nus[inu];
-                printf("**plane %s, nu = %g, outer %s**\n\n", ps ? "stress" : "strain", nu, of ? "traction-free" : "fixed");
-                printf("| N | err u_r (pressure) | order | err s_rr (displacement) | order | err s_tt (pressure, boundary stress) | order | rcond |\n");
+                printf("**plane %s, nu = %g, outer %s**\n\n", ps ? "stress" : "strain", nu,
+                       of ? "traction-free" : "fixed");
+                printf("| N | err u_r (pressure) | order | err s_rr (displacement) | order | err s_tt (pressure, "
+                       "boundary stress) | order | rcond |\n");
                 printf("|---:|---:|---:|---:|---:|---:|---:|---:|\n");
                 result prev = {0, 0, 0, 0};
                 for (int l = 0; l < levels; l++) {
                     int n = 16 << l;
                     result r = run(n, ps, of, nu);
-                    if (l == 0) printf("| %d | %.3e | | %.3e | | %.3e | | %.2e |\n", n, r.eu, r.es, r.ett, r.rcond);
+                    if (l == 0)
+                        printf("| %d | %.3e | | %.3e | | %.3e | | %.2e |\n", n, r.eu, r.es, r.ett, r.rcond);
                     else {
-                        double ou = v_order(prev.eu, r.eu, 2), os = v_order(prev.es, r.es, 2), ot = v_order(prev.ett, r.ett, 2);
-                        printf("| %d | %.3e | %.2f | %.3e | %.2f | %.3e | %.2f | %.2e |\n", n, r.eu, ou, r.es, os, r.ett, ot,
-                               r.rcond);
+                        double ou = v_order(prev.eu, r.eu, 2), os = v_order(prev.es, r.es, 2),
+                               ot = v_order(prev.ett, r.ett, 2);
+                        printf("| %d | %.3e | %.2f | %.3e | %.2f | %.3e | %.2f | %.2e |\n", n, r.eu, ou, r.es, os,
+                               r.ett, ot, r.rcond);
                         /* constant elements converge at first order: asserted for the last refinements
                          * (nu = 0.499 with the outer boundary fixed: errors far smaller, no clean order) */
                         if (l >= 3 && !(inu && !of)) {

@@ -73,7 +73,8 @@ int main(int argc, char **argv)
     double walls[3] = {0.02, 0.05, 0.2};
     int ns[4] = {32, 64, 128, 256};
     printf("### Thin walls: annulus 1 < r < b, outer fixed, inner pressure; u_r error on the cavity\n\n");
-    printf("| b | N per circle | wall / element length | closed forms | 4-point Gauss | thick annulus b = 2, same N |\n");
+    printf(
+        "| b | N per circle | wall / element length | closed forms | 4-point Gauss | thick annulus b = 2, same N |\n");
     printf("|---:|---:|---:|---:|---:|---:|\n");
     for (int w = 0; w < 3; w++)
         for (int k = 0; k < (full ? 4 : 3); k++) {

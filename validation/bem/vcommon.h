@@ -13,14 +13,14 @@
 
 static int v_failures = 0;
 
-#define V_CHECK(cond, ...)                                                                                           \
-    do {                                                                                                             \
-        if (!(cond)) {                                                                                               \
-            fprintf(stderr, "%s:%d: check failed: %s: ", __FILE__, __LINE__, #cond);                                 \
-            fprintf(stderr, __VA_ARGS__);                                                                            \
-            fprintf(stderr, "\n");                                                                                   \
-            v_failures++;                                                                                            \
-        }                                                                                                            \
+#define V_CHECK(cond, ...)                                                                                             \
+    do {                                                                                                               \
+        if (!(cond)) {                                                                                                 \
+            fprintf(stderr, "%s:%d: check failed: %s: ", __FILE__, __LINE__, #cond);                                   \
+            fprintf(stderr, __VA_ARGS__);                                                                              \
+            fprintf(stderr, "\n");                                                                                     \
+            v_failures++;                                                                                              \
+        }                                                                                                              \
     } while (0)
 
 static inline void v_die(const gb_error *err)
@@ -30,7 +30,8 @@ static inline void v_die(const gb_error *err)
 }
 
 /* gmsh mesh of a .geo with element counts per group (name, count pairs, NULL-terminated). */
-static inline void v_mesh(const char *geo, int unbounded, const char *g1, int n1, const char *g2, int n2, gb_bem_mesh *m)
+static inline void v_mesh(const char *geo, int unbounded, const char *g1, int n1, const char *g2, int n2,
+                          gb_bem_mesh *m)
 {
     gb_error err = {0};
     gb_bem_mesh_opts o = gb_bem_mesh_opts_default();
@@ -69,10 +70,22 @@ static inline v_lame v_lame_solve(double mu, double nu, int plane_stress, int ou
     return L;
 }
 
-static inline double v_lame_ur(const v_lame *L, double r) { return L->A * r + L->B / r; }
-static inline double v_lame_srr(const v_lame *L, double r) { return 2 * (L->lam + L->mu) * L->A - 2 * L->mu * L->B / (r * r); }
-static inline double v_lame_stt(const v_lame *L, double r) { return 2 * (L->lam + L->mu) * L->A + 2 * L->mu * L->B / (r * r); }
+static inline double v_lame_ur(const v_lame *L, double r)
+{
+    return L->A * r + L->B / r;
+}
+static inline double v_lame_srr(const v_lame *L, double r)
+{
+    return 2 * (L->lam + L->mu) * L->A - 2 * L->mu * L->B / (r * r);
+}
+static inline double v_lame_stt(const v_lame *L, double r)
+{
+    return 2 * (L->lam + L->mu) * L->A + 2 * L->mu * L->B / (r * r);
+}
 
-static inline double v_order(double e_coarse, double e_fine, double ratio) { return log(e_coarse / e_fine) / log(ratio); }
+static inline double v_order(double e_coarse, double e_fine, double ratio)
+{
+    return log(e_coarse / e_fine) / log(ratio);
+}
 
 #endif
