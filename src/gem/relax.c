@@ -221,6 +221,44 @@ gb_status gb_gem_apply_moves(gb_sim *sim, gb_error *err)
     return GB_OK;
 }
 
+/* Levenberg-Marquardt damping of the global solver: its range, and the trials per iteration. */
+static const double MU_MIN = 1e-8, MU_MAX = 1e4;
+enum { MAX_TRIALS = 6 };
+
+/* The merit of a configuration: squared fixing forces and walls' residual. */
+static double merit(const gb_sim *sim, double wall_residual)
+{
+    double m = wall_residual * wall_residual;
+    for (int k = 0; k < 3 * sim->n; k++) m += sim->F[k] * sim->F[k];
+    return m;
+}
+
+/* A move of the global solver: the damped Newton step is taken if it lowers the merit; if not,
+ * the configuration is restored and the step retried with eight times the damping. Far from
+ * equilibrium (a packing that rearranges) the steps shorten towards the reference iteration's, near
+ * it they lengthen to Newton's. */
+static gb_status global_move(gb_sim *sim, const gb_wall_control *wc, double wall_residual, gb_error *err)
+{
+    double m0 = merit(sim, wall_residual);
+    gb_status st = gb_sim_state_save(sim, &sim->trial, err);
+    if (st) return st;
+    for (int trial = 0;; trial++) {
+        if ((st = gb_global_moves(sim->global, sim, wc, sim->lm_mu, err))) return st;
+        sim->relaxation -= 0.5 * fixing_work(sim);
+        sim->half_pending = 1;
+        if ((st = gb_gem_apply_moves(sim, err))) return st;
+        gb_gem_forces(sim);
+        double m1 = merit(sim, wall_moves(sim, wc));
+        if (m1 <= m0 || trial == MAX_TRIALS || sim->lm_mu >= MU_MAX) {
+            sim->lm_mu = fmax(sim->lm_mu / 4, MU_MIN);
+            return GB_OK;
+        }
+        gb_sim_state_restore(sim, &sim->trial);
+        gb_gem_forces(sim);
+        sim->lm_mu = fmin(sim->lm_mu * 8, MU_MAX);
+    }
+}
+
 int gb_gem_iterate(gb_sim *sim, const gb_wall_control *wc, double *max_force, double *wall_residual,
                    gb_error *err, gb_status *st)
 {
@@ -250,10 +288,10 @@ int gb_gem_iterate(gb_sim *sim, const gb_wall_control *wc, double *max_force, do
     }
     /* Every grain's move from the same configuration, then all at once (order-independent). */
     if (sim->global) {
-        if ((*st = gb_global_moves(sim->global, sim, wc, *max_force + *wall_residual, err))) return 0;
-    } else {
-        for (int i = 0; i < sim->n; i++) gb_gem_grain_move(sim, i, &sim->dX[3 * i]);
+        *st = global_move(sim, wc, *wall_residual, err);
+        return 0;
     }
+    for (int i = 0; i < sim->n; i++) gb_gem_grain_move(sim, i, &sim->dX[3 * i]);
     sim->relaxation -= 0.5 * fixing_work(sim);
     sim->half_pending = 1;
     *st = gb_gem_apply_moves(sim, err);
@@ -264,7 +302,6 @@ gb_status gb_gem_relax(gb_sim *sim, const gb_wall_control *wc, long cap, long *i
                        double *wall_residual, gb_error *err)
 {
     gb_status st = GB_OK;
-    if (sim->global) gb_global_restart(sim->global);
     for (long it = 0; it <= cap; it++) {
         if (gb_gem_iterate(sim, wc, max_force, wall_residual, err, &st)) {
             *iterations += it;

@@ -27,8 +27,8 @@ void gb_sim_free(gb_sim *sim)
     free(sim->dX);
     free(sim->nc);
     free(sim->one);
-    free(sim->saved_g);
-    free(sim->saved_pairs);
+    gb_sim_state_free(&sim->saved);
+    gb_sim_state_free(&sim->trial);
     gb_pairs_free(&sim->pairs);
     gb_global_free(sim->global);
     free(sim);
@@ -59,14 +59,13 @@ gb_status gb_sim_create(const gb_scene *scene, gb_sim **out, gb_error *err)
     sim->scene = scene;
     sim->n = n;
     sim->g = malloc(nn * sizeof *sim->g);
-    sim->saved_g = malloc(nn * sizeof *sim->g);
     sim->body = malloc(nn * 2 * sizeof(double));
     sim->F = calloc(nn * 3, sizeof(double));
     sim->S = calloc(nn * 6, sizeof(double));
     sim->dX = calloc(nn * 3, sizeof(double));
     sim->nc = calloc(nn, sizeof(int));
     sim->one = calloc(nn * 3, sizeof(double));
-    if (!sim->g || !sim->saved_g || !sim->body || !sim->F || !sim->S || !sim->dX || !sim->nc || !sim->one) {
+    if (!sim->g || !sim->body || !sim->F || !sim->S || !sim->dX || !sim->nc || !sim->one) {
         gb_sim_free(sim);
         return gb_fail(err, GB_ENOMEM, "out of memory for %d grains", n);
     }
@@ -81,6 +80,7 @@ gb_status gb_sim_create(const gb_scene *scene, gb_sim **out, gb_error *err)
     sim->box = scene->box;
     sim->ref_width = scene->box.right - scene->box.left;
     sim->ref_height = scene->box.top - scene->box.bottom;
+    sim->lm_mu = 1e-6;
     sim->tan_phi_gg = tan(scene->grain_grain.friction_deg * PI / 180);
     sim->tan_phi_gw = tan(scene->grain_wall.friction_deg * PI / 180);
     /* The skin trades list length against rebuilds; a fifth of the mean radius keeps both small. */
@@ -173,48 +173,27 @@ void gb_gem_strain(const gb_sim *sim, double *e1, double *e2)
 
 static void save_state(gb_sim *sim, gb_error *err, gb_status *st)
 {
-    memcpy(sim->saved_g, sim->g, (size_t)sim->n * sizeof *sim->g);
-    if (sim->pairs.n > sim->saved_cap) {
-        gb_pair *p = realloc(sim->saved_pairs, (size_t)sim->pairs.cap * sizeof *p);
-        if (!p) {
-            *st = gb_fail(err, GB_ENOMEM, "out of memory");
-            return;
-        }
-        sim->saved_pairs = p;
-        sim->saved_cap = sim->pairs.cap;
-    }
-    memcpy(sim->saved_pairs, sim->pairs.p, (size_t)sim->pairs.n * sizeof *sim->pairs.p);
-    sim->saved_n_pairs = sim->pairs.n;
-    sim->saved_box = sim->box;
-    memcpy(sim->saved_wall_force, sim->wall_force, sizeof sim->wall_force);
+    *st = gb_sim_state_save(sim, &sim->saved, err);
 }
 
 /* External work of a converged step, as a quasi-static test measures it: the walls' mean force at
  * the start and the end of the step times their inward displacement, and the body forces times
  * the grains' displacement (the saved state is the start of the step; sim->wall_force and
- * sim->saved_wall_force hold the converged forces). */
+ * sim->saved.wall_force hold the converged forces). */
 static void add_step_work(gb_sim *sim)
 {
-    const gb_box *a = &sim->saved_box, *b = &sim->box;
+    const gb_box *a = &sim->saved.box, *b = &sim->box;
     double inward[GB_N_WALLS] = {b->left - a->left, a->right - b->right, b->bottom - a->bottom, a->top - b->top};
     for (int w = 0; w < GB_N_WALLS; w++)
-        sim->work_walls += 0.5 * (sim->saved_wall_force[w] + sim->wall_force[w]) * inward[w];
+        sim->work_walls += 0.5 * (sim->saved.wall_force[w] + sim->wall_force[w]) * inward[w];
     for (int i = 0; i < sim->n; i++)
-        sim->work_body += sim->body[2 * i] * (sim->g[i].x - sim->saved_g[i].x) +
-                          sim->body[2 * i + 1] * (sim->g[i].y - sim->saved_g[i].y);
+        sim->work_body += sim->body[2 * i] * (sim->g[i].x - sim->saved.g[i].x) +
+                          sim->body[2 * i + 1] * (sim->g[i].y - sim->saved.g[i].y);
 }
 
 static void restore_state(gb_sim *sim)
 {
-    memcpy(sim->g, sim->saved_g, (size_t)sim->n * sizeof *sim->g);
-    memcpy(sim->pairs.p, sim->saved_pairs, (size_t)sim->saved_n_pairs * sizeof *sim->pairs.p);
-    sim->pairs.n = sim->saved_n_pairs;
-    sim->box = sim->saved_box;
-    sim->pairs.box0 = sim->box;
-    for (int i = 0; i < sim->n; i++) {
-        sim->pairs.x0[2 * i] = sim->g[i].x;
-        sim->pairs.x0[2 * i + 1] = sim->g[i].y;
-    }
+    gb_sim_state_restore(sim, &sim->saved);
     gb_gem_forces(sim);
 }
 

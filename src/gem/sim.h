@@ -19,6 +19,19 @@ typedef struct gb_wall_control_s {
     double mean;    /* GB_WALLS_MEAN target */
 } gb_wall_control;
 
+/* A copy of everything an iteration changes: grains, contacts, walls and energy accounts. */
+typedef struct {
+    gb_grain *g;
+    gb_pair *p;
+    int n_pairs, cap;
+    double *x0;          /* the pair list's rebuild positions */
+    gb_box box, box0;
+    long rebuilds;
+    double wall_force[GB_N_WALLS];
+    double work_walls_iter, dissipation, dissipation_step, relaxation;
+    int half_pending;
+} gb_sim_state;
+
 struct gb_sim {
     const gb_scene *scene;
     int n;
@@ -37,12 +50,11 @@ struct gb_sim {
     double wall_dx[GB_N_WALLS][2]; /* wall translation of the current iteration */
     double ref_width, ref_height;  /* strain reference */
     double tan_phi_gg, tan_phi_gw;
-    /* The last converged state, restored when a step fails. */
-    gb_grain *saved_g;
-    gb_pair *saved_pairs;
-    int saved_n_pairs, saved_cap;
-    gb_box saved_box;
-    double saved_wall_force[GB_N_WALLS];
+    /* The last converged state (the start of the current step), restored when a step fails. */
+    gb_sim_state saved;
+    /* The state before a trial move of the global solver. */
+    gb_sim_state trial;
+    double lm_mu;        /* Levenberg-Marquardt damping of the global solver */
     long iterations_total;
     /* Energy accounts since the start of the run (absolute, force x length). */
     double work_walls;        /* done by the walls: quasi-static, from converged steps' forces */
@@ -54,6 +66,10 @@ struct gb_sim {
     double dissipation_step;  /* of the current load step */
     double energy0;           /* elastic energy of the initial state */
 };
+
+gb_status gb_sim_state_save(const gb_sim *sim, gb_sim_state *st, gb_error *err);
+void gb_sim_state_restore(gb_sim *sim, const gb_sim_state *st);
+void gb_sim_state_free(gb_sim_state *st);
 
 /* One iteration of the reference method (K section 2.5, Fig. 1): F and S of every grain, then,
  * unless converged, the simultaneous moves of grains and walls and the contact update.

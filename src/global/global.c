@@ -13,8 +13,8 @@
 
 enum { NW = 3, W_X = 0, W_Y = 1, W_MEAN = 2 };
 
-/* Relative diagonal shift that keeps a system with a free rigid mode (a cluster held by nothing)
- * positive definite; if the factorisation still meets a zero pivot it grows tenfold, up to 1e-3. */
+/* Smallest relative diagonal shift: it keeps a system with a free rigid mode (a cluster held by
+ * nothing) positive definite; if the factorisation still meets a zero pivot it grows tenfold. */
 static const double REGULARISE = 1e-10;
 
 struct gb_global {
@@ -44,8 +44,6 @@ struct gb_global {
     void *symbolic, *numeric;
     double control[UMFPACK_CONTROL], info[UMFPACK_INFO];
     gb_global_stats stats;
-    double damping;        /* share of the Newton step taken, adapted to the residual's progress */
-    double last_residual;  /* residual of the previous iteration (-1: none) */
 };
 
 static double now(void)
@@ -62,8 +60,6 @@ gb_status gb_global_create(gb_linear_kind kind, int n_grains, gb_global **out, g
     gl->kind = kind;
     gl->n = n_grains;
     gl->pattern_of = -1;
-    gl->damping = 1;
-    gl->last_residual = -1;
     size_t n3 = 3 * (size_t)n_grains, nd = n3 + NW;
     gl->rhs = calloc(nd, sizeof(double));
     gl->x = calloc(nd, sizeof(double));
@@ -450,9 +446,7 @@ static void wall_residuals(gb_global *gl, const gb_sim *sim, const gb_wall_contr
     }
 }
 
-void gb_global_restart(gb_global *gl) { gl->last_residual = -1; }
-
-gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const gb_wall_control *wc, double residual, gb_error *err)
+gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const gb_wall_control *wc, double mu, gb_error *err)
 {
     gb_status st;
     double t0 = now();
@@ -472,14 +466,14 @@ gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const gb_wall_control *wc,
         for (int a = 0; a < 3; a++) gl->rhs[3 * i + a] = gl->held[3 * i + a] ? 0 : -sim->F[3 * i + a];
     }
     wall_residuals(gl, sim, wc);
-    double shift = REGULARISE;
+    double shift = fmax(mu, REGULARISE), cap = fmax(1e3 * shift, 1e-3);
     assemble(gl, sim, shift);
     gl->stats.assemble += now() - t0;
     for (;;) {
         int singular = factor_solve(gl, err, &st);
         if (st) return st;
         if (!singular) break;
-        if (shift >= 1e-3)
+        if (shift >= cap)
             return gb_fail(err, GB_ENUMERIC, "the contact stiffness stays singular after a relative diagonal shift "
                                              "of %g", shift);
         shift *= 10;
@@ -497,14 +491,7 @@ gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const gb_wall_control *wc,
         double m = sqrt(x[0] * x[0] + x[1] * x[1]) / sim->g[i].r;
         if (m > worst) worst = m;
     }
-    /* Contacts that open and close from one full Newton step to the next make it cycle: halve the
-     * step whenever the residual grows, lengthen it again while it falls. */
-    if (gl->last_residual >= 0) {
-        if (residual > gl->last_residual) gl->damping = fmax(gl->damping * 0.5, 1.0 / 1024);
-        else gl->damping = fmin(gl->damping * 1.5, 1.0);
-    }
-    gl->last_residual = residual;
-    double a = sv->global_alpha * gl->damping, scale = worst * a > sv->max_move ? sv->max_move / worst : a;
+    double a = sv->global_alpha, scale = worst * a > sv->max_move ? sv->max_move / worst : a;
     for (int i = 0; i < n; i++) {
         double *d = &sim->dX[3 * i];
         if (sim->nc[i] < 2) {

@@ -24,14 +24,13 @@ void gb_global_free(gb_global *gl);
 /* Fills sim->dX for every grain. Grains with fewer than two contacts move as in the reference
  * iteration (cases b, c) and are held in the system; a rotation without stiffness (kt = 0) is held;
  * the rest solve K dX = -F together, with the walls under stress control as DOFs of the same system
- * (their residual: force minus target). `residual` (largest fixing force plus the walls' residual)
- * steers the damping of the step. A move larger than `max_move` scales the whole step down.
+ * (their residual: force minus target). The diagonal is scaled by 1 + mu (Levenberg-Marquardt:
+ * mu -> 0 is Newton's step, a large mu a short step along each DOF's own stiffness, like the
+ * reference iteration). A move larger than `max_move` scales the whole step down.
  * Fills sim->wall_dx too. */
 struct gb_wall_control_s;
-gb_status gb_global_moves(gb_global *gl, struct gb_sim *sim, const struct gb_wall_control_s *wc, double residual,
+gb_status gb_global_moves(gb_global *gl, struct gb_sim *sim, const struct gb_wall_control_s *wc, double mu,
                           gb_error *err);
-/* Forgets the residual history (a new relaxation starts). */
-void gb_global_restart(gb_global *gl);
 
 const gb_global_stats *gb_global_statistics(const gb_global *gl);
 

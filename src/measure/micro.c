@@ -22,9 +22,9 @@ void gb_tensor2_principal(gb_tensor2 *t)
  * slip (K 27) times the mean tangential force, zero if either end is zero (K 28). */
 static double step_dissipation_k28(const gb_sim *sim)
 {
-    const gb_pair *a = sim->saved_pairs, *b = sim->pairs.p;
-    int na = sim->saved_n_pairs, nb = sim->pairs.n, ia = 0;
-    const gb_box *b0 = &sim->saved_box, *b1 = &sim->box;
+    const gb_pair *a = sim->saved.p, *b = sim->pairs.p;
+    int na = sim->saved.n_pairs, nb = sim->pairs.n, ia = 0;
+    const gb_box *b0 = &sim->saved.box, *b1 = &sim->box;
     double wall_dx[GB_N_WALLS][2] = {{b1->left - b0->left, 0}, {b1->right - b0->right, 0},
                                      {0, b1->bottom - b0->bottom}, {0, b1->top - b0->top}};
     double total = 0;
@@ -37,10 +37,10 @@ static double step_dissipation_k28(const gb_sim *sim)
         if (!(p->d > 0) || p->pt == 0) continue;
         const gb_material *mat = q->j >= 0 ? &sim->scene->grain_grain : &sim->scene->grain_wall;
         if (!(mat->kt > 0)) continue;
-        const gb_grain *g0 = &sim->saved_g[q->i], *g1 = &sim->g[q->i];
+        const gb_grain *g0 = &sim->saved.g[q->i], *g1 = &sim->g[q->i];
         double dx = g1->x - g0->x, dy = g1->y - g0->y, rot = g1->r * (g1->rot - g0->rot);
         if (q->j >= 0) {
-            const gb_grain *h0 = &sim->saved_g[q->j], *h1 = &sim->g[q->j];
+            const gb_grain *h0 = &sim->saved.g[q->j], *h1 = &sim->g[q->j];
             dx -= h1->x - h0->x, dy -= h1->y - h0->y, rot += h1->r * (h1->rot - h0->rot);
         } else {
             dx -= wall_dx[-1 - q->j][0], dy -= wall_dx[-1 - q->j][1];

@@ -1,6 +1,6 @@
 /* Benchmark of the reference iteration (not a test): cost per iteration and iterations per load
  * step under isotropic stress control.
- *   bench_gem SCENE.yaml S0 PREP_CAP [STEPS]
+ *   bench_gem SCENE.yaml S0 PREP_CAP [STEPS [reference|cholmod|umfpack]]
  * The scene gives grains, box, materials and solver settings (its loading program is ignored).
  * Preparation: stress control at S0/2 from the scene's packing, at most PREP_CAP iterations.
  * Then STEPS (default 4) load steps of isotropic stress control from S0/2 to S0.
@@ -9,6 +9,7 @@
 #define _POSIX_C_SOURCE 199309L
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <time.h>
 
 #include "gem/sim.h"
@@ -29,10 +30,17 @@ int main(int argc, char **argv)
     double s0 = atof(argv[2]);
     long prep_cap = atol(argv[3]);
     int steps = argc > 4 ? atoi(argv[4]) : 4;
+    const char *method = argc > 5 ? argv[5] : "reference";
     gb_error err = {0};
     gb_scene sc;
     gb_sim *sim;
-    if (gb_scene_load(argv[1], &sc, &err) || gb_sim_create(&sc, &sim, &err)) {
+    if (gb_scene_load(argv[1], &sc, &err)) {
+        fprintf(stderr, "%s\n", err.msg);
+        return 1;
+    }
+    sc.solver.method = strcmp(method, "reference") ? GB_METHOD_GLOBAL : GB_METHOD_REFERENCE;
+    sc.solver.linear = !strcmp(method, "umfpack") ? GB_LINEAR_UMFPACK : GB_LINEAR_CHOLMOD;
+    if (gb_sim_create(&sc, &sim, &err)) {
         fprintf(stderr, "%s\n", err.msg);
         return 1;
     }
@@ -60,12 +68,19 @@ int main(int argc, char **argv)
         }
     }
     double secs = t_prep + t_steps, iters = (double)(prep_it + it_total);
-    printf("| %d | %d | %ld%s (%.1f s) | %s | %.3e | %.1f | %.1f |\n", sim->n, contacts, prep_it,
+    if (sim->global) {
+        const gb_global_stats *g = gb_global_statistics(sim->global);
+        fprintf(stderr, "%s: assembly %.2f s, analysis %.2f s (%ld), factorisation %.2f s (%ld), solve %.2f s, "
+                        "rest %.2f s; %ld regularised\n", method, g->assemble, g->analyse, g->analyses, g->factorise,
+                g->factorisations, g->solve, t_prep + t_steps - g->assemble - g->analyse - g->factorise - g->solve,
+                g->regularised);
+    }
+    printf("| %s | %d | %d | %ld%s (%.1f s) | %s | %.3e | %.1f | %.1f |\n", method, sim->n, contacts, prep_it,
            prep_it >= prep_cap ? ", not converged" : "", t_prep, done ? "" : "not reached", secs / iters,
            1e9 * secs / contact_iterations, secs);
     if (done) {
         /* Re-print with the per-step figure filled in. */
-        printf("| %d | %d | %ld (%.1f s) | %.0f over %d steps (%.1f s) | %.3e | %.1f | %.1f |\n", sim->n, contacts,
+        printf("| %s | %d | %d | %ld (%.1f s) | %.0f over %d steps (%.1f s) | %.3e | %.1f | %.1f |\n", method, sim->n, contacts,
                prep_it, t_prep, (double)it_total / done, done, t_steps, secs / iters, 1e9 * secs / contact_iterations,
                secs);
     }

@@ -1,0 +1,66 @@
+/* Saving and restoring a simulation's state: for a failed step, and for the global solver's
+ * rejected trial moves. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "gem/sim.h"
+
+void gb_sim_state_free(gb_sim_state *st)
+{
+    free(st->g);
+    free(st->p);
+    free(st->x0);
+    memset(st, 0, sizeof *st);
+}
+
+gb_status gb_sim_state_save(const gb_sim *sim, gb_sim_state *st, gb_error *err)
+{
+    size_t n = (size_t)(sim->n > 0 ? sim->n : 1);
+    if (!st->g && (!(st->g = malloc(n * sizeof *st->g)) || !(st->x0 = malloc(2 * n * sizeof(double)))))
+        return gb_fail(err, GB_ENOMEM, "out of memory for a copy of %d grains", sim->n);
+    if (sim->pairs.n > st->cap) {
+        gb_pair *p = realloc(st->p, (size_t)sim->pairs.n * sizeof *p);
+        if (!p) return gb_fail(err, GB_ENOMEM, "out of memory for a copy of %d pairs", sim->pairs.n);
+        st->p = p;
+        st->cap = sim->pairs.n;
+    }
+    memcpy(st->g, sim->g, (size_t)sim->n * sizeof *st->g);
+    memcpy(st->p, sim->pairs.p, (size_t)sim->pairs.n * sizeof *st->p);
+    memcpy(st->x0, sim->pairs.x0, 2 * (size_t)sim->n * sizeof(double));
+    st->n_pairs = sim->pairs.n;
+    st->box = sim->box;
+    st->box0 = sim->pairs.box0;
+    st->rebuilds = sim->pairs.rebuilds;
+    memcpy(st->wall_force, sim->wall_force, sizeof st->wall_force);
+    st->work_walls_iter = sim->work_walls_iter;
+    st->dissipation = sim->dissipation;
+    st->dissipation_step = sim->dissipation_step;
+    st->relaxation = sim->relaxation;
+    st->half_pending = sim->half_pending;
+    return GB_OK;
+}
+
+/* The pair list keeps at least the capacity it had: restoring never needs memory. */
+void gb_sim_state_restore(gb_sim *sim, const gb_sim_state *st)
+{
+    if (st->n_pairs > sim->pairs.cap) {
+        /* the list shrank in a rebuild and its spare buffer is the larger one */
+        gb_pair *t = sim->pairs.p;
+        int c = sim->pairs.cap;
+        sim->pairs.p = sim->pairs.tmp, sim->pairs.cap = sim->pairs.tmp_cap;
+        sim->pairs.tmp = t, sim->pairs.tmp_cap = c;
+    }
+    memcpy(sim->g, st->g, (size_t)sim->n * sizeof *st->g);
+    memcpy(sim->pairs.p, st->p, (size_t)st->n_pairs * sizeof *st->p);
+    memcpy(sim->pairs.x0, st->x0, 2 * (size_t)sim->n * sizeof(double));
+    sim->pairs.n = st->n_pairs;
+    sim->box = st->box;
+    sim->pairs.box0 = st->box0;
+    sim->pairs.rebuilds = st->rebuilds;
+    memcpy(sim->wall_force, st->wall_force, sizeof st->wall_force);
+    sim->work_walls_iter = st->work_walls_iter;
+    sim->dissipation = st->dissipation;
+    sim->dissipation_step = st->dissipation_step;
+    sim->relaxation = st->relaxation;
+    sim->half_pending = st->half_pending;
+}
