@@ -122,7 +122,7 @@ int main(int argc, char **argv)
         if (gb_bem_condense(&m, &sys, &p, 1, NULL, &K, &err)) return fprintf(stderr, "%s\n", err.msg), 1;
         double tc = now() - t0;
         double lu_gf, mm_gf, lu_s;
-        dense_rates(2 * n, n <= 1000 ? 3 : 1, &lu_gf, &mm_gf, &lu_s);
+        dense_rates(2 * n, n <= 1000 ? 3 : 2, &lu_gf, &mm_gf, &lu_s);
         printf("| %d | %d | %.3f | %.3f | %.3f | %.1f | %.1f | %.2f | %.2e |\n", n, 2 * n, ta, tc, lu_s, lu_gf, mm_gf,
                lu_gf / mm_gf, K.asymmetry);
         fflush(stdout);
