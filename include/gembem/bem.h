@@ -199,7 +199,10 @@ gb_status gb_bem_boundary_stress(const gb_bem_mesh *mesh, const gb_bem_material 
 /* (H 7): forces F = L t on the elements of one group as a function of their displacements,
  * F = K u + f0, with every other group's condition (fixed, free, loaded) condensed out (Schur
  * complement, one LU of the mixed system through LAPACKE). K is m x m, m = 2 x (elements of the
- * group), column-major, DOFs in the group's element order (elem[]). */
+ * group), column-major, DOFs in the group's element order (elem[]). Signs: F is the force that the
+ * outside (the grains) applies to the body on each element, acting at its midpoint, to hold the
+ * displacement u; the body pushes back on the grains with -F. With every other group fixed and
+ * unloaded, f0 = 0 and K = (L G^-1 H) restricted to the group. */
 typedef struct {
     int m;            /* 2 x number of group elements */
     int *elem;        /* mesh element index of each group element, m/2 */
