@@ -225,11 +225,15 @@ gb_status gb_gem_apply_moves(gb_sim *sim, gb_error *err)
 static const double MU_MIN = 1e-8, MU_MAX = 1e4;
 enum { MAX_TRIALS = 6 };
 
-/* The merit of a configuration: squared fixing forces and walls' residual. */
-static double merit(const gb_sim *sim, double wall_residual)
+/* The merit of a configuration: squared fixing forces of the grains that the system moves (those
+ * with two contacts or more before the move: the others move by the reference cases, whatever the
+ * damping) and the walls' residual. */
+static double merit(const gb_sim *sim, const unsigned char *in_system, double wall_residual)
 {
     double m = wall_residual * wall_residual;
-    for (int k = 0; k < 3 * sim->n; k++) m += sim->F[k] * sim->F[k];
+    for (int i = 0; i < sim->n; i++)
+        if (in_system[i])
+            for (int k = 3 * i; k < 3 * i + 3; k++) m += sim->F[k] * sim->F[k];
     return m;
 }
 
@@ -239,7 +243,12 @@ static double merit(const gb_sim *sim, double wall_residual)
  * it they lengthen to Newton's. */
 static gb_status global_move(gb_sim *sim, const gb_wall_control *wc, double wall_residual, gb_error *err)
 {
-    double m0 = merit(sim, wall_residual);
+    for (int i = 0; i < sim->n; i++) sim->in_system[i] = sim->nc[i] >= 2;
+    /* Non-monotone acceptance (Grippo, Lampariello and Lucidi): a move may raise the merit above
+     * the current one but not above the largest of the last few accepted, so that grains moved by
+     * the reference cases (a grain rolling over a neighbour) cannot lock the damping. */
+    double m0 = merit(sim, sim->in_system, wall_residual), bound = m0;
+    for (int k = 0; k < LM_MEMORY; k++) bound = fmax(bound, sim->lm_history[k]);
     gb_status st = gb_sim_state_save(sim, &sim->trial, err);
     if (st) return st;
     for (int trial = 0;; trial++) {
@@ -248,9 +257,10 @@ static gb_status global_move(gb_sim *sim, const gb_wall_control *wc, double wall
         sim->half_pending = 1;
         if ((st = gb_gem_apply_moves(sim, err))) return st;
         gb_gem_forces(sim);
-        double m1 = merit(sim, wall_moves(sim, wc));
-        if (m1 <= m0 || trial == MAX_TRIALS || sim->lm_mu >= MU_MAX) {
+        double m1 = merit(sim, sim->in_system, wall_moves(sim, wc));
+        if (m1 <= bound || trial == MAX_TRIALS || sim->lm_mu >= MU_MAX) {
             sim->lm_mu = fmax(sim->lm_mu / 4, MU_MIN);
+            sim->lm_history[sim->lm_next++ % LM_MEMORY] = m0;
             return GB_OK;
         }
         gb_sim_state_restore(sim, &sim->trial);

@@ -27,6 +27,7 @@ void gb_sim_free(gb_sim *sim)
     free(sim->dX);
     free(sim->nc);
     free(sim->one);
+    free(sim->in_system);
     gb_sim_state_free(&sim->saved);
     gb_sim_state_free(&sim->trial);
     gb_pairs_free(&sim->pairs);
@@ -65,7 +66,8 @@ gb_status gb_sim_create(const gb_scene *scene, gb_sim **out, gb_error *err)
     sim->dX = calloc(nn * 3, sizeof(double));
     sim->nc = calloc(nn, sizeof(int));
     sim->one = calloc(nn * 3, sizeof(double));
-    if (!sim->g || !sim->body || !sim->F || !sim->S || !sim->dX || !sim->nc || !sim->one) {
+    sim->in_system = calloc(nn, 1);
+    if (!sim->g || !sim->body || !sim->F || !sim->S || !sim->dX || !sim->nc || !sim->one || !sim->in_system) {
         gb_sim_free(sim);
         return gb_fail(err, GB_ENOMEM, "out of memory for %d grains", n);
     }

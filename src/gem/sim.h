@@ -55,6 +55,10 @@ struct gb_sim {
     /* The state before a trial move of the global solver. */
     gb_sim_state trial;
     double lm_mu;        /* Levenberg-Marquardt damping of the global solver */
+#define LM_MEMORY 10
+    double lm_history[LM_MEMORY]; /* merits before the last accepted moves */
+    int lm_next;
+    unsigned char *in_system; /* per grain: moved by the global system in this iteration */
     long iterations_total;
     /* Energy accounts since the start of the run (absolute, force x length). */
     double work_walls;        /* done by the walls: quasi-static, from converged steps' forces */
