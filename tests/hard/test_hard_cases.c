@@ -7,7 +7,8 @@
  *  - rattlers (no contact) and a grain with a single contact under gravity;
  *  - kt = 0 (rotations without stiffness, case d): three discs give Table 2's frictionless answer;
  *  - friction angle 89 deg;
- *  - a load step far too large (d(e1 - e2) = 20 % in one step). */
+ *  - a load step far too large (d(e1 - e2) = 20 % in one step);
+ *  - a row of grains on a frictionless floor, held by nothing sideways. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -121,6 +122,20 @@ int main(void)
             s.stages = &strain;
             s.n_stages = 1;
             run(&s, solver, &o, "overlap 50 %, ratio 10, rattler");
+        }
+        {   /* Three touching grains on a frictionless floor, far from the side walls, pressed into
+             * each other and into the floor: nothing holds the row horizontally (a free rigid mode
+             * of K): the system must still be solved, without a zero pivot or a NaN. */
+            gb_grain g[3] = {{8.0, 0.999, 1.0, 0}, {9.99, 0.999, 1.0, 0}, {11.98, 0.999, 1.0, 0}};
+            gb_box box = {0, 20, 0, 25};
+            gb_scene s = fixture_scene(g, 3, box, 1e8, 7e7, 0);
+            s.body_force_per_area[1] = -1500;
+            s.solver.accuracy = 1;
+            s.solver.max_iterations = 300000;
+            gb_stage strain = {.kind = GB_STAGE_STRAIN, .steps = 1, .de1 = 0, .de2 = 0};
+            s.stages = &strain;
+            s.n_stages = 1;
+            if (run(&s, solver, &o, "row held by nothing sideways") == GB_OK) CHECK(o.finite);
         }
     }
     TEST_END();
