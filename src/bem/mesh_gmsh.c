@@ -2,6 +2,7 @@
  * read as it is. The one place where gmsh is initialised and finalised. */
 #include <errno.h>
 #include <gmshc.h>
+#include <locale.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -395,8 +396,15 @@ gb_status gb_bem_mesh_load(const char *path, const gb_bem_mesh_opts *opts, gb_be
     memset(&x, 0, sizeof x);
     x.path = path;
     int ierr = 0;
+    /* gmshInitialize sets LC_NUMERIC to "C" for the whole process: put the caller's back after */
+    char saved_numeric[128] = "C";
+    const char *cur = setlocale(LC_NUMERIC, NULL);
+    if (cur) snprintf(saved_numeric, sizeof saved_numeric, "%s", cur);
     gmshInitialize(0, NULL, 0, &ierr);
-    if (ierr) return gb_fail(err, GB_EINTERNAL, "gmsh could not start");
+    if (ierr) {
+        setlocale(LC_NUMERIC, saved_numeric);
+        return gb_fail(err, GB_EINTERNAL, "gmsh could not start");
+    }
     gmshOptionSetNumber("General.Terminal", 0, &ierr);
     gmshOptionSetNumber("General.Verbosity", 0, &ierr);
     gmshOptionSetNumber("General.AbortOnError", 0, &ierr);
@@ -408,6 +416,7 @@ gb_status gb_bem_mesh_load(const char *path, const gb_bem_mesh_opts *opts, gb_be
     if (!st) st = read_segments(&x, err);
     if (!st) st = read_nodes(&x, err);
     gmshFinalize(&ierr);
+    setlocale(LC_NUMERIC, saved_numeric);
     if (!st) st = chain_loops(&x, o, mesh, err);
     free(x.segs);
     free(x.coord);

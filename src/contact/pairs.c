@@ -12,22 +12,32 @@ void gb_pairs_free(gb_pair_list *L)
     free(L->cell_head);
     free(L->cell_next);
     free(L->cand);
+    free(L->pcell_head);
+    free(L->pcell_next);
+    free(L->px0);
     memset(L, 0, sizeof *L);
 }
 
-void gb_pair_geometry(gb_pair *p, const gb_grain *g, const gb_box *box)
+void gb_pair_geometry(gb_pair *p, const gb_world *w)
 {
-    const gb_grain *a = &g[p->i];
-    if (p->j >= 0) {
-        const gb_grain *b = &g[p->j];
-        double dx = b->x - a->x, dy = b->y - a->y, dist = sqrt(dx * dx + dy * dy);
+    const gb_grain *a = &w->g[p->i];
+    if (p->j >= 0 || GB_IS_PARTICLE(p->j)) {
+        double bx, by, br;
+        const gb_particles *bp = w->bp;
+        int e = GB_PARTICLE_OF(p->j);
+        if (p->j >= 0) bx = w->g[p->j].x, by = w->g[p->j].y, br = w->g[p->j].r;
+        else bx = bp->x[e], by = bp->y[e], br = bp->r[e];
+        double dx = bx - a->x, dy = by - a->y, dist = sqrt(dx * dx + dy * dy);
         if (dist > 0) {
             p->nx = dx / dist;
             p->ny = dy / dist;
         } /* coincident centres keep the previous normal rather than invent one */
-        p->d = a->r + b->r - dist;
+        p->d = a->r + br - dist;
+        /* A half-disc: the grain must be on the side the particle bulges to. */
+        if (p->j < 0 && -(p->nx * bp->nx[e] + p->ny * bp->ny[e]) <= 0 && p->d > 0) p->d = -p->d;
         return;
     }
+    const gb_box *box = w->box;
     switch (-1 - p->j) {
     case GB_WALL_LEFT: p->nx = -1, p->ny = 0, p->d = a->r - (a->x - box->left); break;
     case GB_WALL_RIGHT: p->nx = 1, p->ny = 0, p->d = a->r - (box->right - a->x); break;
@@ -36,8 +46,8 @@ void gb_pair_geometry(gb_pair *p, const gb_grain *g, const gb_box *box)
     }
 }
 
-double gb_pair_update(gb_pair *p, const gb_grain *g, const gb_box *box, const double *dX,
-                      const double *wall_dx, const gb_material *mat, double tan_phi)
+double gb_pair_update(gb_pair *p, const gb_world *w, const double *dX, const double *wall_dx,
+                      const gb_material *mat, double tan_phi)
 {
     int was_contact = p->d > 0;
     /* (K 25): tangential relative displacement in the previous tangent t = (-ny, nx). */
@@ -46,11 +56,14 @@ double gb_pair_update(gb_pair *p, const gb_grain *g, const gb_box *box, const do
     if (p->j >= 0) {
         const double *b = &dX[3 * p->j];
         bx = b[0], by = b[1], brot = b[2];
+    } else if (GB_IS_PARTICLE(p->j)) {
+        const double *b = &w->bp->dx[2 * GB_PARTICLE_OF(p->j)];
+        bx = b[0], by = b[1];
     } else {
         bx = wall_dx[2 * (-1 - p->j)], by = wall_dx[2 * (-1 - p->j) + 1];
     }
     double du_t = -(a[0] - bx) * p->ny + (a[1] - by) * p->nx + a[2] + brot;
-    gb_pair_geometry(p, g, box);
+    gb_pair_geometry(p, w);
     double pt0 = p->pt, diss = 0;
     if (!(p->d > 0)) {
         /* Opened (K section 2.5): both forces vanish, the tangential spring's energy is lost. */
@@ -90,10 +103,20 @@ static gb_status grow(void **buf, int *cap, int need, size_t size, gb_error *err
     return GB_OK;
 }
 
-gb_status gb_pairs_rebuild(gb_pair_list *L, const gb_grain *g, int n, const gb_box *box, gb_error *err)
+gb_status gb_pairs_rebuild(gb_pair_list *L, const gb_world *w, gb_error *err)
 {
     gb_status st;
-    double rmax = 0, xmin = box->left, xmax = box->right, ymin = box->bottom, ymax = box->top;
+    const gb_grain *g = w->g;
+    const gb_box *box = w->box;
+    const gb_particles *bp = w->bp;
+    int n = w->n, np = bp ? bp->n : 0;
+    double rmax = 0, xmin = HUGE_VAL, xmax = -HUGE_VAL, ymin = HUGE_VAL, ymax = -HUGE_VAL;
+    if (box) xmin = box->left, xmax = box->right, ymin = box->bottom, ymax = box->top;
+    for (int e = 0; e < np; e++) {
+        if (bp->r[e] > rmax) rmax = bp->r[e];
+        xmin = fmin(xmin, bp->x[e]), xmax = fmax(xmax, bp->x[e]);
+        ymin = fmin(ymin, bp->y[e]), ymax = fmax(ymax, bp->y[e]);
+    }
     for (int i = 0; i < n; i++) {
         if (g[i].r > rmax) rmax = g[i].r;
         if (g[i].x < xmin) xmin = g[i].x;
@@ -114,6 +137,19 @@ gb_status gb_pairs_rebuild(gb_pair_list *L, const gb_grain *g, int n, const gb_b
     if (!L->x0 && !(L->x0 = malloc((size_t)(2 * (n > 0 ? n : 1)) * sizeof(double))))
         return gb_fail(err, GB_ENOMEM, "out of memory for the cell list");
     for (int c = 0; c < ncells; c++) L->cell_head[c] = -1;
+    if (np > 0) {
+        if ((st = grow((void **)&L->pcell_head, &L->n_pcells_cap, ncells, sizeof(int), err)) ||
+            (st = grow((void **)&L->pcell_next, &L->n_particles_cap, np, sizeof(int), err)))
+            return st;
+        for (int c = 0; c < ncells; c++) L->pcell_head[c] = -1;
+        for (int e = np - 1; e >= 0; e--) {
+            int cx = (int)((bp->x[e] - xmin) / h), cy = (int)((bp->y[e] - ymin) / h);
+            cx = cx < 0 ? 0 : cx >= ncx ? ncx - 1 : cx;
+            cy = cy < 0 ? 0 : cy >= ncy ? ncy - 1 : cy;
+            L->pcell_next[e] = L->pcell_head[cy * ncx + cx];
+            L->pcell_head[cy * ncx + cx] = e;
+        }
+    }
     /* Insert in reverse so that each cell lists its grains in increasing order. */
     for (int i = n - 1; i >= 0; i--) {
         int cx = (int)((g[i].x - xmin) / h), cy = (int)((g[i].y - ymin) / h);
@@ -130,14 +166,27 @@ gb_status gb_pairs_rebuild(gb_pair_list *L, const gb_grain *g, int n, const gb_b
         int cx = (int)((a->x - xmin) / h), cy = (int)((a->y - ymin) / h);
         cx = cx < 0 ? 0 : cx >= ncx ? ncx - 1 : cx;
         cy = cy < 0 ? 0 : cy >= ncy ? ncy - 1 : cy;
-        /* Walls first: their indices -1 - w are negative. */
-        double gap[GB_N_WALLS] = {a->x - box->left, box->right - a->x, a->y - box->bottom, box->top - a->y};
-        for (int w = GB_N_WALLS - 1; w >= 0; w--) {
-            if (gap[w] < a->r + L->skin) {
-                if ((st = grow((void **)&L->cand, &L->cand_cap, nc + 1, sizeof(int), err))) return st;
-                L->cand[nc++] = -1 - w;
+        /* Boundary particles and walls first: their indices are negative. */
+        for (int y = cy - 1; np > 0 && y <= cy + 1; y++) {
+            if (y < 0 || y >= ncy) continue;
+            for (int x = cx - 1; x <= cx + 1; x++) {
+                if (x < 0 || x >= ncx) continue;
+                for (int e = L->pcell_head[y * ncx + x]; e >= 0; e = L->pcell_next[e]) {
+                    double dx = bp->x[e] - a->x, dy = bp->y[e] - a->y, reach = a->r + bp->r[e] + L->skin;
+                    if (dx * dx + dy * dy >= reach * reach) continue;
+                    if ((st = grow((void **)&L->cand, &L->cand_cap, nc + 1, sizeof(int), err))) return st;
+                    L->cand[nc++] = GB_PARTICLE_J(e);
+                }
             }
         }
+        for (int wl = GB_N_WALLS - 1; box && wl >= 0; wl--) {
+            double gap[GB_N_WALLS] = {a->x - box->left, box->right - a->x, a->y - box->bottom, box->top - a->y};
+            if (gap[wl] < a->r + L->skin) {
+                if ((st = grow((void **)&L->cand, &L->cand_cap, nc + 1, sizeof(int), err))) return st;
+                L->cand[nc++] = -1 - wl;
+            }
+        }
+        if (nc > 1) qsort(L->cand, (size_t)nc, sizeof(int), cmp_int);
         int first_grain = nc;
         for (int y = cy - 1; y <= cy + 1; y++) {
             if (y < 0 || y >= ncy) continue;
@@ -165,7 +214,7 @@ gb_status gb_pairs_rebuild(gb_pair_list *L, const gb_grain *g, int n, const gb_b
                 memset(q, 0, sizeof *q);
                 q->i = i;
                 q->j = j;
-                gb_pair_geometry(q, g, box);
+                gb_pair_geometry(q, w);
                 q->d = 0; /* not yet a contact: its forces start at the next update */
             }
         }
@@ -182,15 +231,24 @@ gb_status gb_pairs_rebuild(gb_pair_list *L, const gb_grain *g, int n, const gb_b
         L->x0[2 * i] = g[i].x;
         L->x0[2 * i + 1] = g[i].y;
     }
-    L->box0 = *box;
+    if (np > 0 && (st = grow((void **)&L->px0, &L->px0_cap, 2 * np, sizeof(double), err))) return st;
+    for (int e = 0; e < np; e++) L->px0[2 * e] = bp->x[e], L->px0[2 * e + 1] = bp->y[e];
+    if (box) L->box0 = *box;
     L->rebuilds++;
     return GB_OK;
 }
 
-int gb_pairs_stale(const gb_pair_list *L, const gb_grain *g, int n, const gb_box *box)
+int gb_pairs_stale(const gb_pair_list *L, const gb_world *w)
 {
-    double wall = fmax(fmax(fabs(box->left - L->box0.left), fabs(box->right - L->box0.right)),
-                       fmax(fabs(box->bottom - L->box0.bottom), fabs(box->top - L->box0.top)));
+    const gb_box *box = w->box;
+    const gb_grain *g = w->g;
+    int n = w->n;
+    double wall = 0;
+    if (box)
+        wall = fmax(fmax(fabs(box->left - L->box0.left), fabs(box->right - L->box0.right)),
+                    fmax(fabs(box->bottom - L->box0.bottom), fabs(box->top - L->box0.top)));
+    for (int e = 0; w->bp && e < w->bp->n; e++)
+        wall = fmax(wall, hypot(w->bp->x[e] - L->px0[2 * e], w->bp->y[e] - L->px0[2 * e + 1]));
     double max2 = 0;
     for (int i = 0; i < n; i++) {
         double dx = g[i].x - L->x0[2 * i], dy = g[i].y - L->x0[2 * i + 1], d2 = dx * dx + dy * dy;

@@ -5,10 +5,33 @@
 
 #include "gembem/scene.h"
 
-/* A pair of grains, or a grain and a wall, that may touch before the next rebuild. It keeps the
+/* Boundary particles (the hybrid method, METHOD.md section 10): one half-disc on each element of
+ * a host's cavity, of diameter the element's length, centred on its midpoint and bulging into the
+ * cavity; it moves with its element (2 DOFs, no rotation). In a pair it is j = GB_PARTICLE_J(e). */
+#define GB_PARTICLE_J(e) (-1 - GB_N_WALLS - (e))
+#define GB_IS_PARTICLE(j) ((j) < -GB_N_WALLS)
+#define GB_PARTICLE_OF(j) (-1 - GB_N_WALLS - (j))
+
+typedef struct {
+    int n;
+    double *x, *y;    /* centres now (midpoint + element displacement) */
+    double *r;        /* half the element length */
+    double *nx, *ny;  /* the side it bulges to: the body's outward normal, into the cavity */
+    double *dx;       /* its move in the current iteration, 2 per particle */
+} gb_particles;
+
+/* What grains touch: each other, the four walls of a box (if any) and boundary particles (if any). */
+typedef struct {
+    const gb_grain *g;
+    int n;
+    const gb_box *box;       /* NULL: no walls */
+    const gb_particles *bp;  /* NULL: no boundary particles */
+} gb_world;
+
+/* A pair of grains, or a grain and a wall or a boundary particle, that may touch before the next rebuild. It keeps the
  * contact's state between iterations. */
 typedef struct {
-    int i, j;        /* j >= 0: grain (j > i); j < 0: wall -1 - j */
+    int i, j;        /* j >= 0: grain (j > i); -GB_N_WALLS <= j < 0: wall -1 - j; else a particle */
     double nx, ny;   /* unit normal from i towards j, at the last geometry update */
     double d;        /* overlap; the pair is a contact when d > 0 */
     double pn, pt;   /* contact forces, compression positive; zero when open */
@@ -22,6 +45,9 @@ typedef struct {
     int tmp_cap;
     double skin;          /* extra distance covered by the list */
     double *x0;           /* grain positions at the last rebuild (2 per grain) */
+    int *pcell_head, *pcell_next, n_pcells_cap, n_particles_cap; /* boundary particles by cell */
+    double *px0;          /* particle centres at the last rebuild (2 per particle) */
+    int px0_cap;
     gb_box box0;          /* walls at the last rebuild */
     int *cell_head, *cell_next, n_cells_cap;
     int *cand;            /* per-grain candidate buffer */
@@ -33,25 +59,27 @@ void gb_pairs_free(gb_pair_list *L);
 
 /* Rebuilds the candidate pairs from scratch with a cell grid (no O(N^2) loop), carrying over
  * the state of the pairs that persist. Both lists are sorted by (i, j). */
-gb_status gb_pairs_rebuild(gb_pair_list *L, const gb_grain *g, int n, const gb_box *box, gb_error *err);
+gb_status gb_pairs_rebuild(gb_pair_list *L, const gb_world *w, gb_error *err);
 
 /* True when some grain or wall has moved far enough since the last rebuild that a new contact
  * could be missing from the list. */
-int gb_pairs_stale(const gb_pair_list *L, const gb_grain *g, int n, const gb_box *box);
+int gb_pairs_stale(const gb_pair_list *L, const gb_world *w);
 
-/* Overlap and normal of a pair at the current positions. */
-void gb_pair_geometry(gb_pair *p, const gb_grain *g, const gb_box *box);
+/* Overlap and normal of a pair at the current positions. A grain behind a boundary particle (on
+ * its flat side) does not touch it: its overlap is set negative. */
+void gb_pair_geometry(gb_pair *p, const gb_world *w);
 
 /* Contact forces after a move (K 6, 13): the normal force follows the overlap, pn = kn d (a new
  * contact starts at kn d, see METHOD.md section 3); the tangential force is incremental,
  * pt += kt du_t with du_t from (K 25) in the tangent of the previous configuration; a contact
  * that opens (d <= 0) drops both forces; |pt| is capped at pn tan(phi) + c.
- * dX holds (dx, dy, r dw) per grain, wall_dx the translation (dx, dy) of each wall.
+ * dX holds (dx, dy, r dw) per grain, wall_dx the translation (dx, dy) of each wall, w->bp->dx
+ * the particles' moves.
  * Returns the energy dissipated by the update, also added to p->diss: the slip
  * du_d = du_t - dpt/kt times the mean tangential force, zero if either end is zero (K 26-28), and,
  * when the contact opens, the tangential spring energy pt^2/(2 kt) that it releases. */
-double gb_pair_update(gb_pair *p, const gb_grain *g, const gb_box *box, const double *dX,
-                    const double *wall_dx, const gb_material *mat, double tan_phi);
+double gb_pair_update(gb_pair *p, const gb_world *w, const double *dX, const double *wall_dx,
+                      const gb_material *mat, double tan_phi);
 
 /* Brute-force O(N^2) candidate pairs within `range` of touching, for tests. Returns the count and
  * fills out (sorted by (i, j), grains only) up to cap. */

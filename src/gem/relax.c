@@ -194,8 +194,8 @@ gb_status gb_gem_apply_moves(gb_sim *sim, gb_error *err)
     if (!(b->right > b->left) || !(b->top > b->bottom))
         return gb_fail(err, GB_ENUMERIC, "the box turned inside out (width %g, height %g): the load step is too "
                        "large for these springs", b->right - b->left, b->top - b->bottom);
-    if (gb_pairs_stale(&sim->pairs, sim->g, sim->n, b)) {
-        gb_status st = gb_pairs_rebuild(&sim->pairs, sim->g, sim->n, b, err);
+    if (gb_pairs_stale(&sim->pairs, &sim->world)) {
+        gb_status st = gb_pairs_rebuild(&sim->pairs, &sim->world, err);
         if (st) return st;
     }
     const gb_material *gg = &sim->scene->grain_grain, *gw = &sim->scene->grain_wall;
@@ -204,9 +204,9 @@ gb_status gb_gem_apply_moves(gb_sim *sim, gb_error *err)
     for (int k = 0; k < sim->pairs.n; k++) {
         gb_pair *p = &P[k];
         if (p->j >= 0) {
-            diss += gb_pair_update(p, sim->g, b, sim->dX, &sim->wall_dx[0][0], gg, sim->tan_phi_gg);
+            diss += gb_pair_update(p, &sim->world, sim->dX, &sim->wall_dx[0][0], gg, sim->tan_phi_gg);
         } else {
-            diss += gb_pair_update(p, sim->g, b, sim->dX, &sim->wall_dx[0][0], gw, sim->tan_phi_gw);
+            diss += gb_pair_update(p, &sim->world, sim->dX, &sim->wall_dx[0][0], gw, sim->tan_phi_gw);
             wall_after[-1 - p->j] += p->pn;
         }
     }

@@ -87,7 +87,11 @@ gb_status gb_sim_create(const gb_scene *scene, gb_sim **out, gb_error *err)
     sim->tan_phi_gw = tan(scene->grain_wall.friction_deg * PI / 180);
     /* The skin trades list length against rebuilds; a fifth of the mean radius keeps both small. */
     sim->pairs.skin = 0.2 * rsum / n;
-    gb_status st = gb_pairs_rebuild(&sim->pairs, sim->g, n, &sim->box, err);
+    sim->world.g = sim->g;
+    sim->world.n = n;
+    sim->world.box = &sim->box;
+    sim->world.bp = NULL;
+    gb_status st = gb_pairs_rebuild(&sim->pairs, &sim->world, err);
     if (st) {
         gb_sim_free(sim);
         return st;
@@ -95,7 +99,7 @@ gb_status gb_sim_create(const gb_scene *scene, gb_sim **out, gb_error *err)
     /* Initial contacts: pn from the overlap, pt from the scene. */
     for (int k = 0; k < sim->pairs.n; k++) {
         gb_pair *p = &sim->pairs.p[k];
-        gb_pair_geometry(p, sim->g, &sim->box);
+        gb_pair_geometry(p, &sim->world);
         const gb_material *m = p->j >= 0 ? &scene->grain_grain : &scene->grain_wall;
         p->pn = p->d > 0 ? m->kn * p->d : 0;
         p->pt = 0;

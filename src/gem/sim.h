@@ -43,6 +43,8 @@ struct gb_sim {
     int *nc;            /* contacts per grain */
     double *one;        /* per grain, of its last contact: normal towards the other side, kn */
     gb_pair_list pairs;
+    gb_world world;     /* what the grains touch: themselves, the box's walls, boundary particles */
+    gb_particles bp;    /* boundary particles (none without a host) */
     gb_global *global;  /* the global solver, when the scene asks for it */
     gb_box box;
     double wall_force[GB_N_WALLS]; /* normal force of the grains on each wall (compression +) */

@@ -1,5 +1,6 @@
 /* Boundary meshes: gmsh .geo and .msh, element counts and sizes, orientation by the body's
  * outward normal whatever gmsh returns, and the broken boundaries that must be refused. */
+#include <locale.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -87,6 +88,15 @@ int main(void)
     CHECK(nc == 40);
     CHECK(well_oriented(&m));
     gb_bem_mesh_free(&m);
+
+    /* gmsh sets LC_NUMERIC to "C": the caller's setting comes back */
+    if (setlocale(LC_NUMERIC, "C.UTF-8")) {
+        CHECK(gb_bem_mesh_load("meshes/hole_infinite.geo", NULL, &m, &err) == GB_OK);
+        const char *now = setlocale(LC_NUMERIC, NULL);
+        CHECK(now && !strcmp(now, "C.UTF-8"));
+        gb_bem_mesh_free(&m);
+        setlocale(LC_NUMERIC, "C");
+    }
 
     /* a global element size */
     o = gb_bem_mesh_opts_default();

@@ -41,7 +41,8 @@ int main(void)
         gb_pair_list L = {0};
         L.skin = 0.02;
         gb_error err;
-        CHECK(gb_pairs_rebuild(&L, g, n, &box, &err) == GB_OK);
+        gb_world w = {g, n, &box, NULL};
+        CHECK(gb_pairs_rebuild(&L, &w, &err) == GB_OK);
         CHECK(compare(&L, g, n));
         /* Wall pairs: exactly the grains within r + skin of a wall. */
         int walls = 0, want = 0;
@@ -56,10 +57,10 @@ int main(void)
             g[i].x += 0.05 * (fixture_random(&seed) - 0.5);
             g[i].y += 0.05 * (fixture_random(&seed) - 0.5);
         }
-        CHECK(gb_pairs_stale(&L, g, n, &box));
-        CHECK(gb_pairs_rebuild(&L, g, n, &box, &err) == GB_OK);
+        CHECK(gb_pairs_stale(&L, &w));
+        CHECK(gb_pairs_rebuild(&L, &w, &err) == GB_OK);
         CHECK(compare(&L, g, n));
-        CHECK(!gb_pairs_stale(&L, g, n, &box));
+        CHECK(!gb_pairs_stale(&L, &w));
         gb_pairs_free(&L);
         free(g);
     }
