@@ -75,7 +75,8 @@ gb_bem_mesh_opts gb_bem_mesh_opts_default(void);
  * dimension 1 becomes a group; every loop is oriented from its signed area. Refused (GB_EINPUT):
  * a missing file, a gmsh error, an open or branching loop, a self-crossing or touching boundary, a
  * zero-length element, a group of `opts` that the file does not define, a bounded body without a
- * single outer loop enclosing the others. */
+ * single outer loop enclosing the others. gmsh is global: do not call this from two threads at
+ * once. The caller's LC_NUMERIC is restored after gmsh (which sets it to "C"). */
 gb_status gb_bem_mesh_load(const char *path, const gb_bem_mesh_opts *opts, gb_bem_mesh *mesh, gb_error *err);
 
 /* Builds a mesh from closed polygons: loop k has loop_n[k] vertices (xy, concatenated, 2 per
