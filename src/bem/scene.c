@@ -212,7 +212,24 @@ static gb_status read_boundary(const gb_yaml_doc *doc, gb_ymap *root, gb_bem_sce
     return GB_OK;
 }
 
-static gb_status add_point(gb_bem_scene *s, int *cap, double x, double y, gb_error *err)
+/* Distance from (x, y) to the nearest element, relative to that element's length. */
+static double relative_distance(const gb_bem_mesh *m, double x, double y)
+{
+    double best = INFINITY, rel = INFINITY;
+    for (int e = 0; e < m->n; e++) {
+        const double *a = m->p0 + 2 * e, *b = m->p1 + 2 * e;
+        double d[2] = {b[0] - a[0], b[1] - a[1]}, w[2] = {x - a[0], y - a[1]};
+        double t = (w[0] * d[0] + w[1] * d[1]) / (d[0] * d[0] + d[1] * d[1]);
+        t = t < 0 ? 0 : t > 1 ? 1 : t;
+        double dist = hypot(w[0] - t * d[0], w[1] - t * d[1]);
+        if (dist < best) best = dist, rel = dist / m->length[e];
+    }
+    return rel;
+}
+
+/* A point is evaluated if it is inside the body: a listed point anywhere off the boundary, a grid
+ * point only from half an element length away (nearer, constant elements give a poor field). */
+static gb_status add_point(gb_bem_scene *s, int *cap, double x, double y, int grid, gb_error *err)
 {
     if (s->npts == *cap) {
         int nc = *cap ? 2 * *cap : 64;
@@ -226,9 +243,7 @@ static gb_status add_point(gb_bem_scene *s, int *cap, double x, double y, gb_err
     }
     s->pts[2 * s->npts] = x;
     s->pts[2 * s->npts + 1] = y;
-    double hmin = INFINITY;
-    for (int e = 0; e < s->mesh.n; e++) hmin = fmin(hmin, s->mesh.length[e]);
-    s->pt_inside[s->npts] = gb_bem_mesh_inside(&s->mesh, x, y) && gb_bem_mesh_distance(&s->mesh, x, y) > 1e-6 * hmin;
+    s->pt_inside[s->npts] = gb_bem_mesh_inside(&s->mesh, x, y) && relative_distance(&s->mesh, x, y) > (grid ? 0.5 : 1e-6);
     s->npts++;
     return GB_OK;
 }
@@ -260,7 +275,7 @@ static gb_status read_interior(const gb_yaml_doc *doc, gb_ymap *root, gb_bem_sce
         for (int j = 0; j < s->grid_ny; j++)
             for (int i = 0; i < s->grid_nx; i++)
                 if ((st = add_point(s, &cap, xr[0] + (xr[1] - xr[0]) * i / (s->grid_nx - 1),
-                                    yr[0] + (yr[1] - yr[0]) * j / (s->grid_ny - 1), err)))
+                                    yr[0] + (yr[1] - yr[0]) * j / (s->grid_ny - 1), 1, err)))
                     return st;
     }
     if ((st = gb_ymap_find(&in, "points", 0, &pts, err))) return st;
@@ -276,7 +291,7 @@ static gb_status read_interior(const gb_yaml_doc *doc, gb_ymap *root, gb_bem_sce
             for (int c = 0; c < 2; c++)
                 if ((st = gb_yaml_number(doc, fy_node_sequence_get_by_index(p, c), "interior.points", &v[c], err)))
                     return st;
-            if ((st = add_point(s, &cap, v[0], v[1], err))) return st;
+            if ((st = add_point(s, &cap, v[0], v[1], 0, err))) return st;
             if (!s->pt_inside[s->npts - 1])
                 return gb_yaml_fail(doc, p, err,
                                     "interior.points[%d]: (%g, %g) is not inside the body (or lies on its boundary)", i,
