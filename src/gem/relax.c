@@ -8,9 +8,16 @@
  * (Hadamard's bound for a positive semi-definite matrix): exactly singular only when kt = 0. */
 static const double SINGULAR_REL = 1e-10;
 
-static const gb_material *pair_material(const gb_sim *sim, const gb_pair *p)
+const gb_material *gb_sim_material(const gb_sim *sim, int j)
 {
-    return p->j >= 0 ? &sim->scene->grain_grain : &sim->scene->grain_wall;
+    if (j >= 0) return &sim->scene->grain_grain;
+    return GB_IS_PARTICLE(j) ? &sim->scene->grain_boundary : &sim->scene->grain_wall;
+}
+
+double gb_sim_tan_phi(const gb_sim *sim, int j)
+{
+    if (j >= 0) return sim->tan_phi_gg;
+    return GB_IS_PARTICLE(j) ? sim->tan_phi_gb : sim->tan_phi_gw;
 }
 
 void gb_gem_forces(gb_sim *sim)
@@ -20,6 +27,11 @@ void gb_gem_forces(gb_sim *sim)
     memset(sim->S, 0, (size_t)n * 6 * sizeof(double));
     memset(sim->nc, 0, (size_t)n * sizeof(int));
     for (int w = 0; w < GB_N_WALLS; w++) sim->wall_force[w] = sim->wall_k[w] = 0;
+    if (sim->host) {
+        /* A particle must pass to the host the force K u + f0 that its displacement asks for. */
+        memcpy(sim->bp_F, sim->host->force, (size_t)sim->host->m * sizeof(double));
+        memset(sim->bp_S, 0, 3 * (size_t)sim->bp.n * sizeof(double));
+    }
     for (int i = 0; i < n; i++) {
         /* (K 5): F = sum T^t P - B */
         sim->F[3 * i] = -sim->body[2 * i];
@@ -29,7 +41,7 @@ void gb_gem_forces(gb_sim *sim)
     for (int k = 0; k < sim->pairs.n; k++) {
         const gb_pair *p = &P[k];
         if (!(p->d > 0)) continue;
-        const gb_material *mat = pair_material(sim, p);
+        const gb_material *mat = gb_sim_material(sim, p->j);
         double c = p->nx, s = p->ny, kn = mat->kn, kt = mat->kt;
         /* (K 8): S = sum T^t S_c T with T = [[c, s, 0], [-s, c, 1]] (K 2) */
         double s00 = kn * c * c + kt * s * s, s01 = (kn - kt) * c * s, s11 = kn * s * s + kt * c * c;
@@ -50,6 +62,11 @@ void gb_gem_forces(gb_sim *sim)
             sim->nc[j]++;
             one = &sim->one[3 * j];
             one[0] = -c, one[1] = -s, one[2] = kn;
+        } else if (GB_IS_PARTICLE(p->j)) {
+            /* A boundary particle: the translational part of T' (K 25). */
+            int e = GB_PARTICLE_OF(p->j);
+            sim->bp_F[2 * e] -= fx, sim->bp_F[2 * e + 1] -= fy;
+            sim->bp_S[3 * e] += s00, sim->bp_S[3 * e + 1] += s01, sim->bp_S[3 * e + 2] += s11;
         } else {
             int w = -1 - p->j;
             sim->wall_force[w] += p->pn;
@@ -186,6 +203,13 @@ gb_status gb_gem_apply_moves(gb_sim *sim, gb_error *err)
         g->y += d[1];
         g->rot += d[2] / g->r;
     }
+    for (int e = 0; e < sim->bp.n; e++) {
+        sim->bp.x[e] += sim->bp.dx[2 * e];
+        sim->bp.y[e] += sim->bp.dx[2 * e + 1];
+        sim->host->u[2 * e] += sim->bp.dx[2 * e];
+        sim->host->u[2 * e + 1] += sim->bp.dx[2 * e + 1];
+    }
+    if (sim->host) gb_host_update_force(sim->host);
     gb_box *b = &sim->box;
     b->left += sim->wall_dx[GB_WALL_LEFT][0];
     b->right += sim->wall_dx[GB_WALL_RIGHT][0];
@@ -198,17 +222,13 @@ gb_status gb_gem_apply_moves(gb_sim *sim, gb_error *err)
         gb_status st = gb_pairs_rebuild(&sim->pairs, &sim->world, err);
         if (st) return st;
     }
-    const gb_material *gg = &sim->scene->grain_grain, *gw = &sim->scene->grain_wall;
     gb_pair *P = sim->pairs.p;
     double diss = 0, wall_after[GB_N_WALLS] = {0, 0, 0, 0};
     for (int k = 0; k < sim->pairs.n; k++) {
         gb_pair *p = &P[k];
-        if (p->j >= 0) {
-            diss += gb_pair_update(p, &sim->world, sim->dX, &sim->wall_dx[0][0], gg, sim->tan_phi_gg);
-        } else {
-            diss += gb_pair_update(p, &sim->world, sim->dX, &sim->wall_dx[0][0], gw, sim->tan_phi_gw);
-            wall_after[-1 - p->j] += p->pn;
-        }
+        diss += gb_pair_update(p, &sim->world, sim->dX, &sim->wall_dx[0][0], gb_sim_material(sim, p->j),
+                               gb_sim_tan_phi(sim, p->j));
+        if (p->j < 0 && !GB_IS_PARTICLE(p->j)) wall_after[-1 - p->j] += p->pn;
     }
     /* The walls' work in this move: mean normal force times inward displacement (sim->wall_force
      * holds the forces before the move). */
@@ -278,6 +298,10 @@ int gb_gem_iterate(gb_sim *sim, const gb_wall_control *wc, double *max_force, do
     for (int i = 0; i < sim->n; i++) {
         const double *F = &sim->F[3 * i];
         double f2 = F[0] * F[0] + F[1] * F[1] + F[2] * F[2];
+        if (f2 > max2 || f2 != f2) max2 = f2;
+    }
+    for (int k = 0; k < sim->bp.n; k++) {
+        double f2 = sim->bp_F[2 * k] * sim->bp_F[2 * k] + sim->bp_F[2 * k + 1] * sim->bp_F[2 * k + 1];
         if (f2 > max2 || f2 != f2) max2 = f2;
     }
     *max_force = sqrt(max2);

@@ -5,6 +5,7 @@
 #include "contact/pairs.h"
 #include "gembem/gem.h"
 #include "global/global.h"
+#include "hybrid/host.h"
 
 /* How the walls move during one relaxation. */
 typedef enum {
@@ -30,6 +31,8 @@ typedef struct {
     double wall_force[GB_N_WALLS];
     double work_walls_iter, dissipation, dissipation_step, relaxation;
     int half_pending;
+    double *bp_xy;       /* boundary particles' centres, 2 per particle */
+    double *host_u;      /* the host's cavity displacements */
 } gb_sim_state;
 
 struct gb_sim {
@@ -45,13 +48,16 @@ struct gb_sim {
     gb_pair_list pairs;
     gb_world world;     /* what the grains touch: themselves, the box's walls, boundary particles */
     gb_particles bp;    /* boundary particles (none without a host) */
+    gb_host *host;      /* the elastic host of a hybrid scene, or NULL */
+    double *bp_F;       /* fixing force of each boundary particle: host force K u + f0 minus contacts */
+    double *bp_S;       /* its contact stiffness: s00 s01 s11 */
     gb_global *global;  /* the global solver, when the scene asks for it */
     gb_box box;
     double wall_force[GB_N_WALLS]; /* normal force of the grains on each wall (compression +) */
     double wall_k[GB_N_WALLS];     /* wall contact stiffness: sum of kn of its contacts */
     double wall_dx[GB_N_WALLS][2]; /* wall translation of the current iteration */
     double ref_width, ref_height;  /* strain reference */
-    double tan_phi_gg, tan_phi_gw;
+    double tan_phi_gg, tan_phi_gw, tan_phi_gb;
     /* The last converged state (the start of the current step), restored when a step fails. */
     gb_sim_state saved;
     /* The state before a trial move of the global solver. */
@@ -82,6 +88,10 @@ void gb_sim_state_free(gb_sim_state *st);
  * Returns 1 when converged (every |F| <= a and the walls at their targets), 0 otherwise. */
 int gb_gem_iterate(gb_sim *sim, const gb_wall_control *wc, double *max_force, double *wall_residual,
                    gb_error *err, gb_status *st);
+
+/* The material and friction of the contact type of a pair's second side j. */
+const gb_material *gb_sim_material(const gb_sim *sim, int j);
+double gb_sim_tan_phi(const gb_sim *sim, int j);
 
 /* F, S, contacts per grain and the walls' forces and stiffnesses, from the current contacts. */
 void gb_gem_forces(gb_sim *sim);

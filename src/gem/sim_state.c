@@ -10,6 +10,8 @@ void gb_sim_state_free(gb_sim_state *st)
     free(st->g);
     free(st->p);
     free(st->x0);
+    free(st->bp_xy);
+    free(st->host_u);
     memset(st, 0, sizeof *st);
 }
 
@@ -24,6 +26,12 @@ gb_status gb_sim_state_save(const gb_sim *sim, gb_sim_state *st, gb_error *err)
         st->p = p;
         st->cap = sim->pairs.n;
     }
+    if (sim->host && !st->bp_xy &&
+        (!(st->bp_xy = malloc((size_t)sim->host->m * sizeof(double))) ||
+         !(st->host_u = malloc((size_t)sim->host->m * sizeof(double)))))
+        return gb_fail(err, GB_ENOMEM, "out of memory for a copy of the host");
+    for (int e = 0; e < sim->bp.n; e++) st->bp_xy[2 * e] = sim->bp.x[e], st->bp_xy[2 * e + 1] = sim->bp.y[e];
+    if (sim->host) memcpy(st->host_u, sim->host->u, (size_t)sim->host->m * sizeof(double));
     memcpy(st->g, sim->g, (size_t)sim->n * sizeof *st->g);
     memcpy(st->p, sim->pairs.p, (size_t)sim->pairs.n * sizeof *st->p);
     memcpy(st->x0, sim->pairs.x0, 2 * (size_t)sim->n * sizeof(double));
@@ -49,6 +57,11 @@ void gb_sim_state_restore(gb_sim *sim, const gb_sim_state *st)
         int c = sim->pairs.cap;
         sim->pairs.p = sim->pairs.tmp, sim->pairs.cap = sim->pairs.tmp_cap;
         sim->pairs.tmp = t, sim->pairs.tmp_cap = c;
+    }
+    for (int e = 0; e < sim->bp.n; e++) sim->bp.x[e] = st->bp_xy[2 * e], sim->bp.y[e] = st->bp_xy[2 * e + 1];
+    if (sim->host) {
+        memcpy(sim->host->u, st->host_u, (size_t)sim->host->m * sizeof(double));
+        gb_host_update_force(sim->host);
     }
     memcpy(sim->g, st->g, (size_t)sim->n * sizeof *st->g);
     memcpy(sim->pairs.p, st->p, (size_t)st->n_pairs * sizeof *st->p);

@@ -1,4 +1,5 @@
-/* Assembly of the granular contact stiffness and its sparse solution. */
+/* Assembly of the contact stiffness of grains, walls and boundary particles (with the host's
+ * condensed stiffness), and its sparse solution. */
 #define _POSIX_C_SOURCE 199309L
 #include "global/global.h"
 
@@ -11,33 +12,40 @@
 
 #include "gem/sim.h"
 
+/* Wall DOFs: x axis (left and right walls inward), y axis (bottom and top inward), and the
+ * isotropic strain of constant mean stress control. */
 enum { NW = 3, W_X = 0, W_Y = 1, W_MEAN = 2 };
 
 /* Smallest relative diagonal shift: it keeps a system with a free rigid mode (a cluster held by
  * nothing) positive definite; if the factorisation still meets a zero pivot it grows tenfold. */
 static const double REGULARISE = 1e-10;
 
+/* The system is a graph of nodes: grains (3 DOFs: x, y, r w), boundary particles (2 DOFs) and the
+ * wall DOFs (1 each), in that order. Column block v of the matrix holds, for each node u adjacent
+ * to v (itself included, in increasing order), the rows of u's DOFs; every column of v has the
+ * same rows. */
 struct gb_global {
     gb_linear_kind kind;
-    int n;                 /* grains */
-    long pattern_of;       /* pairs.rebuilds the pattern was built for (-1: none) */
-    /* Full symmetric CSC pattern, 3 x 3 blocks: column block j lists its neighbours and itself. */
+    int n, np;                /* grains, boundary particles */
+    int nodes, ndof;
+    long pattern_of;          /* pairs.rebuilds the pattern was built for (-1: none) */
+    int *dof0;                /* per node: its first DOF */
+    int *adj_start, *adj;     /* per node: adjacent nodes adj[adj_start[v] .. adj_start[v + 1]) */
+    int *adj_off;             /* per adjacency entry: row offset of that node within the column */
+    int *collen, *colstart;   /* per node: rows per column, first entry of its first column */
+    int adj_cap;
+    int *pos_ij, *pos_ji, pos_cap; /* per pair: entry of i in j's list, of j in i's list */
+    int *wall_in_grain;       /* per grain and wall DOF: entry of the wall in the grain's list, or -1 */
+    int *grain_in_wall;       /* per wall DOF and grain: entry of the grain in the wall's list, or -1 */
+    unsigned char *touch;     /* per grain: bit 0 pairs with the left/right wall, bit 1 bottom/top */
     int *Ap, *Ai, nnz, cap;
     double *Ax;
-    int *list_start;       /* per grain: start of its sorted neighbour list (incl. itself) */
-    int *list;             /* neighbour lists */
-    int *self_pos;         /* per grain: position of itself in its list */
-    int *pos_ij, *pos_ji;  /* per pair: position of i in j's list, of j in i's list (-1: wall) */
     double *rhs, *x;
-    unsigned char *held;   /* per DOF: held (identity row) */
-    double *S;             /* per grain: its block of K (s00 s01 s02 s11 s12 s22) */
-    double *kt;            /* per pair: tangential stiffness used in K (0 for a sliding contact) */
+    unsigned char *held;      /* per DOF: held (identity row) */
+    double *S;                /* per grain: its block of K (s00 s01 s02 s11 s12 s22) */
+    double *Sp;               /* per particle: its contact block (s00 s01 s11) */
+    double *kt;               /* per pair: tangential stiffness used in K (0 for a sliding contact) */
     int kt_cap;
-    /* Wall DOFs after the 3N grain DOFs: x axis (left and right walls inward), y axis (bottom and
-     * top inward), and the isotropic strain of constant mean stress control. */
-    unsigned char *touch;  /* per grain: bit 0 has a pair with the left/right wall, bit 1 bottom/top */
-    int *wall_list[3], wall_n[3]; /* grains coupled to each wall DOF, increasing */
-    int *wall_pos[3];      /* per grain: its position in wall_list[w], or -1 */
     cholmod_common cc;
     cholmod_sparse *A;
     cholmod_factor *L;
@@ -53,33 +61,40 @@ static double now(void)
     return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
 }
 
-gb_status gb_global_create(gb_linear_kind kind, int n_grains, gb_global **out, gb_error *err)
+static int node_dofs(const gb_global *gl, int v) { return v < gl->n ? 3 : v < gl->n + gl->np ? 2 : 1; }
+
+gb_status gb_global_create(gb_linear_kind kind, int n_grains, int n_particles, gb_global **out, gb_error *err)
 {
     gb_global *gl = calloc(1, sizeof *gl);
     if (!gl) return gb_fail(err, GB_ENOMEM, "out of memory");
     gl->kind = kind;
     gl->n = n_grains;
+    gl->np = n_particles;
+    gl->nodes = n_grains + n_particles + NW;
+    gl->ndof = 3 * n_grains + 2 * n_particles + NW;
     gl->pattern_of = -1;
-    size_t n3 = 3 * (size_t)n_grains, nd = n3 + NW;
+    size_t nd = (size_t)gl->ndof, nn = (size_t)gl->nodes, ng = (size_t)n_grains + 1;
+    gl->dof0 = malloc(nn * sizeof(int));
+    gl->adj_start = calloc(nn + 1, sizeof(int));
+    gl->collen = calloc(nn, sizeof(int));
+    gl->colstart = calloc(nn, sizeof(int));
+    gl->wall_in_grain = malloc(NW * ng * sizeof(int));
+    gl->grain_in_wall = malloc(NW * ng * sizeof(int));
+    gl->touch = calloc(ng, 1);
+    gl->Ap = calloc(nd + 1, sizeof(int));
     gl->rhs = calloc(nd, sizeof(double));
     gl->x = calloc(nd, sizeof(double));
     gl->held = calloc(nd, 1);
-    gl->touch = calloc((size_t)n_grains + 1, 1);
-    gl->S = calloc(6 * (size_t)n_grains + 1, sizeof(double));
-    for (int w = 0; w < NW; w++) {
-        gl->wall_list[w] = malloc(((size_t)n_grains + 1) * sizeof(int));
-        gl->wall_pos[w] = malloc(((size_t)n_grains + 1) * sizeof(int));
-        if (!gl->wall_list[w] || !gl->wall_pos[w]) {
-            gb_global_free(gl);
-            return gb_fail(err, GB_ENOMEM, "out of memory for the global system of %d grains", n_grains);
-        }
-    }
-    gl->list_start = calloc((size_t)n_grains + 1, sizeof(int));
-    gl->self_pos = calloc((size_t)n_grains, sizeof(int));
-    gl->Ap = calloc(nd + 1, sizeof(int));
-    if (!gl->rhs || !gl->x || !gl->held || !gl->touch || !gl->S || !gl->list_start || !gl->self_pos || !gl->Ap) {
+    gl->S = calloc(6 * ng, sizeof(double));
+    gl->Sp = calloc(3 * (size_t)n_particles + 1, sizeof(double));
+    if (!gl->dof0 || !gl->adj_start || !gl->collen || !gl->colstart || !gl->wall_in_grain || !gl->grain_in_wall ||
+        !gl->touch || !gl->Ap || !gl->rhs || !gl->x || !gl->held || !gl->S || !gl->Sp) {
         gb_global_free(gl);
         return gb_fail(err, GB_ENOMEM, "out of memory for the global system of %d grains", n_grains);
+    }
+    for (int v = 0, d = 0; v < gl->nodes; v++) {
+        gl->dof0[v] = d;
+        d += node_dofs(gl, v);
     }
     cholmod_start(&gl->cc);
     gl->cc.print = 0;
@@ -102,37 +117,14 @@ void gb_global_free(gb_global *gl)
     if (!gl) return;
     free_factors(gl);
     cholmod_finish(&gl->cc);
-    free(gl->Ap);
-    free(gl->Ai);
-    free(gl->Ax);
-    free(gl->list_start);
-    free(gl->list);
-    free(gl->self_pos);
-    free(gl->pos_ij);
-    free(gl->pos_ji);
-    free(gl->rhs);
-    free(gl->x);
-    free(gl->held);
-    free(gl->touch);
-    free(gl->S);
-    free(gl->kt);
-    for (int w = 0; w < NW; w++) free(gl->wall_list[w]), free(gl->wall_pos[w]);
+    free(gl->dof0), free(gl->adj_start), free(gl->adj), free(gl->adj_off), free(gl->collen), free(gl->colstart);
+    free(gl->pos_ij), free(gl->pos_ji), free(gl->wall_in_grain), free(gl->grain_in_wall), free(gl->touch);
+    free(gl->Ap), free(gl->Ai), free(gl->Ax), free(gl->rhs), free(gl->x), free(gl->held);
+    free(gl->S), free(gl->Sp), free(gl->kt);
     free(gl);
 }
 
 const gb_global_stats *gb_global_statistics(const gb_global *gl) { return &gl->stats; }
-
-static int find(const int *list, int n, int v)
-{
-    int lo = 0, hi = n - 1;
-    while (lo <= hi) {
-        int mid = (lo + hi) / 2;
-        if (list[mid] == v) return mid;
-        if (list[mid] < v) lo = mid + 1;
-        else hi = mid - 1;
-    }
-    return -1;
-}
 
 static int cmp_int(const void *a, const void *b)
 {
@@ -140,81 +132,91 @@ static int cmp_int(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-/* How many wall DOFs a grain with these touch bits is coupled to, and the offset of wall DOF w
- * among them (-1 if not coupled). */
-static int n_walls_of(unsigned char t) { return t ? 1 + (t == 3 ? 2 : 1) : 0; }
-
-static int wall_offset(unsigned char t, int w)
+/* Entry of node u in v's adjacency list (binary search), or -1. */
+static int entry_of(const gb_global *gl, int v, int u)
 {
-    if (!t) return -1;
-    if (w == W_MEAN) return n_walls_of(t) - 1;
-    if (w == W_X) return (t & 1) ? 0 : -1;
-    return (t & 2) ? ((t & 1) ? 1 : 0) : -1;
+    int lo = gl->adj_start[v], hi = gl->adj_start[v + 1] - 1;
+    while (lo <= hi) {
+        int mid = (lo + hi) / 2;
+        if (gl->adj[mid] == u) return mid;
+        if (gl->adj[mid] < u) lo = mid + 1;
+        else hi = mid - 1;
+    }
+    return -1;
 }
+
+static int wall_node(const gb_global *gl, int w) { return gl->n + gl->np + w; }
+
+/* Which wall DOFs a grain touching these walls is coupled to. */
+static int couples(unsigned char touch, int w) { return w == W_X ? (touch & 1) : w == W_Y ? (touch & 2) >> 1 : touch != 0; }
 
 /* The pattern of the candidate pairs: it changes only when the pair list is rebuilt. */
 static gb_status build_pattern(gb_global *gl, const gb_pair_list *P, gb_error *err)
 {
-    int n = gl->n;
-    int *deg = gl->list_start; /* counts first, then prefix sums */
-    memset(deg, 0, ((size_t)n + 1) * sizeof(int));
-    for (int i = 0; i < n; i++) deg[i + 1] = 1; /* itself */
-    for (int k = 0; k < P->n; k++)
-        if (P->p[k].j >= 0) deg[P->p[k].i + 1]++, deg[P->p[k].j + 1]++;
-    for (int i = 0; i < n; i++) deg[i + 1] += deg[i];
-    int total = deg[n];
-    int *list = realloc(gl->list, (size_t)total * sizeof(int));
-    int *pij = realloc(gl->pos_ij, (size_t)(P->n > 0 ? P->n : 1) * sizeof(int));
-    int *pji = realloc(gl->pos_ji, (size_t)(P->n > 0 ? P->n : 1) * sizeof(int));
-    if (!list || !pij || !pji) return gb_fail(err, GB_ENOMEM, "out of memory for the sparsity pattern");
-    gl->list = list, gl->pos_ij = pij, gl->pos_ji = pji;
-    int *fill = gl->self_pos; /* reused as a cursor */
-    for (int i = 0; i < n; i++) {
-        fill[i] = deg[i];
-        list[fill[i]++] = i;
-    }
-    for (int k = 0; k < P->n; k++) {
-        const gb_pair *p = &P->p[k];
-        if (p->j < 0) continue;
-        list[fill[p->i]++] = p->j;
-        list[fill[p->j]++] = p->i;
-    }
-    for (int i = 0; i < n; i++) qsort(list + deg[i], (size_t)(deg[i + 1] - deg[i]), sizeof(int), cmp_int);
-    for (int i = 0; i < n; i++) gl->self_pos[i] = find(list + deg[i], deg[i + 1] - deg[i], i);
-    for (int k = 0; k < P->n; k++) {
-        const gb_pair *p = &P->p[k];
-        pij[k] = p->j < 0 ? -1 : find(list + deg[p->j], deg[p->j + 1] - deg[p->j], p->i);
-        pji[k] = p->j < 0 ? -1 : find(list + deg[p->i], deg[p->i + 1] - deg[p->i], p->j);
-    }
-    /* The grains coupled to each wall DOF: those with a candidate pair with its walls. */
+    int n = gl->n, np = gl->np, nodes = gl->nodes;
     memset(gl->touch, 0, (size_t)n);
     for (int k = 0; k < P->n; k++) {
         const gb_pair *p = &P->p[k];
-        if (p->j >= 0) continue;
-        int w = -1 - p->j;
-        gl->touch[p->i] |= (w == GB_WALL_LEFT || w == GB_WALL_RIGHT) ? 1 : 2;
-    }
-    for (int w = 0; w < NW; w++) {
-        gl->wall_n[w] = 0;
-        int bits = w == W_X ? 1 : w == W_Y ? 2 : 3;
-        for (int i = 0; i < n; i++) {
-            gl->wall_pos[w][i] = (gl->touch[i] & bits) ? gl->wall_n[w] : -1;
-            if (gl->touch[i] & bits) gl->wall_list[w][gl->wall_n[w]++] = i;
+        if (p->j < 0 && !GB_IS_PARTICLE(p->j)) {
+            int w = -1 - p->j;
+            gl->touch[p->i] |= (w == GB_WALL_LEFT || w == GB_WALL_RIGHT) ? 1 : 2;
         }
     }
-    /* CSC, full (both triangles): column 3j + b holds the 3 rows of every grain in j's list, then
-     * the wall DOFs j is coupled to; a wall column holds its grains' rows, then all wall DOFs. */
-    int nnz = 0, n3 = 3 * n;
-    for (int j = 0; j < n; j++)
-        for (int b = 0; b < 3; b++) {
-            gl->Ap[3 * j + b] = nnz;
-            nnz += 3 * (deg[j + 1] - deg[j]) + n_walls_of(gl->touch[j]);
-        }
-    for (int w = 0; w < NW; w++) {
-        gl->Ap[n3 + w] = nnz;
-        nnz += 3 * gl->wall_n[w] + NW;
+    /* Degrees, then the lists. */
+    int *deg = gl->adj_start;
+    memset(deg, 0, ((size_t)nodes + 1) * sizeof(int));
+    for (int v = 0; v < nodes; v++) deg[v + 1] = 1;                    /* itself */
+    for (int e = 0; e < np; e++) deg[n + e + 1] += np - 1;              /* the host couples all particles */
+    for (int w = 0; w < NW; w++) deg[wall_node(gl, w) + 1] += NW - 1;   /* and all wall DOFs */
+    for (int k = 0; k < P->n; k++) {
+        const gb_pair *p = &P->p[k];
+        if (p->j >= 0) deg[p->i + 1]++, deg[p->j + 1]++;
+        else if (GB_IS_PARTICLE(p->j)) deg[p->i + 1]++, deg[n + GB_PARTICLE_OF(p->j) + 1]++;
     }
-    gl->Ap[n3 + NW] = nnz;
+    for (int i = 0; i < n; i++)
+        for (int w = 0; w < NW; w++)
+            if (couples(gl->touch[i], w)) deg[i + 1]++, deg[wall_node(gl, w) + 1]++;
+    for (int v = 0; v < nodes; v++) deg[v + 1] += deg[v];
+    int total = deg[nodes];
+    if (total > gl->adj_cap) {
+        int *a = realloc(gl->adj, (size_t)total * sizeof(int)), *o = realloc(gl->adj_off, (size_t)total * sizeof(int));
+        if (!a || !o) return gb_fail(err, GB_ENOMEM, "out of memory for the sparsity pattern");
+        gl->adj = a, gl->adj_off = o, gl->adj_cap = total;
+    }
+    int *fill = gl->collen; /* a cursor per node, for now */
+    for (int v = 0; v < nodes; v++) fill[v] = deg[v];
+    for (int v = 0; v < nodes; v++) gl->adj[fill[v]++] = v;
+    for (int e = 0; e < np; e++)
+        for (int f = 0; f < np; f++)
+            if (f != e) gl->adj[fill[n + e]++] = n + f;
+    for (int w = 0; w < NW; w++)
+        for (int u = 0; u < NW; u++)
+            if (u != w) gl->adj[fill[wall_node(gl, w)]++] = wall_node(gl, u);
+    for (int k = 0; k < P->n; k++) {
+        const gb_pair *p = &P->p[k];
+        int j = p->j >= 0 ? p->j : GB_IS_PARTICLE(p->j) ? n + GB_PARTICLE_OF(p->j) : -1;
+        if (j < 0) continue;
+        gl->adj[fill[p->i]++] = j;
+        gl->adj[fill[j]++] = p->i;
+    }
+    for (int i = 0; i < n; i++)
+        for (int w = 0; w < NW; w++)
+            if (couples(gl->touch[i], w)) {
+                gl->adj[fill[i]++] = wall_node(gl, w);
+                gl->adj[fill[wall_node(gl, w)]++] = i;
+            }
+    for (int v = 0; v < nodes; v++) qsort(gl->adj + deg[v], (size_t)(deg[v + 1] - deg[v]), sizeof(int), cmp_int);
+    /* Row offsets, column lengths and starts. */
+    int nnz = 0;
+    for (int v = 0; v < nodes; v++) {
+        int off = 0;
+        for (int q = deg[v]; q < deg[v + 1]; q++) gl->adj_off[q] = off, off += node_dofs(gl, gl->adj[q]);
+        gl->collen[v] = off;
+        gl->colstart[v] = nnz;
+        for (int b = 0; b < node_dofs(gl, v); b++) gl->Ap[gl->dof0[v] + b] = nnz + b * off;
+        nnz += node_dofs(gl, v) * off;
+    }
+    gl->Ap[gl->ndof] = nnz;
     if (nnz > gl->cap) {
         int *ai = realloc(gl->Ai, (size_t)nnz * sizeof(int));
         double *ax = realloc(gl->Ax, (size_t)nnz * sizeof(double));
@@ -222,49 +224,43 @@ static gb_status build_pattern(gb_global *gl, const gb_pair_list *P, gb_error *e
         gl->Ai = ai, gl->Ax = ax, gl->cap = nnz;
     }
     gl->nnz = nnz;
-    for (int j = 0; j < n; j++)
-        for (int b = 0; b < 3; b++) {
-            int q = gl->Ap[3 * j + b];
-            for (int e = deg[j]; e < deg[j + 1]; e++)
-                for (int a = 0; a < 3; a++) gl->Ai[q++] = 3 * list[e] + a;
-            for (int w = 0; w < NW; w++)
-                if (wall_offset(gl->touch[j], w) >= 0) gl->Ai[q++] = n3 + w;
+    for (int v = 0; v < nodes; v++)
+        for (int b = 0; b < node_dofs(gl, v); b++) {
+            int q = gl->Ap[gl->dof0[v] + b];
+            for (int e = deg[v]; e < deg[v + 1]; e++)
+                for (int a = 0; a < node_dofs(gl, gl->adj[e]); a++) gl->Ai[q++] = gl->dof0[gl->adj[e]] + a;
         }
-    for (int w = 0; w < NW; w++) {
-        int q = gl->Ap[n3 + w];
-        for (int e = 0; e < gl->wall_n[w]; e++)
-            for (int a = 0; a < 3; a++) gl->Ai[q++] = 3 * gl->wall_list[w][e] + a;
-        for (int v = 0; v < NW; v++) gl->Ai[q++] = n3 + v;
+    /* Where each pair's blocks go. */
+    if (P->n > gl->pos_cap) {
+        int *a = realloc(gl->pos_ij, (size_t)P->n * sizeof(int)), *b = realloc(gl->pos_ji, (size_t)P->n * sizeof(int));
+        if (!a || !b) return gb_fail(err, GB_ENOMEM, "out of memory for the sparsity pattern");
+        gl->pos_ij = a, gl->pos_ji = b, gl->pos_cap = P->n;
     }
+    for (int k = 0; k < P->n; k++) {
+        const gb_pair *p = &P->p[k];
+        int j = p->j >= 0 ? p->j : GB_IS_PARTICLE(p->j) ? n + GB_PARTICLE_OF(p->j) : -1;
+        gl->pos_ij[k] = j < 0 ? -1 : entry_of(gl, j, p->i);
+        gl->pos_ji[k] = j < 0 ? -1 : entry_of(gl, p->i, j);
+    }
+    for (int i = 0; i < n; i++)
+        for (int w = 0; w < NW; w++) {
+            gl->wall_in_grain[w * (n + 1) + i] = couples(gl->touch[i], w) ? entry_of(gl, i, wall_node(gl, w)) : -1;
+            gl->grain_in_wall[w * (n + 1) + i] = couples(gl->touch[i], w) ? entry_of(gl, wall_node(gl, w), i) : -1;
+        }
     return GB_OK;
 }
 
-/* Adds v to the entry (row DOF of grain i, a; column DOF of grain j, b), where pos is the position
- * of i in j's list. */
-static inline void add(gb_global *gl, int j, int pos, int a, int b, double v)
+/* Adds v to the entry (row: DOF a of the node at adjacency entry q of node col; column: DOF b of
+ * node col). */
+static inline void add(gb_global *gl, int col, int b, int q, int a, double v)
 {
-    gl->Ax[gl->Ap[3 * j + b] + 3 * pos + a] += v;
+    gl->Ax[gl->colstart[col] + b * gl->collen[col] + gl->adj_off[q] + a] += v;
 }
-
-/* Adds v to the entries (grain i, a; wall DOF w) and (wall DOF w; grain i, a). */
-static inline void add_grain_wall(gb_global *gl, int i, int a, int w, double v)
-{
-    int deg = gl->list_start[i + 1] - gl->list_start[i];
-    gl->Ax[gl->Ap[3 * gl->n + w] + 3 * gl->wall_pos[w][i] + a] += v;
-    gl->Ax[gl->Ap[3 * i + a] + 3 * deg + wall_offset(gl->touch[i], w)] += v;
-}
-
-/* Adds v to the entry (wall DOF w; wall DOF v). */
-static inline void add_wall_wall(gb_global *gl, int w, int col, double v)
-{
-    gl->Ax[gl->Ap[3 * gl->n + col] + 3 * gl->wall_n[col] + w] += v;
-}
-
 static gb_status analyse(gb_global *gl, gb_error *err)
 {
     double t0 = now();
     free_factors(gl);
-    int n3 = 3 * gl->n + NW;
+    int n3 = gl->ndof;
     if (gl->kind == GB_LINEAR_CHOLMOD) {
         gl->A = cholmod_allocate_sparse((size_t)n3, (size_t)n3, (size_t)gl->nnz, 1, 1, 1, CHOLMOD_REAL, &gl->cc);
         if (!gl->A) return gb_fail(err, GB_ENOMEM, "CHOLMOD: cannot allocate the matrix");
@@ -286,7 +282,7 @@ static gb_status analyse(gb_global *gl, gb_error *err)
  * singular (UMFPACK), so that the caller can regularise further. */
 static int factor_solve(gb_global *gl, gb_error *err, gb_status *st)
 {
-    int n3 = 3 * gl->n + NW;
+    int n3 = gl->ndof;
     *st = GB_OK;
     double t0 = now();
     if (gl->kind == GB_LINEAR_CHOLMOD) {
@@ -339,9 +335,9 @@ static double wall_lever(const gb_sim *sim, int w, int wall)
     return is_x ? 0.5 * sim->ref_width : 0.5 * sim->ref_height;
 }
 
-/* The tangent stiffness of every contact and each grain's block of K. Unlike the reference
- * iteration, which keeps kt in S (K 8), a contact at its Coulomb limit (K 13) gets no tangential
- * stiffness: it slides, and Newton's method converges when its tangent is the true one. */
+/* The tangent stiffness of every contact and the diagonal blocks of grains and particles. Unlike
+ * the reference iteration, which keeps kt in S (K 8), a contact at its Coulomb limit (K 13) gets no
+ * tangential stiffness: it slides, and Newton's method converges when its tangent is the true one. */
 static gb_status tangents(gb_global *gl, const gb_sim *sim, gb_error *err)
 {
     if (sim->pairs.n > gl->kt_cap) {
@@ -350,12 +346,13 @@ static gb_status tangents(gb_global *gl, const gb_sim *sim, gb_error *err)
         gl->kt = kt, gl->kt_cap = sim->pairs.cap;
     }
     memset(gl->S, 0, 6 * (size_t)gl->n * sizeof(double));
+    memset(gl->Sp, 0, 3 * (size_t)gl->np * sizeof(double));
     for (int k = 0; k < sim->pairs.n; k++) {
         const gb_pair *p = &sim->pairs.p[k];
         gl->kt[k] = 0;
         if (!(p->d > 0)) continue;
-        const gb_material *m = p->j >= 0 ? &sim->scene->grain_grain : &sim->scene->grain_wall;
-        double limit = p->pn * (p->j >= 0 ? sim->tan_phi_gg : sim->tan_phi_gw) + m->cohesion;
+        const gb_material *m = gb_sim_material(sim, p->j);
+        double limit = p->pn * gb_sim_tan_phi(sim, p->j) + m->cohesion;
         double kn = m->kn, kt = fabs(p->pt) >= limit * (1 - 1e-9) ? 0 : m->kt;
         gl->kt[k] = kt;
         double c = p->nx, s = p->ny;
@@ -365,84 +362,117 @@ static gb_status tangents(gb_global *gl, const gb_sim *sim, gb_error *err)
         if (p->j >= 0) {
             S = &gl->S[6 * p->j];
             S[0] += s00, S[1] += s01, S[2] += kt * s, S[3] += s11, S[4] += -kt * c, S[5] += kt;
+        } else if (GB_IS_PARTICLE(p->j)) {
+            double *Sp = &gl->Sp[3 * GB_PARTICLE_OF(p->j)];
+            Sp[0] += s00, Sp[1] += s01, Sp[2] += s11;
         }
     }
     return GB_OK;
 }
 
-/* K = sum over contacts of [T T']^t S_c [T T'] (K 1-8, 25) on grains and walls, held DOFs as
- * identity rows. A wall DOF that moves walls inward by lever x its value changes a wall contact's
- * overlap by the same amount: its coupling with grain i is kn lever (c, s, 0). */
+/* K = sum over contacts of [T T']^t S_c [T T'] (K 1-8, 25) over grains, boundary particles (the
+ * translational part of T') and walls, plus the host's condensed stiffness on the particles (its
+ * symmetric part for CHOLMOD), held DOFs as identity rows. A wall DOF that moves walls inward by
+ * lever x its value changes a wall contact's overlap by as much: its coupling with grain i is
+ * kn lever (c, s, 0). */
 static void assemble(gb_global *gl, const gb_sim *sim, double shift)
 {
     memset(gl->Ax, 0, (size_t)gl->nnz * sizeof(double));
     const unsigned char *held = gl->held;
-    int n3 = 3 * gl->n;
-    for (int i = 0; i < gl->n; i++) {
+    int n = gl->n, np = gl->np;
+    for (int i = 0; i < n; i++) {
         const double *S = &gl->S[6 * i];
         double blk[3][3] = {{S[0], S[1], S[2]}, {S[1], S[3], S[4]}, {S[2], S[4], S[5]}};
+        int q = entry_of(gl, i, i);
         for (int a = 0; a < 3; a++)
             for (int b = 0; b < 3; b++) {
-                int ha = held[3 * i + a], hb = held[3 * i + b];
-                double v = (ha || hb) ? (a == b ? 1.0 : 0.0) : blk[a][b] * (a == b ? 1 + shift : 1);
-                add(gl, i, gl->self_pos[i], a, b, v);
+                int h = held[3 * i + a] || held[3 * i + b];
+                add(gl, i, b, q, a, h ? (a == b ? 1.0 : 0.0) : blk[a][b] * (a == b ? 1 + shift : 1));
             }
+    }
+    if (np > 0) {
+        const gb_host *host = sim->host;
+        const double *K = gl->kind == GB_LINEAR_CHOLMOD ? host->Ksym : host->K.K;
+        int m = host->m;
+        for (int e = 0; e < np; e++) {
+            int first = entry_of(gl, n + e, n); /* the particles are contiguous in every particle's list */
+            for (int f = 0; f < np; f++)
+                for (int a = 0; a < 2; a++)
+                    for (int b = 0; b < 2; b++) {
+                        double v = K[(2 * f + a) + (size_t)(2 * e + b) * m];
+                        if (f == e) {
+                            const double *Sp = &gl->Sp[3 * e];
+                            double c[2][2] = {{Sp[0], Sp[1]}, {Sp[1], Sp[2]}};
+                            v += c[a][b];
+                            if (a == b) v *= 1 + shift;
+                        }
+                        add(gl, n + e, b, first + f, a, v);
+                    }
+        }
     }
     double kww[NW] = {0, 0, 0};
     for (int k = 0; k < sim->pairs.n; k++) {
         const gb_pair *p = &sim->pairs.p[k];
         if (!(p->d > 0)) continue;
         int i = p->i;
-        if (p->j < 0) {
-            double kn = sim->scene->grain_wall.kn, g[3] = {kn * p->nx, kn * p->ny, 0};
+        const gb_material *mat = gb_sim_material(sim, p->j);
+        double c = p->nx, s = p->ny, kn = mat->kn, kt = gl->kt[k];
+        if (p->j < 0 && !GB_IS_PARTICLE(p->j)) {
+            double g[2] = {kn * c, kn * s};
             for (int w = 0; w < NW; w++) {
                 double lever = wall_lever(sim, w, -1 - p->j);
-                if (lever == 0 || held[n3 + w]) continue;
+                int nw = wall_node(gl, w);
+                if (lever == 0 || held[gl->dof0[nw]]) continue;
                 kww[w] += kn * lever * lever;
-                for (int a = 0; a < 2; a++)
-                    if (!held[3 * i + a]) add_grain_wall(gl, i, a, w, g[a] * lever);
+                int qi = gl->wall_in_grain[w * (n + 1) + i], qw = gl->grain_in_wall[w * (n + 1) + i];
+                for (int a = 0; a < 2; a++) {
+                    if (held[3 * i + a]) continue;
+                    add(gl, i, a, qi, 0, g[a] * lever);  /* (wall, grain a) */
+                    add(gl, nw, 0, qw, a, g[a] * lever); /* (grain a, wall) */
+                }
             }
             continue;
         }
-        double c = p->nx, s = p->ny, kn = sim->scene->grain_grain.kn, kt = gl->kt[k];
         double r1[3] = {c, s, 0}, r2[3] = {-s, c, 1}, q1[3] = {-c, -s, 0}, q2[3] = {s, -c, 1};
-        int j = p->j;
+        int j = p->j >= 0 ? p->j : n + GB_PARTICLE_OF(p->j), nb = p->j >= 0 ? 3 : 2;
         for (int a = 0; a < 3; a++)
-            for (int b = 0; b < 3; b++) {
-                if (held[3 * i + a] || held[3 * j + b]) continue;
+            for (int b = 0; b < nb; b++) {
+                if (held[3 * i + a] || held[gl->dof0[j] + b]) continue;
                 double v = kn * r1[a] * q1[b] + kt * r2[a] * q2[b]; /* T^t S_c T' */
-                add(gl, j, gl->pos_ij[k], a, b, v);                 /* (i, a) row, (j, b) column */
-                add(gl, i, gl->pos_ji[k], b, a, v);                 /* its transpose */
+                add(gl, j, b, gl->pos_ij[k], a, v);                 /* (i, a) row, (j, b) column */
+                add(gl, i, a, gl->pos_ji[k], b, v);                 /* its transpose */
             }
     }
     /* A wall DOF whose walls touch nothing gets the stiffness of one grain-wall contact, as in the
      * reference iteration. */
     for (int w = 0; w < NW; w++) {
+        int nw = wall_node(gl, w);
         double lever = w == W_MEAN ? 0.5 * fmax(sim->ref_width, sim->ref_height) : 1;
         double kmin = sim->scene->grain_wall.kn * lever * lever;
-        add_wall_wall(gl, w, w, held[n3 + w] ? 1.0 : fmax(kww[w], kmin) * (1 + shift));
+        add(gl, nw, 0, entry_of(gl, nw, nw), 0, held[gl->dof0[nw]] ? 1.0 : fmax(kww[w], kmin) * (1 + shift));
     }
 }
 
 /* The wall DOFs' residuals (force conjugate to each DOF minus its target, METHOD.md section 5):
  * stress control, (F_left + F_right) - 2 s2 H and (F_bottom + F_top) - 2 s1 W; constant mean
  * stress, ((s1 + s2)/2 - m0) (W H_ref + H W_ref), the mean-stress error times the area change per
- * unit isotropic strain. Unused DOFs are held. */
+ * unit isotropic strain. Unused DOFs (and all of them without walls) are held. */
 static void wall_residuals(gb_global *gl, const gb_sim *sim, const gb_wall_control *wc)
 {
-    int n3 = 3 * gl->n;
+    int d = gl->dof0[wall_node(gl, 0)];
     const double *f = sim->wall_force;
     const gb_box *b = &sim->box;
     double W = b->right - b->left, H = b->top - b->bottom;
-    for (int w = 0; w < NW; w++) gl->held[n3 + w] = 1, gl->rhs[n3 + w] = 0;
+    for (int w = 0; w < NW; w++) gl->held[d + w] = 1, gl->rhs[d + w] = 0;
+    if (!sim->world.box) return;
     if (wc->mode == GB_WALLS_STRESS) {
-        gl->held[n3 + W_X] = gl->held[n3 + W_Y] = 0;
-        gl->rhs[n3 + W_X] = -(f[GB_WALL_LEFT] + f[GB_WALL_RIGHT] - 2 * wc->s2 * H);
-        gl->rhs[n3 + W_Y] = -(f[GB_WALL_BOTTOM] + f[GB_WALL_TOP] - 2 * wc->s1 * W);
+        gl->held[d + W_X] = gl->held[d + W_Y] = 0;
+        gl->rhs[d + W_X] = -(f[GB_WALL_LEFT] + f[GB_WALL_RIGHT] - 2 * wc->s2 * H);
+        gl->rhs[d + W_Y] = -(f[GB_WALL_BOTTOM] + f[GB_WALL_TOP] - 2 * wc->s1 * W);
     } else if (wc->mode == GB_WALLS_MEAN) {
         double s1 = (f[GB_WALL_BOTTOM] + f[GB_WALL_TOP]) / (2 * W), s2 = (f[GB_WALL_LEFT] + f[GB_WALL_RIGHT]) / (2 * H);
-        gl->held[n3 + W_MEAN] = 0;
-        gl->rhs[n3 + W_MEAN] = -(0.5 * (s1 + s2) - wc->mean) * (W * sim->ref_height + H * sim->ref_width);
+        gl->held[d + W_MEAN] = 0;
+        gl->rhs[d + W_MEAN] = -(0.5 * (s1 + s2) - wc->mean) * (W * sim->ref_height + H * sim->ref_width);
     }
 }
 
@@ -457,7 +487,7 @@ gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const gb_wall_control *wc,
         if ((st = analyse(gl, err))) return st;
         t0 = now();
     }
-    int n = gl->n, n3 = 3 * n;
+    int n = gl->n, np = gl->np;
     if ((st = tangents(gl, sim, err))) return st;
     for (int i = 0; i < n; i++) {
         int few = sim->nc[i] < 2;
@@ -465,6 +495,12 @@ gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const gb_wall_control *wc,
         gl->held[3 * i + 2] = (unsigned char)(few || !(gl->S[6 * i + 5] > 0)); /* no rotational stiffness */
         for (int a = 0; a < 3; a++) gl->rhs[3 * i + a] = gl->held[3 * i + a] ? 0 : -sim->F[3 * i + a];
     }
+    for (int e = 0; e < np; e++)
+        for (int a = 0; a < 2; a++) {
+            int d = gl->dof0[n + e] + a;
+            gl->held[d] = 0;
+            gl->rhs[d] = -sim->bp_F[2 * e + a];
+        }
     wall_residuals(gl, sim, wc);
     double shift = fmax(mu, REGULARISE), cap = fmax(1e3 * shift, 1e-3);
     assemble(gl, sim, shift);
@@ -482,14 +518,14 @@ gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const gb_wall_control *wc,
         assemble(gl, sim, shift);
         gl->stats.assemble += now() - t0;
     }
-    /* The moves: the solution, scaled down as a whole if some grain would move more than
+    /* The moves: the solution, scaled down as a whole if a grain or particle would move more than
      * max_move (a share of its radius), and the reference cases for the held grains. */
     const gb_solver_settings *sv = &sim->scene->solver;
     double worst = 0;
-    for (int i = 0; i < n; i++) {
-        const double *x = &gl->x[3 * i];
-        double m = sqrt(x[0] * x[0] + x[1] * x[1]) / sim->g[i].r;
-        if (m > worst) worst = m;
+    for (int i = 0; i < n; i++) worst = fmax(worst, hypot(gl->x[3 * i], gl->x[3 * i + 1]) / sim->g[i].r);
+    for (int e = 0; e < np; e++) {
+        const double *x = &gl->x[gl->dof0[n + e]];
+        worst = fmax(worst, hypot(x[0], x[1]) / sim->bp.r[e]);
     }
     double a = sv->global_alpha, scale = worst * a > sv->max_move ? sv->max_move / worst : a;
     for (int i = 0; i < n; i++) {
@@ -500,10 +536,13 @@ gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const gb_wall_control *wc,
         }
         for (int q = 0; q < 3; q++) d[q] = gl->held[3 * i + q] ? 0 : scale * gl->x[3 * i + q];
     }
+    for (int e = 0; e < np; e++)
+        for (int q = 0; q < 2; q++) sim->bp.dx[2 * e + q] = scale * gl->x[gl->dof0[n + e] + q];
     memset(sim->wall_dx, 0, sizeof sim->wall_dx);
+    int d = gl->dof0[wall_node(gl, 0)];
     for (int w = 0; w < NW; w++) {
-        if (gl->held[n3 + w]) continue;
-        double v = scale * gl->x[n3 + w];
+        if (gl->held[d + w]) continue;
+        double v = scale * gl->x[d + w];
         for (int wall = 0; wall < GB_N_WALLS; wall++) {
             double in = v * wall_lever(sim, w, wall);
             if (wall == GB_WALL_LEFT) sim->wall_dx[wall][0] += in;

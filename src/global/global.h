@@ -18,7 +18,7 @@ typedef struct {
     long analyses, factorisations, regularised;
 } gb_global_stats;
 
-gb_status gb_global_create(gb_linear_kind kind, int n_grains, gb_global **out, gb_error *err);
+gb_status gb_global_create(gb_linear_kind kind, int n_grains, int n_particles, gb_global **out, gb_error *err);
 void gb_global_free(gb_global *gl);
 
 /* Fills sim->dX for every grain. Grains with fewer than two contacts move as in the reference

@@ -5,6 +5,7 @@
 
 #include "gembem/scene.h"
 #include "scene/grains_file.h"
+#include "scene/host_read.h"
 #include "scene/yaml_read.h"
 
 
@@ -125,13 +126,13 @@ static gb_status read_stage(const gb_yaml_doc *doc, struct fy_node *item, int k,
     struct fy_node_pair *p = fy_node_mapping_iterate(item, &it);
     size_t len = 0;
     const char *kind = fy_node_get_scalar(fy_node_pair_key(p), &len);
-    static const char *const kinds[] = {"isotropic", "strain", "shear_mean_stress", "biaxial_stress"};
+    static const char *const kinds[] = {"isotropic", "strain", "shear_mean_stress", "biaxial_stress", "relax"};
     int kk = -1;
-    for (int q = 0; q < 4; q++)
+    for (int q = 0; q < 5; q++)
         if (kind && strlen(kinds[q]) == len && !strncmp(kinds[q], kind, len)) kk = q;
     if (kk < 0)
         return gb_yaml_fail(doc, fy_node_pair_key(p), err,
-                            "%s: unknown stage '%.*s'; expected isotropic, strain, shear_mean_stress or biaxial_stress",
+                            "%s: unknown stage '%.*s'; expected isotropic, strain, shear_mean_stress, biaxial_stress or relax",
                             name, (int)len, kind ? kind : "");
     gb_ymap m;
     gb_status st;
@@ -158,6 +159,9 @@ static gb_status read_stage(const gb_yaml_doc *doc, struct fy_node *item, int k,
         sg->kind = GB_STAGE_SHEAR_MEAN;
         if (!(st = gb_ymap_number(&m, "d_e1_minus_e2", GB_Y_REQUIRED, &sg->d_shear, err)))
             st = gb_ymap_number(&m, "mean_stress", GB_Y_REQUIRED | GB_Y_POSITIVE, &sg->mean_stress, err);
+        break;
+    case 4:
+        sg->kind = GB_STAGE_RELAX;
         break;
     default:
         sg->kind = GB_STAGE_BIAXIAL_STRESS;
@@ -259,8 +263,16 @@ static gb_status load(const gb_yaml_doc *doc, gb_scene *s, gb_error *err)
     gb_ymap mats;
     if ((st = gb_ymap_map(&top, "materials", GB_Y_REQUIRED, &mats, err)) ||
         (st = read_material(&mats, "grain_grain", &s->grain_grain, err)) ||
-        (st = read_material(&mats, "grain_wall", &s->grain_wall, err)) || (st = gb_ymap_close(&mats, err)))
+        (st = read_material(&mats, "grain_wall", &s->grain_wall, err)))
         return st;
+    /* Grains against boundary particles: normal springs only unless the scene says otherwise
+     * (the hybrid paper's Table 1). */
+    gb_material gbm = {s->grain_grain.kn, 0, 0, 0};
+    s->grain_boundary = gbm;
+    struct fy_node *gbn;
+    if ((st = gb_ymap_find(&mats, "grain_boundary", 0, &gbn, err))) return st;
+    if (gbn && (st = read_material(&mats, "grain_boundary", &s->grain_boundary, err))) return st;
+    if ((st = gb_ymap_close(&mats, err))) return st;
 
     struct fy_node *state, *grains;
     if ((st = gb_ymap_find(&top, "initial_state", 0, &state, err)) ||
@@ -275,13 +287,43 @@ static gb_status load(const gb_yaml_doc *doc, gb_scene *s, gb_error *err)
         if ((st = read_initial_state(&top, s, err))) return st;
     } else {
         gb_ymap g;
-        if ((st = gb_ymap_map(&top, "grains", GB_Y_REQUIRED, &g, err)) || (st = gb_grains_section_read(&g, s, err)) ||
-            (st = gb_box_read(&top, &s->box, err)) || (st = gb_grains_check(s, doc->path, err)))
+        struct fy_node *host, *box;
+        if ((st = gb_ymap_find(&top, "host", 0, &host, err)) || (st = gb_ymap_find(&top, "box", 0, &box, err)))
             return st;
+        if (host && box)
+            return gb_yaml_fail(doc, host, err, "host: a scene has either a box of walls or a host, not both");
+        if ((st = gb_ymap_map(&top, "grains", GB_Y_REQUIRED, &g, err)) || (st = gb_grains_section_read(&g, s, err)))
+            return st;
+        if (host) {
+            if ((st = gb_host_section_read(&top, &s->host, err))) return st;
+            /* The box only bounds the grains for reports; the host's cavity holds them. */
+            s->box.left = s->box.bottom = HUGE_VAL;
+            s->box.right = s->box.top = -HUGE_VAL;
+            for (int i = 0; i < s->n_grains; i++) {
+                const gb_grain *q = &s->grains[i];
+                s->box.left = fmin(s->box.left, q->x - q->r), s->box.right = fmax(s->box.right, q->x + q->r);
+                s->box.bottom = fmin(s->box.bottom, q->y - q->r), s->box.top = fmax(s->box.top, q->y + q->r);
+            }
+            if (s->n_contacts)
+                return gb_yaml_fail(doc, host, err, "host: initial contact forces are not supported with a host yet");
+        } else if ((st = gb_box_read(&top, &s->box, err)) || (st = gb_grains_check(s, doc->path, err))) {
+            return st;
+        }
     }
     if ((st = read_body_force(&top, s, err)) || (st = read_solver(&top, &s->solver, err)) ||
         (st = read_loading(&top, s, err)) || (st = read_output(&top, s, err)))
         return st;
+    if (s->host.present) {
+        struct fy_node *sv;
+        gb_ymap_find(&top, "solver", 0, &sv, err);
+        if (s->solver.method != GB_METHOD_GLOBAL)
+            return gb_yaml_fail(doc, sv, err, "solver.method: a scene with a host needs 'global' (one system for "
+                                              "grains and host)");
+        for (int k = 0; k < s->n_stages; k++)
+            if (s->stages[k].kind != GB_STAGE_RELAX)
+                return gb_yaml_fail(doc, sv, err, "loading[%d]: a scene with a host has no walls to load yet; "
+                                                  "expected 'relax'", k);
+    }
     return gb_ymap_close(&top, err);
 }
 

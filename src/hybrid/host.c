@@ -1,0 +1,93 @@
+#include "hybrid/host.h"
+
+#include <cblas.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+void gb_host_free(gb_host *h)
+{
+    if (!h) return;
+    gb_bem_stiffness_free(&h->K);
+    gb_bem_system_free(&h->sys);
+    gb_bem_mesh_free(&h->mesh);
+    free(h->Ksym);
+    free(h->u);
+    free(h->force);
+    free(h);
+}
+
+gb_status gb_host_create(const gb_host_def *def, gb_host **out, gb_error *err)
+{
+    *out = NULL;
+    gb_host *h = calloc(1, sizeof *h);
+    if (!h) return gb_fail(err, GB_ENOMEM, "out of memory");
+    gb_status st = gb_bem_mesh_load(def->mesh, &def->mesh_opts, &h->mesh, err);
+    if (st) {
+        gb_host_free(h);
+        return st;
+    }
+    h->cavity = gb_bem_mesh_group(&h->mesh, def->cavity);
+    if (h->cavity < 0) {
+        gb_host_free(h);
+        return gb_fail(err, GB_EINPUT, "%s: host.cavity: the mesh has no physical group '%s'", def->mesh, def->cavity);
+    }
+    /* Every group but the cavity needs a condition from the scene. */
+    for (int g = 0; g < h->mesh.n_groups; g++) {
+        if (g == h->cavity) continue;
+        int found = -1;
+        for (int k = 0; k < def->n_bcs; k++)
+            if (!strcmp(def->bc_group[k], h->mesh.group_name[g])) found = k;
+        if (found < 0) {
+            gb_host_free(h);
+            return gb_fail(err, GB_EINPUT, "%s: host.boundary: no condition (fixed or free) for the group '%s'",
+                           def->mesh, h->mesh.group_name[g]);
+        }
+        h->prob.bc[g] = def->bc[found];
+    }
+    for (int k = 0; k < def->n_bcs; k++)
+        if (gb_bem_mesh_group(&h->mesh, def->bc_group[k]) < 0 || !strcmp(def->bc_group[k], def->cavity)) {
+            gb_host_free(h);
+            return gb_fail(err, GB_EINPUT, "%s: host.boundary.%s: expected a group of the mesh other than the cavity",
+                           def->mesh, def->bc_group[k]);
+        }
+    h->prob.bc[h->cavity].kind = GB_BEM_BC_FREE; /* replaced by the condensation */
+    if ((st = gb_bem_assemble(&h->mesh, &def->material, &h->sys, err)) ||
+        (st = gb_bem_condense(&h->mesh, &h->sys, &h->prob, h->cavity, NULL, &h->K, err))) {
+        gb_host_free(h);
+        return st;
+    }
+    int m = h->m = h->K.m;
+    h->Ksym = malloc((size_t)m * m * sizeof(double));
+    h->u = calloc((size_t)m, sizeof(double));
+    h->force = calloc((size_t)m, sizeof(double));
+    if (!h->Ksym || !h->u || !h->force) {
+        gb_host_free(h);
+        return gb_fail(err, GB_ENOMEM, "out of memory for the host stiffness");
+    }
+    for (int c = 0; c < m; c++)
+        for (int r = 0; r < m; r++) h->Ksym[r + (size_t)c * m] = 0.5 * (h->K.K[r + (size_t)c * m] + h->K.K[c + (size_t)r * m]);
+    gb_host_update_force(h);
+    *out = h;
+    return GB_OK;
+}
+
+void gb_host_update_force(gb_host *h)
+{
+    memcpy(h->force, h->K.f0, (size_t)h->m * sizeof(double));
+    cblas_dgemv(CblasColMajor, CblasNoTrans, h->m, h->m, 1.0, h->K.K, h->m, h->u, 1, 1.0, h->force, 1);
+}
+
+int gb_host_in_cavity(const gb_host *h, double x, double y)
+{
+    if (gb_bem_mesh_inside(&h->mesh, x, y)) return 0;
+    double xmin = HUGE_VAL, xmax = -HUGE_VAL, ymin = HUGE_VAL, ymax = -HUGE_VAL;
+    for (int k = 0; k < h->m / 2; k++) {
+        int e = h->K.elem[k];
+        xmin = fmin(xmin, fmin(h->mesh.p0[2 * e], h->mesh.p1[2 * e]));
+        xmax = fmax(xmax, fmax(h->mesh.p0[2 * e], h->mesh.p1[2 * e]));
+        ymin = fmin(ymin, fmin(h->mesh.p0[2 * e + 1], h->mesh.p1[2 * e + 1]));
+        ymax = fmax(ymax, fmax(h->mesh.p0[2 * e + 1], h->mesh.p1[2 * e + 1]));
+    }
+    return x > xmin && x < xmax && y > ymin && y < ymax;
+}

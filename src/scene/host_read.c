@@ -1,0 +1,76 @@
+/* The `host:` section of a scene: an elastic body whose cavity holds the grains. */
+#include <string.h>
+
+#include "scene/host_read.h"
+
+gb_status gb_host_section_read(gb_ymap *top, gb_host_def *h, gb_error *err)
+{
+    gb_ymap m, mat, bcs, counts;
+    gb_status st;
+    char name[512];
+    memset(h, 0, sizeof *h);
+    h->present = 1;
+    h->mesh_opts = gb_bem_mesh_opts_default();
+    if ((st = gb_ymap_map(top, "host", GB_Y_REQUIRED, &m, err)) ||
+        (st = gb_ymap_string(&m, "mesh", GB_Y_REQUIRED, name, sizeof name, err)))
+        return st;
+    gb_yaml_relative_path(m.doc, name, h->mesh, sizeof h->mesh);
+    if ((st = gb_ymap_string(&m, "cavity", GB_Y_REQUIRED, h->cavity, sizeof h->cavity, err))) return st;
+
+    /* elements: {group: count, ...} */
+    if ((st = gb_ymap_map(&m, "elements", GB_Y_REQUIRED, &counts, err))) return st;
+    void *it = NULL;
+    struct fy_node_pair *p;
+    while ((p = fy_node_mapping_iterate(counts.node, &it))) {
+        size_t len = 0;
+        const char *key = fy_node_get_scalar(fy_node_pair_key(p), &len);
+        if (h->mesh_opts.n_group_sizes == GB_BEM_MAX_GROUPS || !key || len == 0 || len >= GB_BEM_NAME_MAX)
+            return gb_yaml_fail(m.doc, fy_node_pair_key(p), err, "host.elements: expected at most %d group names",
+                                GB_BEM_MAX_GROUPS);
+        gb_bem_group_size *gs = &h->mesh_opts.group_sizes[h->mesh_opts.n_group_sizes++];
+        memcpy(gs->group, key, len);
+        gs->group[len] = '\0';
+        long count = 0;
+        if ((st = gb_ymap_int(&counts, gs->group, GB_Y_REQUIRED, 3, 1000000, &count, err))) return st;
+        gs->count = (int)count;
+    }
+    if ((st = gb_ymap_close(&counts, err))) return st;
+
+    char plane[16] = "strain";
+    if ((st = gb_ymap_map(&m, "material", GB_Y_REQUIRED, &mat, err)) ||
+        (st = gb_ymap_number(&mat, "shear_modulus", GB_Y_REQUIRED | GB_Y_POSITIVE, &h->material.shear_modulus, err)) ||
+        (st = gb_ymap_number(&mat, "poisson", GB_Y_REQUIRED, &h->material.poisson, err)) ||
+        (st = gb_ymap_string(&mat, "plane", 0, plane, sizeof plane, err)))
+        return st;
+    if (!(h->material.poisson > -1 && h->material.poisson < 0.5))
+        return gb_yaml_fail(m.doc, mat.node, err, "host.material.poisson: expected a value in (-1, 0.5)");
+    if (!strcmp(plane, "stress")) h->material.plane = GB_BEM_PLANE_STRESS;
+    else if (strcmp(plane, "strain"))
+        return gb_yaml_fail(m.doc, mat.node, err, "host.material.plane: expected 'strain' or 'stress'");
+    if ((st = gb_ymap_close(&mat, err))) return st;
+
+    /* boundary: {group: fixed | free, ...} for every group but the cavity */
+    if ((st = gb_ymap_map(&m, "boundary", 0, &bcs, err))) return st;
+    it = NULL;
+    while (bcs.node && (p = fy_node_mapping_iterate(bcs.node, &it))) {
+        size_t len = 0, vlen = 0;
+        const char *key = fy_node_get_scalar(fy_node_pair_key(p), &len);
+        const char *val = fy_node_get_scalar(fy_node_pair_value(p), &vlen);
+        if (h->n_bcs == GB_HOST_MAX_BCS || !key || len == 0 || len >= GB_BEM_NAME_MAX)
+            return gb_yaml_fail(m.doc, fy_node_pair_key(p), err, "host.boundary: expected at most %d group names",
+                                GB_HOST_MAX_BCS);
+        gb_bem_bc *bc = &h->bc[h->n_bcs];
+        if (val && vlen == 5 && !strncmp(val, "fixed", 5)) bc->kind = GB_BEM_BC_FIXED;
+        else if (val && vlen == 4 && !strncmp(val, "free", 4)) bc->kind = GB_BEM_BC_FREE;
+        else
+            return gb_yaml_fail(m.doc, fy_node_pair_value(p), err, "host.boundary.%.*s: expected fixed or free",
+                                (int)len, key);
+        memcpy(h->bc_group[h->n_bcs], key, len);
+        h->bc_group[h->n_bcs][len] = '\0';
+        h->n_bcs++;
+        struct fy_node *v;
+        gb_ymap_find(&bcs, h->bc_group[h->n_bcs - 1], 0, &v, err); /* mark as read */
+    }
+    if ((st = gb_ymap_close(&bcs, err))) return st;
+    return gb_ymap_close(&m, err);
+}
