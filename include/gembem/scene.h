@@ -3,6 +3,7 @@
 #ifndef GEMBEM_SCENE_H
 #define GEMBEM_SCENE_H
 
+#include "gembem/bem.h"
 #include "gembem/status.h"
 
 /* Contact springs and strength of one contact type (K 3, 4, 13). */
@@ -33,7 +34,8 @@ typedef enum {
     GB_STAGE_ISOTROPIC = 0,      /* stress-controlled isotropic compression to `stress` */
     GB_STAGE_STRAIN = 1,         /* strain-controlled: de1, de2 per step */
     GB_STAGE_SHEAR_MEAN = 2,     /* constant mean stress shear: d(e1 - e2) per step */
-    GB_STAGE_BIAXIAL_STRESS = 3  /* stress-controlled: s1, s2 targets */
+    GB_STAGE_BIAXIAL_STRESS = 3, /* stress-controlled: s1, s2 targets */
+    GB_STAGE_RELAX = 4           /* nothing imposed: equilibrium from the current placement */
 } gb_stage_kind;
 
 typedef struct {
@@ -61,10 +63,26 @@ typedef struct {
 
 enum { GB_METHOD_REFERENCE = 0, GB_METHOD_GLOBAL = 1 };
 
+/* An elastic host with a cavity that holds the grains (the hybrid method, METHOD.md sections 9-11). */
+#define GB_HOST_MAX_BCS 16
+typedef struct {
+    int present;
+    char mesh[1024];              /* the .geo or .msh file */
+    gb_bem_mesh_opts mesh_opts;   /* element counts or sizes per physical group */
+    gb_bem_material material;
+    char cavity[GB_BEM_NAME_MAX]; /* the group whose elements carry the boundary particles */
+    int n_bcs;
+    char bc_group[GB_HOST_MAX_BCS][GB_BEM_NAME_MAX];
+    gb_bem_bc bc[GB_HOST_MAX_BCS]; /* the other groups: fixed or free */
+    int rigid;                    /* the cavity does not deform: boundary particles held (a reference) */
+} gb_host_def;
+
 typedef struct {
     char path[512];          /* the scene file */
     char length_unit[32], force_unit[32];
     gb_material grain_grain, grain_wall;
+    gb_material grain_boundary;  /* grains against boundary particles: kt = 0 unless given */
+    gb_host_def host;            /* instead of a box */
     int n_grains;
     gb_grain *grains;
     int n_contacts;

@@ -247,13 +247,14 @@ enum { MAX_TRIALS = 6 };
 
 /* The merit of a configuration: squared fixing forces of the grains that the system moves (those
  * with two contacts or more before the move: the others move by the reference cases, whatever the
- * damping) and the walls' residual. */
+ * damping), of the boundary particles, and the walls' residual. */
 static double merit(const gb_sim *sim, const unsigned char *in_system, double wall_residual)
 {
     double m = wall_residual * wall_residual;
     for (int i = 0; i < sim->n; i++)
         if (in_system[i])
             for (int k = 3 * i; k < 3 * i + 3; k++) m += sim->F[k] * sim->F[k];
+    for (int k = 0; k < 2 * sim->bp.n && !sim->scene->host.rigid; k++) m += sim->bp_F[k] * sim->bp_F[k];
     return m;
 }
 
@@ -300,7 +301,7 @@ int gb_gem_iterate(gb_sim *sim, const gb_wall_control *wc, double *max_force, do
         double f2 = F[0] * F[0] + F[1] * F[1] + F[2] * F[2];
         if (f2 > max2 || f2 != f2) max2 = f2;
     }
-    for (int k = 0; k < sim->bp.n; k++) {
+    for (int k = 0; k < sim->bp.n && !sim->scene->host.rigid; k++) {
         double f2 = sim->bp_F[2 * k] * sim->bp_F[2 * k] + sim->bp_F[2 * k + 1] * sim->bp_F[2 * k + 1];
         if (f2 > max2 || f2 != f2) max2 = f2;
     }

@@ -400,6 +400,10 @@ static void assemble(gb_global *gl, const gb_sim *sim, double shift)
                 for (int a = 0; a < 2; a++)
                     for (int b = 0; b < 2; b++) {
                         double v = K[(2 * f + a) + (size_t)(2 * e + b) * m];
+                        if (held[gl->dof0[n + e] + b] || held[gl->dof0[n + f] + a]) {
+                            add(gl, n + e, b, first + f, a, f == e && a == b ? 1.0 : 0.0);
+                            continue;
+                        }
                         if (f == e) {
                             const double *Sp = &gl->Sp[3 * e];
                             double c[2][2] = {{Sp[0], Sp[1]}, {Sp[1], Sp[2]}};
@@ -495,11 +499,12 @@ gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const gb_wall_control *wc,
         gl->held[3 * i + 2] = (unsigned char)(few || !(gl->S[6 * i + 5] > 0)); /* no rotational stiffness */
         for (int a = 0; a < 3; a++) gl->rhs[3 * i + a] = gl->held[3 * i + a] ? 0 : -sim->F[3 * i + a];
     }
+    int rigid = sim->scene->host.rigid; /* a rigid cavity: its particles are held */
     for (int e = 0; e < np; e++)
         for (int a = 0; a < 2; a++) {
             int d = gl->dof0[n + e] + a;
-            gl->held[d] = 0;
-            gl->rhs[d] = -sim->bp_F[2 * e + a];
+            gl->held[d] = (unsigned char)rigid;
+            gl->rhs[d] = rigid ? 0 : -sim->bp_F[2 * e + a];
         }
     wall_residuals(gl, sim, wc);
     double shift = fmax(mu, REGULARISE), cap = fmax(1e3 * shift, 1e-3);

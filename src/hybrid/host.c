@@ -39,9 +39,10 @@ gb_status gb_host_create(const gb_host_def *def, gb_host **out, gb_error *err)
         for (int k = 0; k < def->n_bcs; k++)
             if (!strcmp(def->bc_group[k], h->mesh.group_name[g])) found = k;
         if (found < 0) {
+            gb_fail(err, GB_EINPUT, "%s: host.boundary: no condition (fixed or free) for the group '%s'", def->mesh,
+                    h->mesh.group_name[g]);
             gb_host_free(h);
-            return gb_fail(err, GB_EINPUT, "%s: host.boundary: no condition (fixed or free) for the group '%s'",
-                           def->mesh, h->mesh.group_name[g]);
+            return GB_EINPUT;
         }
         h->prob.bc[g] = def->bc[found];
     }

@@ -8,7 +8,9 @@
 #include <sys/stat.h>
 #include <time.h>
 
+#include "gem/sim.h"
 #include "gembem/measure.h"
+#include "hybrid/host_output.h"
 #include "gembem/output.h"
 #include "io/file_util.h"
 #include "scene/grains_file.h"
@@ -182,7 +184,6 @@ static gb_status write_contacts_csv(const char *path, const gb_sim *sim, gb_erro
     gb_contact *c = malloc((size_t)(m > 0 ? m : 1) * sizeof *c);
     if (!c) return gb_fail(err, GB_ENOMEM, "out of memory");
     gb_sim_contacts(sim, c, m);
-    const gb_scene *sc = gb_sim_scene(sim);
     gb_atomic_file a;
     gb_status st = gb_atomic_open(&a, path, err);
     if (!st) {
@@ -190,17 +191,15 @@ static gb_status write_contacts_csv(const char *path, const gb_sim *sim, gb_erro
         fprintf(a.f, "i,j,nx,ny,pn,pt,energy,dissipation,xi,yi,xj,yj\n");
         const gb_grain *g = gb_sim_grains(sim);
         for (int k = 0; k < m; k++) {
-            const gb_material *mat = c[k].j >= 0 ? &sc->grain_grain : &sc->grain_wall;
+            const gb_material *mat = gb_sim_material(sim, c[k].j);
             double e = 0.5 * c[k].pn * c[k].pn / mat->kn + (mat->kt > 0 ? 0.5 * c[k].pt * c[k].pt / mat->kt : 0);
             const gb_grain *gi = &g[c[k].i];
             double xj, yj;
-            if (c[k].j >= 0) {
-                xj = g[c[k].j].x, yj = g[c[k].j].y;
-                fprintf(a.f, "%d,%d", c[k].i, c[k].j);
-            } else {
-                xj = gi->x + c[k].nx * (gi->r - c[k].overlap), yj = gi->y + c[k].ny * (gi->r - c[k].overlap);
-                fprintf(a.f, "%d,%s", c[k].i, gb_wall_name(-1 - c[k].j));
-            }
+            char side[32];
+            gb_side_name(c[k].j, side, sizeof side);
+            fprintf(a.f, "%d,%s", c[k].i, side);
+            if (c[k].j >= 0) xj = g[c[k].j].x, yj = g[c[k].j].y;
+            else xj = gi->x + c[k].nx * (gi->r - c[k].overlap), yj = gi->y + c[k].ny * (gi->r - c[k].overlap);
             fprintf(a.f, ",%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e\n", c[k].nx, c[k].ny, c[k].pn,
                     c[k].pt, e, c[k].diss, gi->x, gi->y, xj, yj);
         }
@@ -268,6 +267,7 @@ gb_status gb_run_output_close(gb_run_output *o, const gb_sim *sim, gb_status run
         st = gb_fail(err, GB_EIO, "%s/micromechanics.csv: write failed", o->dir);
     o->steps = o->micro = NULL;
     if (!st && sim) st = gb_state_write(o->dir, sim, err);
+    if (!st && sim && sim->host) st = gb_host_write_outputs(o->dir, sim, err);
     if (!st) st = write_info(o, run_status == GB_OK ? "completed" : gb_status_name(run_status), message, err);
     free(o->snap_steps);
     free(o);

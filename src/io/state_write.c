@@ -30,8 +30,9 @@ static gb_status write_contacts(const char *path, const gb_sim *sim, gb_error *e
     if (!st) {
         fprintf(a.f, "i,j,pn,pt,nx,ny,overlap\n");
         for (int k = 0; k < m; k++) {
-            if (c[k].j >= 0) fprintf(a.f, "%d,%d", c[k].i, c[k].j);
-            else fprintf(a.f, "%d,%s", c[k].i, gb_wall_name(-1 - c[k].j));
+            char side[32];
+            gb_side_name(c[k].j, side, sizeof side);
+            fprintf(a.f, "%d,%s", c[k].i, side);
             fprintf(a.f, ",%.17g,%.17g,%.17g,%.17g,%.17g\n", c[k].pn, c[k].pt, c[k].nx, c[k].ny, c[k].overlap);
         }
         st = gb_atomic_commit(&a, err);

@@ -35,8 +35,8 @@ static double step_dissipation_k28(const gb_sim *sim)
         if (ia >= na || a[ia].i != q->i || a[ia].j != q->j) continue;
         const gb_pair *p = &a[ia];
         if (!(p->d > 0) || p->pt == 0) continue;
-        const gb_material *mat = q->j >= 0 ? &sim->scene->grain_grain : &sim->scene->grain_wall;
-        if (!(mat->kt > 0)) continue;
+        const gb_material *mat = gb_sim_material(sim, q->j);
+        if (!(mat->kt > 0) || GB_IS_PARTICLE(q->j)) continue; /* particles: not in the saved state */
         const gb_grain *g0 = &sim->saved.g[q->i], *g1 = &sim->g[q->i];
         double dx = g1->x - g0->x, dy = g1->y - g0->y, rot = g1->r * (g1->rot - g0->rot);
         if (q->j >= 0) {
@@ -61,7 +61,7 @@ void gb_micro_measure(const gb_sim *sim, gb_micro *m)
         const gb_pair *p = &sim->pairs.p[k];
         if (p->diss > max_diss) max_diss = p->diss;
         if (!(p->d > 0) || !(p->pn > 0)) continue;
-        const gb_material *mat = p->j >= 0 ? &sim->scene->grain_grain : &sim->scene->grain_wall;
+        const gb_material *mat = gb_sim_material(sim, p->j);
         double e = 0.5 * p->pn * p->pn / mat->kn + (mat->kt > 0 ? 0.5 * p->pt * p->pt / mat->kt : 0); /* (K 22) */
         double times = p->j >= 0 ? 2 : 1; /* seen from both grains, or from one */
         m->n_contacts++;
@@ -100,7 +100,7 @@ void gb_micro_rose(const gb_sim *sim, int nbins, double *count, double *energy)
     for (int k = 0; k < sim->pairs.n; k++) {
         const gb_pair *p = &sim->pairs.p[k];
         if (!(p->d > 0) || !(p->pn > 0)) continue;
-        const gb_material *mat = p->j >= 0 ? &sim->scene->grain_grain : &sim->scene->grain_wall;
+        const gb_material *mat = gb_sim_material(sim, p->j);
         double e = 0.5 * p->pn * p->pn / mat->kn + (mat->kt > 0 ? 0.5 * p->pt * p->pt / mat->kt : 0);
         /* Seen from grain i the normal is n; from grain j (if a grain) it is -n. */
         for (int side = 0; side < (p->j >= 0 ? 2 : 1); side++) {

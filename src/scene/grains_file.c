@@ -17,6 +17,13 @@ int gb_wall_from_name(const char *name)
 
 const char *gb_wall_name(int wall) { return wall >= 0 && wall < GB_N_WALLS ? wall_names[wall] : "?"; }
 
+void gb_side_name(int j, char *buf, size_t n)
+{
+    if (j >= 0) snprintf(buf, n, "%d", j);
+    else if (j >= -GB_N_WALLS) snprintf(buf, n, "%s", wall_names[-1 - j]);
+    else snprintf(buf, n, "p%d", -1 - GB_N_WALLS - j); /* a boundary particle */
+}
+
 static gb_status grain_check(const gb_grain *g, gb_status (*fail)(void *, const char *), void *ctx)
 {
     if (!(g->r > 0)) return fail(ctx, "a positive radius");

@@ -16,5 +16,7 @@ gb_status gb_grains_check(const gb_scene *s, const char *where, gb_error *err);
 /* "left", "right", "bottom", "top" -> GB_WALL_xxx, or -1. */
 int gb_wall_from_name(const char *name);
 const char *gb_wall_name(int wall);
+/* The second side of a contact in files: a grain index, a wall name, or p<e> for boundary particle e. */
+void gb_side_name(int j, char *buf, size_t n);
 
 #endif

@@ -15,7 +15,9 @@ gb_status gb_host_section_read(gb_ymap *top, gb_host_def *h, gb_error *err)
         (st = gb_ymap_string(&m, "mesh", GB_Y_REQUIRED, name, sizeof name, err)))
         return st;
     gb_yaml_relative_path(m.doc, name, h->mesh, sizeof h->mesh);
-    if ((st = gb_ymap_string(&m, "cavity", GB_Y_REQUIRED, h->cavity, sizeof h->cavity, err))) return st;
+    if ((st = gb_ymap_string(&m, "cavity", GB_Y_REQUIRED, h->cavity, sizeof h->cavity, err)) ||
+        (st = gb_ymap_bool(&m, "rigid", 0, &h->rigid, err)))
+        return st;
 
     /* elements: {group: count, ...} */
     if ((st = gb_ymap_map(&m, "elements", GB_Y_REQUIRED, &counts, err))) return st;

@@ -1,0 +1,94 @@
+/* The host's files in a run directory: its cavity elements with the boundary particles' forces,
+ * its whole boundary (CSV, VTK) and its interior displacement and stress (VTK) for the final
+ * displacements of the cavity. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "bem/output.h"
+#include "gem/sim.h"
+#include "hybrid/host_output.h"
+#include "io/file_util.h"
+
+/* Cavity elements: the particle's centre at rest, its displacement, the force the host asks for
+ * (K u + f0) and the force the grains put on it. */
+static gb_status write_particles(const char *path, const gb_sim *sim, gb_error *err)
+{
+    const gb_host *h = sim->host;
+    gb_atomic_file a;
+    gb_status st = gb_atomic_open(&a, path, err);
+    if (st) return st;
+    fprintf(a.f, "element,x,y,r,nx,ny,ux,uy,host_fx,host_fy,grain_fx,grain_fy\n");
+    for (int k = 0; k < sim->bp.n; k++) {
+        int e = h->K.elem[k];
+        /* bp_F = (K u + f0) - (force of the grains on the particle) */
+        double gx = h->force[2 * k] - sim->bp_F[2 * k], gy = h->force[2 * k + 1] - sim->bp_F[2 * k + 1];
+        fprintf(a.f, "%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", e, h->mesh.mid[2 * e],
+                h->mesh.mid[2 * e + 1], sim->bp.r[k], sim->bp.nx[k], sim->bp.ny[k], h->u[2 * k], h->u[2 * k + 1],
+                h->force[2 * k], h->force[2 * k + 1], gx, gy);
+    }
+    return gb_atomic_commit(&a, err);
+}
+
+gb_status gb_host_write_outputs(const char *dir, const gb_sim *sim, gb_error *err)
+{
+    const gb_host *h = sim->host;
+    char path[1024];
+    gb_status st;
+    snprintf(path, sizeof path, "%s/host_particles.csv", dir);
+    if ((st = write_particles(path, sim, err))) return st;
+    gb_bem_solution sol;
+    memset(&sol, 0, sizeof sol);
+    if ((st = gb_bem_solve_group_displacement(&h->mesh, &h->sys, &h->prob, h->cavity, h->u, NULL, &sol, err)))
+        return st;
+    /* An interior grid over the body's bounding box: points closer to the boundary than a fifth of
+     * the mean element length are left out (constant elements are inaccurate there). */
+    double xmin = HUGE_VAL, xmax = -HUGE_VAL, ymin = HUGE_VAL, ymax = -HUGE_VAL, lmean = 0;
+    for (int e = 0; e < h->mesh.n; e++) {
+        xmin = fmin(xmin, h->mesh.mid[2 * e]), xmax = fmax(xmax, h->mesh.mid[2 * e]);
+        ymin = fmin(ymin, h->mesh.mid[2 * e + 1]), ymax = fmax(ymax, h->mesh.mid[2 * e + 1]);
+        lmean += h->mesh.length[e] / h->mesh.n;
+    }
+    enum { NG = 61 };
+    gb_bem_scene grid;
+    memset(&grid, 0, sizeof grid);
+    grid.npts = NG * NG;
+    grid.grid_nx = grid.grid_ny = NG;
+    grid.pts = malloc(2 * NG * NG * sizeof(double));
+    grid.pt_inside = calloc(NG * NG, sizeof(int));
+    double *inside_xy = malloc(2 * NG * NG * sizeof(double)), *u = calloc(2 * NG * NG, sizeof(double)),
+           *s = calloc(3 * NG * NG, sizeof(double)), *uin = malloc(2 * NG * NG * sizeof(double)),
+           *sin_ = malloc(3 * NG * NG * sizeof(double)), *bs = malloc(3 * (size_t)h->mesh.n * sizeof(double));
+    if (!grid.pts || !grid.pt_inside || !inside_xy || !u || !s || !uin || !sin_ || !bs) {
+        st = gb_fail(err, GB_ENOMEM, "out of memory for the host's field");
+        goto done;
+    }
+    int nin = 0;
+    for (int j = 0; j < NG; j++)
+        for (int i = 0; i < NG; i++) {
+            int q = j * NG + i;
+            double x = xmin + (xmax - xmin) * i / (NG - 1), y = ymin + (ymax - ymin) * j / (NG - 1);
+            grid.pts[2 * q] = x, grid.pts[2 * q + 1] = y;
+            grid.pt_inside[q] = gb_bem_mesh_inside(&h->mesh, x, y) && gb_bem_mesh_distance(&h->mesh, x, y) > 0.2 * lmean;
+            if (grid.pt_inside[q]) inside_xy[2 * nin] = x, inside_xy[2 * nin + 1] = y, nin++;
+        }
+    if ((st = gb_bem_interior(&h->mesh, &h->sys.material, &h->prob, &sol, nin, inside_xy, uin, sin_, err))) goto done;
+    for (int q = 0, k = 0; q < NG * NG; q++)
+        if (grid.pt_inside[q]) {
+            memcpy(&u[2 * q], &uin[2 * k], 2 * sizeof(double));
+            memcpy(&s[3 * q], &sin_[3 * k], 3 * sizeof(double));
+            k++;
+        }
+    snprintf(path, sizeof path, "%s/host_field.vtu", dir);
+    if ((st = gb_bem_write_interior_vtu(path, &grid, u, s, err))) goto done;
+    if ((st = gb_bem_boundary_stress(&h->mesh, &h->sys.material, &sol, bs, err))) goto done;
+    snprintf(path, sizeof path, "%s/host_boundary.csv", dir);
+    if ((st = gb_bem_write_boundary_csv(path, &h->mesh, &sol, bs, err))) goto done;
+    snprintf(path, sizeof path, "%s/host_boundary.vtp", dir);
+    st = gb_bem_write_boundary_vtp(path, &h->mesh, &sol, err);
+done:
+    free(grid.pts), free(grid.pt_inside), free(inside_xy), free(u), free(s), free(uin), free(sin_), free(bs);
+    gb_bem_solution_free(&sol);
+    return st;
+}

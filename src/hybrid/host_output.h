@@ -1,0 +1,12 @@
+/* The host's outputs in a run directory (hybrid scenes). */
+#ifndef GB_HOST_OUTPUT_H
+#define GB_HOST_OUTPUT_H
+
+#include "gembem/gem.h"
+
+/* host_particles.csv (cavity elements: displacement, host force K u + f0, grains' force),
+ * host_boundary.csv and .vtp (the whole boundary), host_field.vtu (interior displacement and
+ * stress on a grid) for the simulation's current cavity displacements. */
+gb_status gb_host_write_outputs(const char *dir, const gb_sim *sim, gb_error *err);
+
+#endif
