@@ -31,11 +31,26 @@ static gb_status write_particles(const char *path, const gb_sim *sim, gb_error *
     return gb_atomic_commit(&a, err);
 }
 
+/* What the condensation measured: the asymmetry of K that a symmetric solver neglects. */
+static gb_status write_info(const char *path, const gb_host *h, gb_error *err)
+{
+    gb_atomic_file a;
+    gb_status st = gb_atomic_open(&a, path, err);
+    if (st) return st;
+    fprintf(a.f, "# The host's condensed cavity stiffness K = L G^-1 H (H 7).\n"
+                 "elements: %d\ncavity_elements: %d\nasymmetry: %.6e   # ||K - K^t||_F / ||K||_F\n"
+                 "rcond: %.6e\nlength_scale: %.6g   # 1 unless the degenerate scale was avoided\n",
+            h->mesh.n, h->m / 2, h->K.asymmetry, h->K.rcond, h->K.scale);
+    return gb_atomic_commit(&a, err);
+}
+
 gb_status gb_host_write_outputs(const char *dir, const gb_sim *sim, gb_error *err)
 {
     const gb_host *h = sim->host;
     char path[1024];
     gb_status st;
+    snprintf(path, sizeof path, "%s/host_info.yaml", dir);
+    if ((st = write_info(path, h, err))) return st;
     snprintf(path, sizeof path, "%s/host_particles.csv", dir);
     if ((st = write_particles(path, sim, err))) return st;
     gb_bem_solution sol;
