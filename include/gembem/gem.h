@@ -50,6 +50,9 @@ const gb_grain *gb_sim_grains(const gb_sim *sim);
 gb_box gb_sim_box(const gb_sim *sim);
 /* Copies up to `cap` force-carrying contacts into out (may be NULL) and returns how many there are. */
 int gb_sim_contacts(const gb_sim *sim, gb_contact *out, int cap);
+/* A newly allocated copy of the force-carrying contacts (free() it), their count in *n; NULL on
+ * failure (err says why). */
+gb_contact *gb_sim_contacts_copy(const gb_sim *sim, int *n, gb_error *err);
 /* Total elastic energy of the contact springs, sum of (pn^2/kn + pt^2/kt)/2 (K 22). */
 double gb_sim_elastic_energy(const gb_sim *sim);
 /* The fixing force (fx, fy, m/r) of grain i (K 5). */

@@ -195,6 +195,18 @@ double gb_sim_elastic_energy(const gb_sim *sim)
     return e;
 }
 
+gb_contact *gb_sim_contacts_copy(const gb_sim *sim, int *n, gb_error *err)
+{
+    *n = gb_sim_contacts(sim, NULL, 0);
+    gb_contact *c = malloc((size_t)(*n > 0 ? *n : 1) * sizeof *c);
+    if (!c) {
+        gb_fail(err, GB_ENOMEM, "out of memory for %d contacts", *n);
+        return NULL;
+    }
+    gb_sim_contacts(sim, c, *n);
+    return c;
+}
+
 void gb_sim_fixing_force(const gb_sim *sim, int i, double F[3])
 {
     memcpy(F, &sim->F[3 * i], 3 * sizeof(double));

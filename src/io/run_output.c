@@ -180,10 +180,9 @@ static gb_status write_rose_csv(const char *path, const gb_sim *sim, gb_error *e
 /* Per-contact data of a step: direction, forces, elastic energy (K 22), the step's dissipation. */
 static gb_status write_contacts_csv(const char *path, const gb_sim *sim, gb_error *err)
 {
-    int m = gb_sim_contacts(sim, NULL, 0);
-    gb_contact *c = malloc((size_t)(m > 0 ? m : 1) * sizeof *c);
-    if (!c) return gb_fail(err, GB_ENOMEM, "out of memory");
-    gb_sim_contacts(sim, c, m);
+    int m;
+    gb_contact *c = gb_sim_contacts_copy(sim, &m, err);
+    if (!c) return err->code;
     gb_atomic_file a;
     gb_status st = gb_atomic_open(&a, path, err);
     if (!st) {

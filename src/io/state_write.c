@@ -21,10 +21,9 @@ gb_status gb_grains_csv_write(const char *path, const gb_sim *sim, gb_error *err
 
 static gb_status write_contacts(const char *path, const gb_sim *sim, gb_error *err)
 {
-    int m = gb_sim_contacts(sim, NULL, 0);
-    gb_contact *c = malloc((size_t)(m > 0 ? m : 1) * sizeof *c);
-    if (!c) return gb_fail(err, GB_ENOMEM, "out of memory");
-    gb_sim_contacts(sim, c, m);
+    int m;
+    gb_contact *c = gb_sim_contacts_copy(sim, &m, err);
+    if (!c) return err->code;
     gb_atomic_file a;
     gb_status st = gb_atomic_open(&a, path, err);
     if (!st) {
