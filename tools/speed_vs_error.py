@@ -5,7 +5,9 @@ ratio from the rigid exact solution (METHOD.md section 7) at e1 - e2 = 1..5 %, t
 solver's seconds (steps.csv, the sum over all steps, without start-up and output).
 
 usage: tools/speed_vs_error.py [BUILD_DIR]
-writes validation/SPEED_VS_ERROR.md and validation/speed_vs_error_three_discs.png
+Then the boundary element module: Lame's annulus and Kirsch's hole refined (build/speed_error_bem).
+writes validation/SPEED_VS_ERROR.md, validation/speed_vs_error_three_discs.png and
+validation/speed_vs_error_bem.png
 """
 import csv
 import datetime
@@ -55,6 +57,40 @@ def run(kn, a, alpha, solver, repeat=3):
                 if abs(g - 0.01 * k) < 1e-9:
                     err = max(err, abs(float(r["stress_ratio"]) - exact_ratio(0.01 * k)))
     return err, best, iters
+
+
+def bem_section():
+    """Lame and Kirsch: error against seconds as the elements are refined (one dense LU each)."""
+    env = dict(os.environ, OPENBLAS_NUM_THREADS="2")
+    text = subprocess.run([os.path.join(BUILD, "speed_error_bem")], cwd=ROOT, env=env, check=True,
+                          capture_output=True, text=True).stdout
+    rows = list(csv.DictReader(text.splitlines()))
+    fig, ax = plt.subplots(figsize=(7, 5))
+    for case, mark, label in (("lame", "o-", "Lame annulus, u_r on the cavity"),
+                              ("kirsch", "s-", "Kirsch, hoop stress at r = 1.5 a")):
+        pts = [(float(r["seconds"]), float(r["error"])) for r in rows if r["case"] == case]
+        ax.loglog([p[0] for p in pts], [p[1] for p in pts], mark, label=label)
+    ax.set_xlabel("seconds (mesh, assembly, dense LU solve; 2 OpenBLAS threads)")
+    ax.set_ylabel("relative error")
+    ax.set_title("Boundary elements: error against cost, 16 to 1024 elements per circle")
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(os.path.join(ROOT, "validation", "speed_vs_error_bem.png"), dpi=110)
+    out = ["## Boundary elements: Lame and Kirsch", "",
+           "Lame's annulus 1 < r < 2 (inner pressure, outer fixed, plane strain, nu = 0.3): the largest",
+           "relative error of u_r on the cavity; Kirsch (a hole of radius 1 in an infinite plane under",
+           "s_xx = 1): the hoop stress at r = 1.5 on the vertical axis from an interior point. N elements per",
+           "circle; seconds for meshing (gmsh), assembly and the dense solve, the fastest of 3 runs.", "",
+           "![error against seconds](speed_vs_error_bem.png)", "",
+           "| case | N | seconds | error |", "|---|---|---|---|"]
+    for r in rows:
+        out.append(f"| {r['case']} | {r['N']} | {float(r['seconds']):.4f} | {float(r['error']):.2e} |")
+    out += ["", "What to pick: constant elements converge at first order on the boundary (the error halves",
+            "when N doubles, while the cost grows like N^2 to N^3): for 1e-3 on boundary displacements",
+            "take about 400 elements per circle (0.1 s). Interior stresses half a radius away from the",
+            "hole converge much faster (Kirsch: 3e-5 at 128 elements) until the interior",
+            "quadrature's own tolerance, about 2e-6, takes over.", ""]
+    return out
 
 
 def main():
@@ -111,6 +147,7 @@ def main():
         "take milliseconds either way: the choice matters for large packings.",
         "",
     ]
+    out += bem_section()
     with open(os.path.join(ROOT, "validation", "SPEED_VS_ERROR.md"), "w") as f:
         f.write("\n".join(out))
     print("\n".join(out))
