@@ -5,7 +5,7 @@
 # prepared by isotropic stress control at s0/2 (at most PREP_CAP iterations), then STEPS load steps
 # to s0 = 1.5e5 dyn/cm. Prints, per size: contacts, preparation iterations, iterations per load
 # step, seconds per iteration, and nanoseconds per contact and iteration.
-#   tools/bench_gem.sh [BUILD_DIR] [N ...]        (default: build, 1000 10000 100000)
+#   [SOLVER=reference|cholmod|umfpack] tools/bench_gem.sh [BUILD_DIR] [N ...]   (default: build, 1000 10000 100000)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=$root/${1:-build}; shift || true
@@ -15,7 +15,7 @@ out=$root/runs/bench_gem
 mkdir -p "$out"
 echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); $(date -u +%Y-%m-%d)"
 echo "threads: OMP_NUM_THREADS=${OMP_NUM_THREADS:-unset} (the reference iteration is single-threaded)"
-printf "| N | contacts | preparation iterations | iterations per load step | s per iteration | ns per contact-iteration | total s |\n|---|---|---|---|---|---|---|\n"
+printf "| solver | N | contacts | preparation iterations | iterations per load step | s per iteration | ns per contact-iteration | total s |\n|---|---|---|---|---|---|---|---|\n"
 for n in $sizes; do
   d=$out/n$n; mkdir -p "$d"
   "$build/gb_packgen" --n "$n" --diameters 0.6,0.9,1.2 --seed 1 --out "$d/grains.csv" >/dev/null
@@ -33,5 +33,5 @@ loading:  # not used by bench_gem, which drives the stress itself
 YAML
   # Preparation cap: a budget of about 3e9 contact-iterations per size.
   cap=${PREP_CAP:-$((3000000000 / (2 * n)))}
-  "$build/bench_gem" "$d/scene.yaml" 1.5e5 "$cap" "$steps" | tail -n 1
+  "$build/bench_gem" "$d/scene.yaml" 1.5e5 "$cap" "$steps" "${SOLVER:-reference}" | tail -n 1
 done
