@@ -259,6 +259,7 @@ static gb_status impose_strain(gb_sim *sim, double de1, double de2, gb_error *er
     gb_gem_forces(sim); /* the walls' forces before the move, for their work */
     sim->half_pending = 0;
     memset(sim->dX, 0, (size_t)sim->n * 3 * sizeof(double));
+    if (sim->bp.n) memset(sim->bp.dx, 0, 2 * (size_t)sim->bp.n * sizeof(double));
     memset(sim->wall_dx, 0, sizeof sim->wall_dx);
     double dy = 0.5 * de1 * sim->ref_height, dx = 0.5 * de2 * sim->ref_width;
     sim->wall_dx[GB_WALL_BOTTOM][1] = dy;
