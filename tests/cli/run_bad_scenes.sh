@@ -16,6 +16,7 @@ for scene in "$dir"/bad/*.yaml; do
 done
 # The good scene runs (so that the bad ones fail for their own reason).
 "$gembem" run "$dir/good.yaml" -o "$out/good" --quiet || { echo "FAIL good.yaml did not run"; fail=$((fail + 1)); }
+"$gembem" run "$dir/good_host.yaml" -o "$out/good_host" --quiet || { echo "FAIL good_host.yaml did not run"; fail=$((fail + 1)); }
 rm -rf "$out"
 echo "$((n - fail)) of $n bad scenes refused as expected"
 [ $fail -eq 0 ]
