@@ -3,6 +3,33 @@
 
 #include "scene/host_read.h"
 
+/* Meshes the host once to check, with the scene's line and column, that its groups are the ones
+ * the scene names: the cavity, and a condition for every other group. */
+static gb_status check_groups(gb_ymap *m, struct fy_node *bc_node, const gb_host_def *h, gb_error *err)
+{
+    gb_bem_mesh mesh;
+    gb_status st = gb_bem_mesh_load(h->mesh, &h->mesh_opts, &mesh, err);
+    if (st) return st;
+    struct fy_node *v;
+    gb_ymap_find(m, "cavity", 0, &v, err);
+    if (gb_bem_mesh_group(&mesh, h->cavity) < 0)
+        st = gb_yaml_fail(m->doc, v, err, "host.cavity: the mesh %s has no physical group '%s'", h->mesh, h->cavity);
+    for (int k = 0; !st && k < h->n_bcs; k++)
+        if (gb_bem_mesh_group(&mesh, h->bc_group[k]) < 0 || !strcmp(h->bc_group[k], h->cavity))
+            st = gb_yaml_fail(m->doc, bc_node, err, "host.boundary.%s: expected a group of the mesh other than the "
+                                                    "cavity", h->bc_group[k]);
+    for (int g = 0; !st && g < mesh.n_groups; g++) {
+        if (!strcmp(mesh.group_name[g], h->cavity)) continue;
+        int found = 0;
+        for (int k = 0; k < h->n_bcs; k++) found |= !strcmp(h->bc_group[k], mesh.group_name[g]);
+        if (!found)
+            st = gb_yaml_fail(m->doc, bc_node && fy_node_mapping_item_count(bc_node) ? bc_node : m->node, err,
+                              "host.boundary: no condition (fixed or free) for the group '%s'", mesh.group_name[g]);
+    }
+    gb_bem_mesh_free(&mesh);
+    return st;
+}
+
 gb_status gb_host_section_read(gb_ymap *top, gb_host_def *h, gb_error *err)
 {
     gb_ymap m, mat, bcs, counts;
@@ -74,5 +101,6 @@ gb_status gb_host_section_read(gb_ymap *top, gb_host_def *h, gb_error *err)
         gb_ymap_find(&bcs, h->bc_group[h->n_bcs - 1], 0, &v, err); /* mark as read */
     }
     if ((st = gb_ymap_close(&bcs, err))) return st;
-    return gb_ymap_close(&m, err);
+    if ((st = gb_ymap_close(&m, err))) return st;
+    return check_groups(&m, bcs.node, h, err);
 }
