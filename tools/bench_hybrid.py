@@ -4,7 +4,7 @@ as in validation C) placed at random, slightly overlapping, in the circular cavi
 square (4 R x 4 R, outer boundary fixed, G = 95000 kgf/cm^2, nu = 0.1), cavity elements about
 0.65 cm long as in validation C, relaxed to equilibrium (a = 1e-3 kgf) with UMFPACK and CHOLMOD.
 
-usage: tools/bench_hybrid.py [BUILD_DIR] [N ...]      (default: build, 27 1000 10000)
+usage: [SOLVERS="umfpack cholmod"] tools/bench_hybrid.py [BUILD_DIR] [N ...]   (default: build, 27 1000 10000)
 prints a Markdown table (build/bench_hybrid does the timing)
 """
 import math
@@ -94,7 +94,7 @@ def main():
     print("|---|---|---|---|---|---|---|---|---|---|---|---|")
     for n in SIZES:
         path = os.path.join(ROOT, "validation", "cavity_packing", "scene.yaml") if n == 27 else scene(n)
-        for lin in ("umfpack", "cholmod"):
+        for lin in os.environ.get("SOLVERS", "umfpack cholmod").split():
             r = subprocess.run([os.path.join(BUILD, "bench_hybrid"), path, lin], capture_output=True, text=True)
             print(r.stdout.strip() or f"| {lin} | {n} | failed: {r.stderr.strip()} |", flush=True)
 

@@ -1,0 +1,76 @@
+/* Benchmark of load steps on jammed random packings (not a test).
+ *   bench_jammed SCENE.yaml STEPS reference|cholmod|umfpack
+ * The scene's box is overfilled (tools/bench_gem.sh shrinks a deposit): the grains are first
+ * relaxed with the walls fixed by the global solver (CHOLMOD), which leaves a jammed packing under
+ * some isotropic-ish stress s_r; then STEPS load steps of isotropic stress control, each adding
+ * 5 % of s_r, are run with the chosen solver. Prints one Markdown row: solver, grains, contacts,
+ * preparation iterations and seconds, s_r, iterations per load step, seconds per iteration,
+ * nanoseconds per contact and iteration. */
+#define _POSIX_C_SOURCE 199309L
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "gem/sim.h"
+
+static double now(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 4) return fprintf(stderr, "usage: %s SCENE.yaml STEPS reference|cholmod|umfpack\n", argv[0]), 2;
+    int steps = atoi(argv[2]);
+    const char *method = argv[3];
+    gb_error err = {0};
+    gb_scene sc;
+    gb_sim *sim;
+    if (gb_scene_load(argv[1], &sc, &err)) return fprintf(stderr, "%s\n", err.msg), 1;
+    sc.solver.method = GB_METHOD_GLOBAL;
+    sc.solver.linear = GB_LINEAR_CHOLMOD;
+    if (gb_sim_create(&sc, &sim, &err)) return fprintf(stderr, "%s\n", err.msg), 1;
+    gb_wall_control wc = {GB_WALLS_FIXED, 0, 0, 0};
+    long prep = 0, it = 0;
+    double mf, wr, t0 = now();
+    gb_status st = gb_gem_relax(sim, &wc, 5000, &prep, &mf, &wr, &err);
+    double t_prep = now() - t0;
+    if (st) return printf("| %s | %d | | preparation not converged in %ld iterations (%.0f s), largest fixing force %g |\n", method, sim->n, prep, t_prep, mf), 3;
+    double s1, s2;
+    gb_gem_forces(sim);
+    gb_gem_stress(sim, &s1, &s2);
+    double sr = 0.5 * (s1 + s2);
+    /* The solver of the load steps. */
+    if (!strcmp(method, "reference")) {
+        gb_global_free(sim->global);
+        sim->global = NULL;
+    } else if (!strcmp(method, "umfpack")) {
+        gb_global_free(sim->global);
+        sim->global = NULL;
+        if (gb_global_create(GB_LINEAR_UMFPACK, sim->n, 0, &sim->global, &err)) return fprintf(stderr, "%s\n", err.msg), 1;
+    }
+    double contact_its = 0, t_steps = 0;
+    int contacts = gb_sim_contacts(sim, NULL, 0), done = 0;
+    for (int k = 1; k <= steps; k++) {
+        wc.mode = GB_WALLS_STRESS;
+        wc.s1 = wc.s2 = sr * (1 + 0.05 * k);
+        long n = 0;
+        double t1 = now();
+        st = gb_gem_relax(sim, &wc, sc.solver.max_iterations, &n, &mf, &wr, &err);
+        t_steps += now() - t1;
+        it += n;
+        contacts = gb_sim_contacts(sim, NULL, 0);
+        contact_its += (double)n * contacts;
+        if (st) break;
+        done++;
+    }
+    printf("| %s | %d | %d | %ld (%.1f s) | %.3g | %s%.0f | %.3e | %.1f | %.1f |\n", method, sim->n, contacts, prep,
+           t_prep, sr, done < steps ? "not converged after " : "", done < steps ? (double)it : (double)it / steps,
+           t_steps / (it ? it : 1), 1e9 * t_steps / (contact_its ? contact_its : 1), t_steps);
+    gb_sim_free(sim);
+    gb_scene_free(&sc);
+    return 0;
+}
