@@ -33,7 +33,7 @@ gb_status gb_sim_state_save(const gb_sim *sim, gb_sim_state *st, gb_error *err)
     for (int e = 0; e < sim->bp.n; e++) st->bp_xy[2 * e] = sim->bp.x[e], st->bp_xy[2 * e + 1] = sim->bp.y[e];
     if (sim->host) memcpy(st->host_u, sim->host->u, (size_t)sim->host->m * sizeof(double));
     memcpy(st->g, sim->g, (size_t)sim->n * sizeof *st->g);
-    memcpy(st->p, sim->pairs.p, (size_t)sim->pairs.n * sizeof *st->p);
+    if (sim->pairs.n > 0) memcpy(st->p, sim->pairs.p, (size_t)sim->pairs.n * sizeof *st->p);
     memcpy(st->x0, sim->pairs.x0, 2 * (size_t)sim->n * sizeof(double));
     st->n_pairs = sim->pairs.n;
     st->box = sim->box;
@@ -64,7 +64,7 @@ void gb_sim_state_restore(gb_sim *sim, const gb_sim_state *st)
         gb_host_update_force(sim->host);
     }
     memcpy(sim->g, st->g, (size_t)sim->n * sizeof *st->g);
-    memcpy(sim->pairs.p, st->p, (size_t)st->n_pairs * sizeof *st->p);
+    if (st->n_pairs > 0) memcpy(sim->pairs.p, st->p, (size_t)st->n_pairs * sizeof *st->p);
     memcpy(sim->pairs.x0, st->x0, 2 * (size_t)sim->n * sizeof(double));
     sim->pairs.n = st->n_pairs;
     sim->box = st->box;
