@@ -1,5 +1,5 @@
 /* Benchmark of load steps on jammed random packings (not a test).
- *   bench_jammed SCENE.yaml STEPS reference|cholmod|umfpack
+ *   bench_jammed SCENE.yaml STEPS reference|cholmod|umfpack [PREP_CAP (5000)]
  * The scene's box is overfilled (tools/bench_gem.sh shrinks a deposit): the grains are first
  * relaxed with the walls fixed by the global solver (CHOLMOD), which leaves a jammed packing under
  * some isotropic-ish stress s_r; then STEPS load steps of isotropic stress control, each adding
@@ -26,6 +26,7 @@ int main(int argc, char **argv)
     if (argc < 4) return fprintf(stderr, "usage: %s SCENE.yaml STEPS reference|cholmod|umfpack\n", argv[0]), 2;
     int steps = atoi(argv[2]);
     const char *method = argv[3];
+    long prep_cap = argc > 4 ? atol(argv[4]) : 5000;
     gb_error err = {0};
     gb_scene sc;
     gb_sim *sim;
@@ -36,7 +37,7 @@ int main(int argc, char **argv)
     gb_wall_control wc = {GB_WALLS_FIXED, 0, 0, 0};
     long prep = 0, it = 0;
     double mf, wr, t0 = now();
-    gb_status st = gb_gem_relax(sim, &wc, 5000, &prep, &mf, &wr, &err);
+    gb_status st = gb_gem_relax(sim, &wc, prep_cap, &prep, &mf, &wr, &err);
     double t_prep = now() - t0;
     if (st) return printf("| %s | %d | | preparation not converged in %ld iterations (%.0f s), largest fixing force %g |\n", method, sim->n, prep, t_prep, mf), 3;
     double s1, s2;
