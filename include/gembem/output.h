@@ -19,6 +19,9 @@ gb_status gb_run_output_close(gb_run_output *o, const gb_sim *sim, gb_status run
 
 /* The state files alone: a scene can start from dir/state.yaml with `initial_state:`. */
 gb_status gb_state_write(const char *dir, const gb_sim *sim, gb_error *err);
+/* The force-carrying contacts as CSV (i, j, pn, pt, nx, ny, overlap, elastic energy (K 22), the
+ * step's dissipation, end points), readable as a scene's contacts file (it reads i, j, pt). */
+gb_status gb_contacts_csv_write(const char *path, const gb_sim *sim, gb_error *err);
 /* The grains (x, y, r, rotation) as CSV, readable as a scene's grains file. */
 gb_status gb_grains_csv_write(const char *path, const gb_sim *sim, gb_error *err);
 /* VTK XML PolyData that ParaView opens: grains as points with radius, rotation and |F|; contacts

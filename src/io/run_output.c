@@ -13,7 +13,6 @@
 #include "hybrid/host_output.h"
 #include "gembem/output.h"
 #include "io/file_util.h"
-#include "scene/grains_file.h"
 
 struct gb_run_output {
     char dir[900];
@@ -177,37 +176,6 @@ static gb_status write_rose_csv(const char *path, const gb_sim *sim, gb_error *e
     return gb_atomic_commit(&a, err);
 }
 
-/* Per-contact data of a step: direction, forces, elastic energy (K 22), the step's dissipation. */
-static gb_status write_contacts_csv(const char *path, const gb_sim *sim, gb_error *err)
-{
-    int m;
-    gb_contact *c = gb_sim_contacts_copy(sim, &m, err);
-    if (!c) return err->code;
-    gb_atomic_file a;
-    gb_status st = gb_atomic_open(&a, path, err);
-    if (!st) {
-        /* (xi, yi) - (xj, yj): grain i's centre to grain j's, or to the contact point on a wall. */
-        fprintf(a.f, "i,j,nx,ny,pn,pt,energy,dissipation,xi,yi,xj,yj\n");
-        const gb_grain *g = gb_sim_grains(sim);
-        for (int k = 0; k < m; k++) {
-            const gb_material *mat = gb_sim_material(sim, c[k].j);
-            double e = 0.5 * c[k].pn * c[k].pn / mat->kn + (mat->kt > 0 ? 0.5 * c[k].pt * c[k].pt / mat->kt : 0);
-            const gb_grain *gi = &g[c[k].i];
-            double xj, yj;
-            char side[32];
-            gb_side_name(c[k].j, side, sizeof side);
-            fprintf(a.f, "%d,%s", c[k].i, side);
-            if (c[k].j >= 0) xj = g[c[k].j].x, yj = g[c[k].j].y;
-            else xj = gi->x + c[k].nx * (gi->r - c[k].overlap), yj = gi->y + c[k].ny * (gi->r - c[k].overlap);
-            fprintf(a.f, ",%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e\n", c[k].nx, c[k].ny, c[k].pn,
-                    c[k].pt, e, c[k].diss, gi->x, gi->y, xj, yj);
-        }
-        st = gb_atomic_commit(&a, err);
-    }
-    free(c);
-    return st;
-}
-
 gb_status gb_run_output_step(gb_run_output *o, const gb_sim *sim, const gb_step_report *r, gb_error *err)
 {
     fprintf(o->steps, "%d,%d,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%ld,%.6e,%.6e,%d,%.17g,%.17g\n", r->step,
@@ -232,7 +200,7 @@ gb_status gb_run_output_step(gb_run_output *o, const gb_sim *sim, const gb_step_
         snprintf(path, sizeof path, "%s/contacts", o->dir);
         if ((st = make_dirs(path, err))) return st;
         snprintf(path, sizeof path, "%s/contacts/contacts_%06d.csv", o->dir, r->step);
-        if ((st = write_contacts_csv(path, sim, err))) return st;
+        if ((st = gb_contacts_csv_write(path, sim, err))) return st;
         snprintf(path, sizeof path, "%s/contacts/grains_%06d.csv", o->dir, r->step);
         if ((st = gb_grains_csv_write(path, sim, err))) return st;
         snprintf(path, sizeof path, "%s/contacts/rose_%06d.csv", o->dir, r->step);

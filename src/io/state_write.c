@@ -1,6 +1,7 @@
 /* The state a scene can start from (`initial_state:`): box, grains and contact forces. */
 #include <stdio.h>
 
+#include "gem/sim.h"
 #include "gembem/output.h"
 #include "io/file_util.h"
 #include "scene/grains_file.h"
@@ -19,7 +20,7 @@ gb_status gb_grains_csv_write(const char *path, const gb_sim *sim, gb_error *err
     return gb_atomic_commit(&a, err);
 }
 
-static gb_status write_contacts(const char *path, const gb_sim *sim, gb_error *err)
+gb_status gb_contacts_csv_write(const char *path, const gb_sim *sim, gb_error *err)
 {
     int m;
     gb_contact *c = gb_sim_contacts_copy(sim, &m, err);
@@ -27,12 +28,21 @@ static gb_status write_contacts(const char *path, const gb_sim *sim, gb_error *e
     gb_atomic_file a;
     gb_status st = gb_atomic_open(&a, path, err);
     if (!st) {
-        fprintf(a.f, "i,j,pn,pt,nx,ny,overlap\n");
+        /* (xi, yi) - (xj, yj): grain i's centre to grain j's, or to the contact point on a wall or a
+         * boundary particle, for drawing force chains. */
+        fprintf(a.f, "i,j,pn,pt,nx,ny,overlap,energy,dissipation,xi,yi,xj,yj\n");
+        const gb_grain *g = gb_sim_grains(sim);
         for (int k = 0; k < m; k++) {
+            const gb_material *mat = gb_sim_material(sim, c[k].j);
+            double e = 0.5 * c[k].pn * c[k].pn / mat->kn + (mat->kt > 0 ? 0.5 * c[k].pt * c[k].pt / mat->kt : 0);
+            const gb_grain *gi = &g[c[k].i];
+            double xj, yj;
+            if (c[k].j >= 0) xj = g[c[k].j].x, yj = g[c[k].j].y;
+            else xj = gi->x + c[k].nx * (gi->r - c[k].overlap), yj = gi->y + c[k].ny * (gi->r - c[k].overlap);
             char side[32];
             gb_side_name(c[k].j, side, sizeof side);
-            fprintf(a.f, "%d,%s", c[k].i, side);
-            fprintf(a.f, ",%.17g,%.17g,%.17g,%.17g,%.17g\n", c[k].pn, c[k].pt, c[k].nx, c[k].ny, c[k].overlap);
+            fprintf(a.f, "%d,%s,%.17g,%.17g,%.17g,%.17g,%.17g,%.10e,%.10e,%.17g,%.17g,%.17g,%.17g\n", c[k].i, side,
+                    c[k].pn, c[k].pt, c[k].nx, c[k].ny, c[k].overlap, e, c[k].diss, gi->x, gi->y, xj, yj);
         }
         st = gb_atomic_commit(&a, err);
     }
@@ -47,7 +57,7 @@ gb_status gb_state_write(const char *dir, const gb_sim *sim, gb_error *err)
     snprintf(path, sizeof path, "%s/state_grains.csv", dir);
     if ((st = gb_grains_csv_write(path, sim, err))) return st;
     snprintf(path, sizeof path, "%s/state_contacts.csv", dir);
-    if ((st = write_contacts(path, sim, err))) return st;
+    if ((st = gb_contacts_csv_write(path, sim, err))) return st;
     snprintf(path, sizeof path, "%s/state.yaml", dir);
     gb_atomic_file a;
     if ((st = gb_atomic_open(&a, path, err))) return st;

@@ -118,22 +118,25 @@ static gb_status read_grains_csv(const char *path, gb_scene *s, gb_error *err)
     return st;
 }
 
-/* Contacts file: columns i, j, pt (j a grain index or a wall name); pn, nx, ny, overlap may be
- * present (gembem writes them) and are not read: the normal force follows from the overlap. */
+/* Contacts file: columns i, j, pt (j a grain index or a wall name); the other columns gembem writes
+ * (pn, nx, ny, overlap, energy, dissipation, end points) may be present and are not read: the
+ * normal force follows from the overlap. */
 static gb_status read_contacts_csv(const char *path, gb_scene *s, gb_error *err)
 {
     gb_csv csv;
     gb_status st = gb_csv_open(path, &csv, err);
     if (st) return st;
     int ci = gb_csv_column(&csv, "i"), cj = gb_csv_column(&csv, "j"), cp = gb_csv_column(&csv, "pt");
-    static const char *const informative[] = {"pn", "nx", "ny", "overlap"};
+    static const char *const informative[] = {"pn", "nx", "ny", "overlap", "energy", "dissipation",
+                                              "xi", "yi", "xj", "yj"};
+    enum { N_INFORMATIVE = sizeof informative / sizeof *informative };
     if (ci < 0 || cj < 0 || cp < 0)
         st = gb_fail(err, GB_EINPUT, "%s:1: the header must name the columns i, j, pt", path);
     for (int k = 0; !st && k < csv.n_header; k++) {
         int known = k == ci || k == cj || k == cp;
-        for (int q = 0; q < 4; q++) known |= !strcmp(csv.header[k], informative[q]);
+        for (int q = 0; q < N_INFORMATIVE; q++) known |= !strcmp(csv.header[k], informative[q]);
         if (!known)
-            st = gb_fail(err, GB_EINPUT, "%s:1:%d: unknown column '%s'; expected i, j, pt (pn, nx, ny, overlap)",
+            st = gb_fail(err, GB_EINPUT, "%s:1:%d: unknown column '%s'; expected i, j, pt and those gembem writes",
                          path, csv.column[k], csv.header[k]);
     }
     int cap = 1024;
