@@ -5,7 +5,7 @@
 # 0.17 by tools/overfill.py (centres shrunk: overlaps of a few per cent), relaxed with the walls
 # fixed by the global solver (the preparation); then STEPS load steps of isotropic stress control,
 # each adding 5 % of the stress the preparation left, with each solver (build/bench_jammed).
-#   [SOLVERS="reference cholmod umfpack"] [STEPS=4] tools/bench_gem.sh [BUILD_DIR] [N ...]
+#   [SOLVERS="reference cholmod umfpack"] [STEPS=4] [PREP_CAP=30000] tools/bench_gem.sh [BUILD_DIR] [N ...]
 #   (default: build, 1000 10000 100000)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -35,6 +35,6 @@ loading:  # not used by bench_jammed, which drives the walls itself
   - isotropic: {stress: 1.5e5, steps: 1}
 YAML
   for s in ${SOLVERS:-reference cholmod umfpack}; do
-    "$build/bench_jammed" "$d/scene_jammed.yaml" "$steps" "$s"
+    "$build/bench_jammed" "$d/scene_jammed.yaml" "$steps" "$s" "${PREP_CAP:-30000}"
   done
 done
