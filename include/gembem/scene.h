@@ -35,7 +35,8 @@ typedef enum {
     GB_STAGE_STRAIN = 1,         /* strain-controlled: de1, de2 per step */
     GB_STAGE_SHEAR_MEAN = 2,     /* constant mean stress shear: d(e1 - e2) per step */
     GB_STAGE_BIAXIAL_STRESS = 3, /* stress-controlled: s1, s2 targets */
-    GB_STAGE_RELAX = 4           /* nothing imposed: equilibrium from the current placement */
+    GB_STAGE_RELAX = 4,          /* nothing imposed: equilibrium from the current placement */
+    GB_STAGE_HOST_DISPLACEMENT = 5 /* the host's groups displaced by given increments per step */
 } gb_stage_kind;
 
 typedef struct {
@@ -47,6 +48,10 @@ typedef struct {
     double d_shear;      /* GB_STAGE_SHEAR_MEAN: d(e1 - e2) per step */
     double mean_stress;  /* GB_STAGE_SHEAR_MEAN: the mean stress held */
     int reset_strain;    /* strains are measured from the box at the start of this stage */
+    /* GB_STAGE_HOST_DISPLACEMENT: per step, group host_group[k] moves by host_increment[k] */
+    int n_host_groups;
+    char host_group[4][GB_BEM_NAME_MAX];
+    double host_increment[4][2];
 } gb_stage;
 
 /* Correction factors of the reference iteration (K 9-12) and its convergence test (K 14). */

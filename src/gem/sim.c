@@ -296,6 +296,7 @@ static const char *stage_name(gb_stage_kind k)
     case GB_STAGE_STRAIN: return "strain";
     case GB_STAGE_SHEAR_MEAN: return "shear_mean_stress";
     case GB_STAGE_RELAX: return "relax";
+    case GB_STAGE_HOST_DISPLACEMENT: return "host_displacement";
     default: return "biaxial_stress";
     }
 }
@@ -322,6 +323,13 @@ static gb_status load_step(gb_sim *sim, const gb_stage *sg, int k, const double 
         wc.s2 = start[1] + (sg->s2 - start[1]) * f;
         return gb_gem_relax(sim, &wc, cap, iters, max_force, residual, err);
     case GB_STAGE_RELAX:
+        return gb_gem_relax(sim, &wc, cap, iters, max_force, residual, err);
+    case GB_STAGE_HOST_DISPLACEMENT:
+        /* The host's boundary moves (grains held), then the grains and the cavity relax. */
+        for (int q = 0; q < sg->n_host_groups; q++)
+            if ((st = gb_host_move_group(sim->host, sg->host_group[q], sg->host_increment[q][0],
+                                         sg->host_increment[q][1], err)))
+                return st;
         return gb_gem_relax(sim, &wc, cap, iters, max_force, residual, err);
     case GB_STAGE_STRAIN:
         if ((st = impose_strain(sim, sg->de1, sg->de2, err))) return st;

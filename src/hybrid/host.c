@@ -92,3 +92,40 @@ int gb_host_in_cavity(const gb_host *h, double x, double y)
     }
     return x > xmin && x < xmax && y > ymin && y < ymax;
 }
+
+gb_status gb_host_move_group(gb_host *h, const char *group, double dx, double dy, gb_error *err)
+{
+    int g = gb_bem_mesh_group(&h->mesh, group);
+    if (g < 0 || h->prob.bc[g].kind != GB_BEM_BC_DISPLACEMENT)
+        return gb_fail(err, GB_EINPUT, "host: '%s' is not a group with a displacement condition", group);
+    h->prob.bc[g].value[0] += dx;
+    h->prob.bc[g].value[1] += dy;
+    gb_bem_stiffness k;
+    memset(&k, 0, sizeof k);
+    gb_status st = gb_bem_condense(&h->mesh, &h->sys, &h->prob, h->cavity, NULL, &k, err);
+    if (st) return st;
+    memcpy(h->K.f0, k.f0, (size_t)h->m * sizeof(double)); /* K itself does not depend on the loads */
+    gb_bem_stiffness_free(&k);
+    gb_host_update_force(h);
+    return GB_OK;
+}
+
+gb_status gb_host_group_force(const gb_host *h, const char *group, double force[2], double disp[2], gb_error *err)
+{
+    int g = gb_bem_mesh_group(&h->mesh, group);
+    if (g < 0) return gb_fail(err, GB_EINPUT, "host: no group '%s'", group);
+    gb_bem_solution sol;
+    memset(&sol, 0, sizeof sol);
+    gb_status st = gb_bem_solve_group_displacement(&h->mesh, &h->sys, &h->prob, h->cavity, h->u, NULL, &sol, err);
+    if (st) return st;
+    force[0] = force[1] = 0;
+    for (int e = 0; e < h->mesh.n; e++)
+        if (h->mesh.group[e] == g) {
+            force[0] += sol.t[2 * e] * h->mesh.length[e];
+            force[1] += sol.t[2 * e + 1] * h->mesh.length[e];
+        }
+    disp[0] = h->prob.bc[g].value[0];
+    disp[1] = h->prob.bc[g].value[1];
+    gb_bem_solution_free(&sol);
+    return GB_OK;
+}

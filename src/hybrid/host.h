@@ -25,6 +25,12 @@ gb_status gb_host_create(const gb_host_def *def, gb_host **out, gb_error *err);
 void gb_host_free(gb_host *h);
 /* force = K u + f0 */
 void gb_host_update_force(gb_host *h);
+/* Moves a group with a displacement condition by (dx, dy) more and condenses again: K stays, f0
+ * follows the new boundary values. */
+gb_status gb_host_move_group(gb_host *h, const char *group, double dx, double dy, gb_error *err);
+/* The force on a group (sum of traction x length over its elements) and its prescribed
+ * displacement, for the current cavity displacements. */
+gb_status gb_host_group_force(const gb_host *h, const char *group, double force[2], double disp[2], gb_error *err);
 /* 1 if (x, y) lies in the cavity: not in the body, and within the cavity's bounding box. */
 int gb_host_in_cavity(const gb_host *h, double x, double y);
 

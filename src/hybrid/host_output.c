@@ -107,3 +107,16 @@ done:
     gb_bem_solution_free(&sol);
     return st;
 }
+
+gb_status gb_host_write_step(FILE *f, int step, const gb_sim *sim, gb_error *err)
+{
+    const gb_host_def *def = &sim->scene->host;
+    for (int k = 0; k < def->n_bcs; k++) {
+        if (def->bc[k].kind != GB_BEM_BC_DISPLACEMENT) continue;
+        double force[2], disp[2];
+        gb_status st = gb_host_group_force(sim->host, def->bc_group[k], force, disp, err);
+        if (st) return st;
+        fprintf(f, "%d,%s,%.17g,%.17g,%.17g,%.17g\n", step, def->bc_group[k], disp[0], disp[1], force[0], force[1]);
+    }
+    return fflush(f) == 0 ? GB_OK : gb_fail(err, GB_EIO, "host_steps.csv: write failed");
+}

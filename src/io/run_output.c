@@ -19,6 +19,7 @@ struct gb_run_output {
     const gb_scene *scene;
     FILE *steps;
     FILE *micro;  /* micromechanics.csv */
+    FILE *host;   /* host_steps.csv (hybrid scenes) */
     char command[1024];
     char started[64];
     int *snap_steps, n_snaps; /* steps that were written, for the .pvd collection */
@@ -135,6 +136,16 @@ gb_status gb_run_output_open(const char *dir, const gb_scene *scene, int overwri
                       "dissipation,dissipation_step,dissipation_step_k28,balance,P_max,work_walls_iter,relaxation,"
                       "balance_iter\n");
     fflush(o->micro);
+    if (scene->host.present) {
+        snprintf(path, sizeof path, "%s/host_steps.csv", dir);
+        if (!(o->host = fopen(path, "w"))) {
+            fclose(o->steps), fclose(o->micro);
+            free(o);
+            return gb_fail(err, GB_EIO, "%s: %s", path, strerror(errno));
+        }
+        /* The load-displacement curve: the force the body's moved groups carry. */
+        fprintf(o->host, "step,group,ux,uy,fx,fy\n");
+    }
     *out = o;
     return GB_OK;
 }
@@ -196,6 +207,7 @@ gb_status gb_run_output_step(gb_run_output *o, const gb_sim *sim, const gb_step_
     gb_status st;
     const gb_scene *sc = o->scene;
     char path[1024];
+    if (o->host && (st = gb_host_write_step(o->host, r->step, sim, err))) return st;
     if ((sc->contacts_every > 0 && r->step % sc->contacts_every == 0) || snapshot_due(sc, r->step)) {
         snprintf(path, sizeof path, "%s/contacts", o->dir);
         if ((st = make_dirs(path, err))) return st;
@@ -232,7 +244,8 @@ gb_status gb_run_output_close(gb_run_output *o, const gb_sim *sim, gb_status run
     if (o->steps && fclose(o->steps) != 0) st = gb_fail(err, GB_EIO, "%s/steps.csv: write failed", o->dir);
     if (o->micro && fclose(o->micro) != 0 && !st)
         st = gb_fail(err, GB_EIO, "%s/micromechanics.csv: write failed", o->dir);
-    o->steps = o->micro = NULL;
+    if (o->host && fclose(o->host) != 0 && !st) st = gb_fail(err, GB_EIO, "%s/host_steps.csv: write failed", o->dir);
+    o->steps = o->micro = o->host = NULL;
     if (!st && sim) st = gb_state_write(o->dir, sim, err);
     if (!st && sim && sim->host) st = gb_host_write_outputs(o->dir, sim, err);
     if (!st) st = write_info(o, run_status == GB_OK ? "completed" : gb_status_name(run_status), message, err);

@@ -24,7 +24,7 @@ static gb_status check_groups(gb_ymap *m, struct fy_node *bc_node, const gb_host
         for (int k = 0; k < h->n_bcs; k++) found |= !strcmp(h->bc_group[k], mesh.group_name[g]);
         if (!found)
             st = gb_yaml_fail(m->doc, bc_node && fy_node_mapping_item_count(bc_node) ? bc_node : m->node, err,
-                              "host.boundary: no condition (fixed or free) for the group '%s'", mesh.group_name[g]);
+                              "host.boundary: no condition (fixed, free or displacement) for the group '%s'", mesh.group_name[g]);
     }
     gb_bem_mesh_free(&mesh);
     return st;
@@ -91,9 +91,11 @@ gb_status gb_host_section_read(gb_ymap *top, gb_host_def *h, gb_error *err)
         gb_bem_bc *bc = &h->bc[h->n_bcs];
         if (val && vlen == 5 && !strncmp(val, "fixed", 5)) bc->kind = GB_BEM_BC_FIXED;
         else if (val && vlen == 4 && !strncmp(val, "free", 4)) bc->kind = GB_BEM_BC_FREE;
+        else if (val && vlen == 12 && !strncmp(val, "displacement", 12)) bc->kind = GB_BEM_BC_DISPLACEMENT;
         else
-            return gb_yaml_fail(m.doc, fy_node_pair_value(p), err, "host.boundary.%.*s: expected fixed or free",
-                                (int)len, key);
+            return gb_yaml_fail(m.doc, fy_node_pair_value(p), err,
+                                "host.boundary.%.*s: expected fixed, free or displacement (moved by host_displacement "
+                                "stages, from zero)", (int)len, key);
         memcpy(h->bc_group[h->n_bcs], key, len);
         h->bc_group[h->n_bcs][len] = '\0';
         h->n_bcs++;

@@ -115,7 +115,8 @@ static gb_status read_solver(gb_ymap *top, gb_solver_settings *sv, gb_error *err
     return gb_ymap_close(&m, err);
 }
 
-static gb_status read_stage(const gb_yaml_doc *doc, struct fy_node *item, int k, gb_stage *sg, gb_error *err)
+static gb_status read_stage(const gb_yaml_doc *doc, struct fy_node *item, int k, const gb_host_def *host, gb_stage *sg,
+                            gb_error *err)
 {
     char name[64];
     snprintf(name, sizeof name, "loading[%d]", k);
@@ -126,13 +127,15 @@ static gb_status read_stage(const gb_yaml_doc *doc, struct fy_node *item, int k,
     struct fy_node_pair *p = fy_node_mapping_iterate(item, &it);
     size_t len = 0;
     const char *kind = fy_node_get_scalar(fy_node_pair_key(p), &len);
-    static const char *const kinds[] = {"isotropic", "strain", "shear_mean_stress", "biaxial_stress", "relax"};
+    static const char *const kinds[] = {"isotropic", "strain", "shear_mean_stress", "biaxial_stress", "relax",
+                                        "host_displacement"};
     int kk = -1;
-    for (int q = 0; q < 5; q++)
+    for (int q = 0; q < 6; q++)
         if (kind && strlen(kinds[q]) == len && !strncmp(kinds[q], kind, len)) kk = q;
     if (kk < 0)
         return gb_yaml_fail(doc, fy_node_pair_key(p), err,
-                            "%s: unknown stage '%.*s'; expected isotropic, strain, shear_mean_stress, biaxial_stress or relax",
+                            "%s: unknown stage '%.*s'; expected isotropic, strain, shear_mean_stress, biaxial_stress, relax "
+                            "or host_displacement",
                             name, (int)len, kind ? kind : "");
     gb_ymap m;
     gb_status st;
@@ -163,6 +166,32 @@ static gb_status read_stage(const gb_yaml_doc *doc, struct fy_node *item, int k,
     case 4:
         sg->kind = GB_STAGE_RELAX;
         break;
+    case 5: {
+        /* increments: {group: [dx, dy], ...}: groups the host moves by displacement */
+        sg->kind = GB_STAGE_HOST_DISPLACEMENT;
+        gb_ymap inc;
+        if ((st = gb_ymap_map(&m, "increments", GB_Y_REQUIRED, &inc, err))) return st;
+        void *it = NULL;
+        struct fy_node_pair *pr;
+        while (!st && (pr = fy_node_mapping_iterate(inc.node, &it))) {
+            size_t gl = 0;
+            const char *gname = fy_node_get_scalar(fy_node_pair_key(pr), &gl);
+            int ok = -1;
+            for (int q = 0; gname && q < host->n_bcs; q++)
+                if (strlen(host->bc_group[q]) == gl && !strncmp(host->bc_group[q], gname, gl) &&
+                    host->bc[q].kind == GB_BEM_BC_DISPLACEMENT)
+                    ok = q;
+            if (ok < 0 || sg->n_host_groups == 4)
+                return gb_yaml_fail(doc, fy_node_pair_key(pr), err, "%s.increments: expected at most 4 groups of the "
+                                    "host with 'displacement' in host.boundary, found '%.*s'", sub, (int)gl,
+                                    gname ? gname : "");
+            int q = sg->n_host_groups++;
+            snprintf(sg->host_group[q], GB_BEM_NAME_MAX, "%s", host->bc_group[ok]);
+            st = gb_ymap_vector(&inc, sg->host_group[q], GB_Y_REQUIRED, 2, sg->host_increment[q], err);
+        }
+        if (!st) st = gb_ymap_close(&inc, err);
+        break;
+    }
     default:
         sg->kind = GB_STAGE_BIAXIAL_STRESS;
         if (!(st = gb_ymap_number(&m, "s1", GB_Y_REQUIRED | GB_Y_POSITIVE, &sg->s1, err)))
@@ -170,6 +199,8 @@ static gb_status read_stage(const gb_yaml_doc *doc, struct fy_node *item, int k,
         break;
     }
     if (st) return st;
+    if (sg->kind == GB_STAGE_HOST_DISPLACEMENT && !host->present)
+        return gb_yaml_fail(doc, m.node, err, "%s: expected a scene with a host", sub);
     /* A strain increment of a whole side or more per step would turn the box inside out. */
     double worst = fmax(fabs(sg->de1), fmax(fabs(sg->de2), fabs(sg->d_shear)));
     if (!(worst < 0.5))
@@ -187,7 +218,8 @@ static gb_status read_loading(gb_ymap *top, gb_scene *s, gb_error *err)
     int n = fy_node_sequence_item_count(list);
     if (!(s->stages = calloc((size_t)n, sizeof *s->stages))) return gb_fail(err, GB_ENOMEM, "out of memory");
     for (int k = 0; k < n; k++) {
-        if ((st = read_stage(top->doc, fy_node_sequence_get_by_index(list, k), k, &s->stages[k], err))) return st;
+        if ((st = read_stage(top->doc, fy_node_sequence_get_by_index(list, k), k, &s->host, &s->stages[k], err)))
+            return st;
         s->n_stages++;
     }
     return GB_OK;
@@ -320,9 +352,9 @@ static gb_status load(const gb_yaml_doc *doc, gb_scene *s, gb_error *err)
             return gb_yaml_fail(doc, sv, err, "solver.method: a scene with a host needs 'global' (one system for "
                                               "grains and host)");
         for (int k = 0; k < s->n_stages; k++)
-            if (s->stages[k].kind != GB_STAGE_RELAX)
-                return gb_yaml_fail(doc, sv, err, "loading[%d]: a scene with a host has no walls to load yet; "
-                                                  "expected 'relax'", k);
+            if (s->stages[k].kind != GB_STAGE_RELAX && s->stages[k].kind != GB_STAGE_HOST_DISPLACEMENT)
+                return gb_yaml_fail(doc, sv, err, "loading[%d]: a scene with a host has no walls; expected 'relax' "
+                                                  "or 'host_displacement'", k);
     }
     return gb_ymap_close(&top, err);
 }
