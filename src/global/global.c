@@ -484,12 +484,10 @@ gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const gb_wall_control *wc,
 {
     gb_status st;
     double t0 = now();
-    if (gl->pattern_of != sim->pairs.rebuilds) {
+    int new_pattern = gl->pattern_of != sim->pairs.rebuilds;
+    if (new_pattern) {
         if ((st = build_pattern(gl, &sim->pairs, err))) return st;
         gl->pattern_of = sim->pairs.rebuilds;
-        gl->stats.assemble += now() - t0;
-        if ((st = analyse(gl, err))) return st;
-        t0 = now();
     }
     int n = gl->n, np = gl->np;
     if ((st = tangents(gl, sim, err))) return st;
@@ -510,6 +508,8 @@ gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const gb_wall_control *wc,
     double shift = fmax(mu, REGULARISE), cap = fmax(1e3 * shift, 1e-3);
     assemble(gl, sim, shift);
     gl->stats.assemble += now() - t0;
+    /* UMFPACK's symbolic analysis reads the values too: analyse the assembled matrix. */
+    if (new_pattern && (st = analyse(gl, err))) return st;
     for (;;) {
         int singular = factor_solve(gl, err, &st);
         if (st) return st;
