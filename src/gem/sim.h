@@ -33,6 +33,8 @@ typedef struct {
     int half_pending;
     double *bp_xy;       /* boundary particles' centres, 2 per particle */
     double *host_u;      /* the host's cavity displacements */
+    double *host_f0;     /* and its f0, which follows the host's prescribed boundary values */
+    double host_bc[GB_BEM_MAX_GROUPS][2];
 } gb_sim_state;
 
 struct gb_sim {

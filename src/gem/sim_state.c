@@ -12,6 +12,7 @@ void gb_sim_state_free(gb_sim_state *st)
     free(st->x0);
     free(st->bp_xy);
     free(st->host_u);
+    free(st->host_f0);
     memset(st, 0, sizeof *st);
 }
 
@@ -28,10 +29,16 @@ gb_status gb_sim_state_save(const gb_sim *sim, gb_sim_state *st, gb_error *err)
     }
     if (sim->host && !st->bp_xy &&
         (!(st->bp_xy = malloc((size_t)sim->host->m * sizeof(double))) ||
-         !(st->host_u = malloc((size_t)sim->host->m * sizeof(double)))))
+         !(st->host_u = malloc((size_t)sim->host->m * sizeof(double))) ||
+         !(st->host_f0 = malloc((size_t)sim->host->m * sizeof(double)))))
         return gb_fail(err, GB_ENOMEM, "out of memory for a copy of the host");
     for (int e = 0; e < sim->bp.n; e++) st->bp_xy[2 * e] = sim->bp.x[e], st->bp_xy[2 * e + 1] = sim->bp.y[e];
-    if (sim->host) memcpy(st->host_u, sim->host->u, (size_t)sim->host->m * sizeof(double));
+    if (sim->host) {
+        memcpy(st->host_u, sim->host->u, (size_t)sim->host->m * sizeof(double));
+        memcpy(st->host_f0, sim->host->K.f0, (size_t)sim->host->m * sizeof(double));
+        for (int g = 0; g < GB_BEM_MAX_GROUPS; g++)
+            st->host_bc[g][0] = sim->host->prob.bc[g].value[0], st->host_bc[g][1] = sim->host->prob.bc[g].value[1];
+    }
     memcpy(st->g, sim->g, (size_t)sim->n * sizeof *st->g);
     if (sim->pairs.n > 0) memcpy(st->p, sim->pairs.p, (size_t)sim->pairs.n * sizeof *st->p);
     memcpy(st->x0, sim->pairs.x0, 2 * (size_t)sim->n * sizeof(double));
@@ -61,6 +68,9 @@ void gb_sim_state_restore(gb_sim *sim, const gb_sim_state *st)
     for (int e = 0; e < sim->bp.n; e++) sim->bp.x[e] = st->bp_xy[2 * e], sim->bp.y[e] = st->bp_xy[2 * e + 1];
     if (sim->host) {
         memcpy(sim->host->u, st->host_u, (size_t)sim->host->m * sizeof(double));
+        memcpy(sim->host->K.f0, st->host_f0, (size_t)sim->host->m * sizeof(double));
+        for (int g = 0; g < GB_BEM_MAX_GROUPS; g++)
+            sim->host->prob.bc[g].value[0] = st->host_bc[g][0], sim->host->prob.bc[g].value[1] = st->host_bc[g][1];
         gb_host_update_force(sim->host);
     }
     memcpy(sim->g, st->g, (size_t)sim->n * sizeof *st->g);
