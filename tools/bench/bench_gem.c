@@ -10,16 +10,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
+#include "bench_clock.h"
 
 #include "gem/sim.h"
 
-static double now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
 
 int main(int argc, char **argv)
 {
@@ -47,9 +41,9 @@ int main(int argc, char **argv)
     gb_wall_control wc = {GB_WALLS_STRESS, 0.5 * s0, 0.5 * s0, 0};
     long prep_it = 0, it_total = 0;
     double max_force, wall, contact_iterations = 0;
-    double t0 = now();
+    double t0 = bench_now();
     gb_status st = gb_gem_relax(sim, &wc, prep_cap, &prep_it, &max_force, &wall, &err);
-    double t_prep = now() - t0;
+    double t_prep = bench_now() - t0;
     int contacts = gb_sim_contacts(sim, NULL, 0);
     contact_iterations += (double)prep_it * contacts;
     double t_steps = 0;
@@ -58,9 +52,9 @@ int main(int argc, char **argv)
         for (int k = 1; k <= steps && st == GB_OK; k++) {
             wc.s1 = wc.s2 = s0 * (0.5 + 0.5 * k / steps);
             long it = 0;
-            double t1 = now();
+            double t1 = bench_now();
             st = gb_gem_relax(sim, &wc, sc.solver.max_iterations, &it, &max_force, &wall, &err);
-            t_steps += now() - t1;
+            t_steps += bench_now() - t1;
             it_total += it;
             contacts = gb_sim_contacts(sim, NULL, 0);
             contact_iterations += (double)it * contacts;

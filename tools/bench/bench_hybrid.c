@@ -6,16 +6,10 @@
 #define _POSIX_C_SOURCE 199309L
 #include <stdio.h>
 #include <string.h>
-#include <time.h>
+#include "bench_clock.h"
 
 #include "gem/sim.h"
 
-static double now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
 
 int main(int argc, char **argv)
 {
@@ -25,15 +19,15 @@ int main(int argc, char **argv)
     gb_sim *sim = NULL;
     if (gb_scene_load(argv[1], &sc, &err)) return fprintf(stderr, "%s\n", err.msg), 1;
     if (argc > 2) sc.solver.linear = !strcmp(argv[2], "cholmod") ? GB_LINEAR_CHOLMOD : GB_LINEAR_UMFPACK;
-    double t0 = now();
+    double t0 = bench_now();
     if (gb_sim_create(&sc, &sim, &err)) return fprintf(stderr, "%s\n", err.msg), 1;
-    double t_host = now() - t0;
-    t0 = now();
+    double t_host = bench_now() - t0;
+    t0 = bench_now();
     long it = 0;
     double mf, wr;
     gb_wall_control wc = {GB_WALLS_FIXED, 0, 0, 0};
     gb_status st = gb_gem_relax(sim, &wc, sc.solver.max_iterations, &it, &mf, &wr, &err);
-    double t_run = now() - t0;
+    double t_run = bench_now() - t0;
     const gb_global_stats *g = gb_global_statistics(sim->global);
     double rest = t_run - g->assemble - g->analyse - g->factorise - g->solve;
     printf("| %s | %d | %d | %.2f | %ld%s | %.4f | %.3f | %.3f (%ld) | %.3f (%ld) | %.3f | %.3f | %.2f |\n",

@@ -10,16 +10,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
+#include "bench_clock.h"
 
 #include "gem/sim.h"
 
-static double now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
 
 int main(int argc, char **argv)
 {
@@ -36,9 +30,9 @@ int main(int argc, char **argv)
     if (gb_sim_create(&sc, &sim, &err)) return fprintf(stderr, "%s\n", err.msg), 1;
     gb_wall_control wc = {GB_WALLS_FIXED, 0, 0, 0};
     long prep = 0, it = 0;
-    double mf, wr, t0 = now();
+    double mf, wr, t0 = bench_now();
     gb_status st = gb_gem_relax(sim, &wc, prep_cap, &prep, &mf, &wr, &err);
-    double t_prep = now() - t0;
+    double t_prep = bench_now() - t0;
     if (st) return printf("| %s | %d | | preparation not converged in %ld iterations (%.0f s), largest fixing force %g |\n", method, sim->n, prep, t_prep, mf), 3;
     double s1, s2;
     gb_gem_forces(sim);
@@ -59,9 +53,9 @@ int main(int argc, char **argv)
         wc.mode = GB_WALLS_STRESS;
         wc.s1 = wc.s2 = sr * (1 + 0.05 * k);
         long n = 0;
-        double t1 = now();
+        double t1 = bench_now();
         st = gb_gem_relax(sim, &wc, sc.solver.max_iterations, &n, &mf, &wr, &err);
-        t_steps += now() - t1;
+        t_steps += bench_now() - t1;
         it += n;
         contacts = gb_sim_contacts(sim, NULL, 0);
         contact_its += (double)n * contacts;

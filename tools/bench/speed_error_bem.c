@@ -5,16 +5,10 @@
  *   r = 1.5 on the vertical axis, from interior points (analytic 1.9630, METHOD.md section 12).
  * Prints CSV lines: case,N,seconds,error. Run from the repository root. */
 #define _POSIX_C_SOURCE 199309L
-#include <time.h>
+#include "bench_clock.h"
 
 #include "vcommon.h"
 
-static double now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
 
 static double lame(int n)
 {
@@ -77,18 +71,18 @@ int main(void)
     for (int n = 16; n <= 1024; n *= 2) {
         double best = 1e300, e = 0;
         for (int rep = 0; rep < 3; rep++) {
-            double t0 = now();
+            double t0 = bench_now();
             e = lame(n);
-            best = fmin(best, now() - t0);
+            best = fmin(best, bench_now() - t0);
         }
         printf("lame,%d,%.6f,%.6e\n", n, best, e);
     }
     for (int n = 16; n <= 1024; n *= 2) {
         double best = 1e300, e = 0;
         for (int rep = 0; rep < 3; rep++) {
-            double t0 = now();
+            double t0 = bench_now();
             e = kirsch(n);
-            best = fmin(best, now() - t0);
+            best = fmin(best, bench_now() - t0);
         }
         printf("kirsch,%d,%.6f,%.6e\n", n, best, e);
     }
