@@ -3,6 +3,8 @@ find_package(PkgConfig REQUIRED)
 pkg_check_modules(FYAML REQUIRED IMPORTED_TARGET libfyaml)
 pkg_check_modules(OPENBLAS REQUIRED IMPORTED_TARGET openblas)
 pkg_check_modules(LAPACKE REQUIRED IMPORTED_TARGET lapacke)
+# qhull's reentrant C library: the Delaunay triangulation of grain centres (src/measure).
+pkg_check_modules(QHULL REQUIRED IMPORTED_TARGET qhull_r)
 
 # SuiteSparse has neither pkg-config nor a CMake config on Debian 12.
 find_path(SUITESPARSE_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse REQUIRED)
