@@ -13,6 +13,7 @@
 #include "hybrid/host_output.h"
 #include "gembem/output.h"
 #include "io/file_util.h"
+#include "measure/step_measures.h"
 
 struct gb_run_output {
     char dir[900];
@@ -208,6 +209,8 @@ gb_status gb_run_output_step(gb_run_output *o, const gb_sim *sim, const gb_step_
     const gb_scene *sc = o->scene;
     char path[1024];
     if (o->host && (st = gb_host_write_step(o->host, r->step, sim, err))) return st;
+    /* Strain field, D2min, localisation, sliding contacts, host around the cavity (src/measure). */
+    if ((st = gb_measure_write_step(o->dir, sim, r->step, err))) return st;
     if ((sc->contacts_every > 0 && r->step % sc->contacts_every == 0) || snapshot_due(sc, r->step)) {
         snprintf(path, sizeof path, "%s/contacts", o->dir);
         if ((st = make_dirs(path, err))) return st;

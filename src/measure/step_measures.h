@@ -1,0 +1,56 @@
+/* Measures of one load step on a simulation (private to the library): the contacts sliding at
+ * its end, the host's stress around its cavity, and the files of the run directory they go to. */
+#ifndef GB_STEP_MEASURES_H
+#define GB_STEP_MEASURES_H
+
+#include "gembem/gem.h"
+
+/* A contact at the Coulomb limit (K 13). */
+typedef struct {
+    int i, j;     /* as in gb_contact: j < 0 a wall or a boundary particle */
+    double pn, pt, limit, nx, ny;
+} gb_sliding_contact;
+
+/* The force-carrying contacts whose |pt| has reached the limit pn tan(phi) + c, to the relative
+ * tolerance 1e-9 that the global solver uses for its tangents (src/global/global.c): the contact
+ * law clamps pt there when the contact slides. Contacts without friction (limit 0) or without a
+ * tangential spring (kt = 0, e.g. against boundary particles) never count: they carry no shear.
+ * Returns their number; fills out (may be NULL) up to cap. */
+int gb_measure_sliding(const gb_sim *sim, gb_sliding_contact *out, int cap);
+
+/* The host around its cavity for the simulation's cavity displacements. Stresses tension
+ * positive (the boundary element module's convention), strains from them by Hooke's law. */
+typedef struct {
+    int n_wall;          /* cavity elements, in the stiffness's order */
+    int *elem;           /* their mesh elements */
+    double *wall_xy;     /* midpoints at rest, 2 per element */
+    double *hoop;        /* t.s.t at each cavity element's midpoint (t its tangent) */
+    double *hoop_empty;  /* the same with the cavity empty (traction-free), all else alike */
+    double *normal;      /* n.s.n: minus the grains' pressure on the wall */
+    double s_ref;        /* the reference stress (see gb_host_measure) */
+    const char *s_ref_kind; /* "remote", "boundary", "cavity_pressure" or "none" */
+    double max_concentration; /* hoop / s_ref where |hoop| is largest; 0 when s_ref = 0 */
+    int n_ring;
+    double *ring_xy;     /* 2 per point */
+    double *ring_stress; /* sxx, syy, sxy per point */
+    double *ring_strain; /* exx, eyy, exy (tensor shear) per point */
+} gb_host_measures;
+
+/* Solves the host for its cavity displacements (and once more with the cavity empty) and
+ * measures the hoop stress along the cavity wall and the stress and strain on a ring of interior
+ * points: each cavity element's midpoint moved into the body, along its normal, by half the
+ * cavity's equivalent radius sqrt(area / pi); points that fall outside the body or closer to its
+ * boundary than a fifth of the mean element length are left out.
+ * The reference stress s_ref is the stress that loads the body: the largest absolute principal
+ * remote stress of an unbounded host; else the largest mean traction |sum t L| / sum L carried
+ * by a boundary group with a non-zero prescribed value (a displaced or loaded side); else, a body
+ * loaded by its grains alone, the mean pressure of the grains on the cavity wall. */
+gb_status gb_host_measure(const gb_sim *sim, gb_host_measures *m, gb_error *err);
+void gb_host_measures_free(gb_host_measures *m);
+
+/* The step's measures in the run directory `dir` (see README.md, "Measures"): one row of
+ * localisation.csv (created at step 0) and the files of fields/ for this step. The step's
+ * increment runs from the step's start (the simulation's saved state) to its end. */
+gb_status gb_measure_write_step(const char *dir, const gb_sim *sim, int step, gb_error *err);
+
+#endif

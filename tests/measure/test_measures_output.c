@@ -1,0 +1,339 @@
+/* The measures that the run output writes per step (src/measure/measure_output.c), through
+ * gb_run_output like `gembem run`:
+ * - hybrid, empty granular zone (tests/hybrid/host_loading.yaml: one grain touching nothing, the
+ *   host's top pushed down in 3 steps): the hoop stress along the cavity wall and the stress on the
+ *   ring equal the boundary element module's own solution with a traction-free cavity, computed
+ *   here (1e-8 of the largest value; the files hold 11 digits); the concentration is the hoop
+ *   stress over s_ref = |force on the top| / its length 10 (1e-8); the strain follows from Hooke's
+ *   law (1e-8); one grain: no triangles, all numbers finite.
+ * - affine known answer: the 27 grains of validation/cavity_packing moved by x = (I + A) X + b in
+ *   one "step": every grain's strain is the exact Green-Lagrange strain (1e-11, the files' digits),
+ *   D2min <= 1e-20, the localisation index of the uniform strain is 0.1 (1e-9).
+ * - granular (validation/biaxial122/test_shear.yaml, 20 steps of constant-mean-stress shear, no
+ *   host): a row per step, every file of every step with finite numbers, the index in
+ *   [0.1, 1] once the sample shears, the sliding contacts as many as counted here from the
+ *   contacts (Coulomb limit to 1e-9), and no host columns. */
+#define _POSIX_C_SOURCE 200809L
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "check.h"
+#include "gem/sim.h"
+#include "gembem/output.h"
+#include "measure/step_measures.h"
+
+static const double PI = 3.14159265358979323846;
+
+/* A CSV file as a table of strings; cell(t, row, "name") as a number. */
+typedef struct {
+    int rows, cols;
+    char **head, **cell; /* cell[row * cols + col] */
+} table;
+
+static int table_read(const char *path, table *t)
+{
+    memset(t, 0, sizeof *t);
+    FILE *f = fopen(path, "r");
+    if (!f) return 0;
+    char line[8192];
+    int cap = 0;
+    while (fgets(line, sizeof line, f)) {
+        line[strcspn(line, "\r\n")] = 0;
+        char *fields[64];
+        int nf = 0;
+        for (char *p = line, *q; p && nf < 64; p = q) {
+            q = strchr(p, ',');
+            if (q) *q++ = 0;
+            fields[nf++] = p;
+        }
+        if (!t->head) {
+            t->cols = nf;
+            t->head = malloc((size_t)nf * sizeof(char *));
+            for (int k = 0; k < nf; k++) t->head[k] = strdup(fields[k]);
+            continue;
+        }
+        if (nf != t->cols) {
+            fclose(f);
+            return 0;
+        }
+        if (t->rows == cap) {
+            cap = cap ? 2 * cap : 64;
+            t->cell = realloc(t->cell, (size_t)cap * (size_t)t->cols * sizeof(char *));
+        }
+        for (int k = 0; k < nf; k++) t->cell[t->rows * t->cols + k] = strdup(fields[k]);
+        t->rows++;
+    }
+    fclose(f);
+    return t->head != NULL;
+}
+
+static void table_free(table *t)
+{
+    for (int k = 0; k < t->cols; k++) free(t->head[k]);
+    for (int k = 0; k < t->rows * t->cols; k++) free(t->cell[k]);
+    free(t->head), free(t->cell);
+}
+
+static double cell(const table *t, int row, const char *name)
+{
+    for (int k = 0; k < t->cols; k++)
+        if (!strcmp(t->head[k], name)) return strtod(t->cell[row * t->cols + k], NULL);
+    fprintf(stderr, "no column %s\n", name);
+    return NAN;
+}
+
+static int has_column(const table *t, const char *name)
+{
+    for (int k = 0; k < t->cols; k++)
+        if (!strcmp(t->head[k], name)) return 1;
+    return 0;
+}
+
+/* Every field a finite number or a word (a kind: "boundary", "grain", ...), never nan or inf. */
+static int all_finite(const table *t)
+{
+    for (int k = 0; k < t->rows * t->cols; k++) {
+        char *end;
+        double v = strtod(t->cell[k], &end);
+        if (*end == 0 && end != t->cell[k] ? !isfinite(v) : !(t->cell[k][0] >= 'a' && t->cell[k][0] <= 'z')) {
+            fprintf(stderr, "not finite: '%s'\n", t->cell[k]);
+            return 0;
+        }
+    }
+    return 1;
+}
+
+static int read_step(const char *dir, const char *what, int step, table *t)
+{
+    char path[1200];
+    snprintf(path, sizeof path, "%s/fields/%s_%06d.csv", dir, what, step);
+    int ok = table_read(path, t);
+    if (!ok) fprintf(stderr, "%s: missing or unreadable\n", path);
+    return ok && all_finite(t);
+}
+
+typedef struct {
+    gb_run_output *out;
+    const char *dir;
+    int steps_seen;
+} run_ctx;
+
+/* ---------------------------------------------------------------- hybrid, empty zone */
+
+static gb_status check_host_step(void *user, const gb_sim *sim, const gb_step_report *r, gb_error *err)
+{
+    run_ctx *c = user;
+    gb_status st = gb_run_output_step(c->out, sim, r, err);
+    if (st) return st;
+    c->steps_seen++;
+    const gb_host *h = sim->host;
+    double ft[2], dt[2];
+    if ((st = gb_host_group_force(h, "top", ft, dt, err))) return st;
+    double s_ref = hypot(ft[0], ft[1]) / 10;
+    gb_bem_problem pr = h->prob;
+    pr.bc[h->cavity].kind = GB_BEM_BC_FREE;
+    gb_bem_solution sol;
+    memset(&sol, 0, sizeof sol);
+    double *bs = malloc(3 * (size_t)h->mesh.n * sizeof *bs);
+    if ((st = gb_bem_solve(&h->mesh, &h->sys, &pr, NULL, &sol, err)) ||
+        (st = gb_bem_boundary_stress(&h->mesh, &h->sys.material, &sol, bs, err))) {
+        free(bs);
+        gb_bem_solution_free(&sol);
+        return st;
+    }
+    table w, ring;
+    CHECK(read_step(c->dir, "host_wall", r->step, &w));
+    CHECK(read_step(c->dir, "host_ring", r->step, &ring));
+    CHECK(w.rows == h->m / 2);
+    double hmax = 0, dh = 0, dh0 = 0, dc = 0, cmax = 0;
+    for (int k = 0; k < w.rows; k++) {
+        int e = (int)cell(&w, k, "element");
+        double tx = h->mesh.tangent[2 * e], ty = h->mesh.tangent[2 * e + 1], *s = &bs[3 * e];
+        double hoop = tx * tx * s[0] + ty * ty * s[1] + 2 * tx * ty * s[2];
+        hmax = fmax(hmax, fabs(hoop));
+        dh = fmax(dh, fabs(cell(&w, k, "hoop") - hoop));
+        dh0 = fmax(dh0, fabs(cell(&w, k, "hoop_empty") - hoop));
+        if (s_ref > 0) {
+            dc = fmax(dc, fabs(cell(&w, k, "concentration") - hoop / s_ref));
+            cmax = fmax(cmax, fabs(hoop / s_ref));
+        }
+    }
+    /* The ring against the module's interior stress of the empty cavity, and Hooke's law. */
+    int n = ring.rows;
+    double *xy = malloc(2 * (size_t)(n + 1) * sizeof *xy), *sr = malloc(3 * (size_t)(n + 1) * sizeof *sr);
+    for (int q = 0; q < n; q++) xy[2 * q] = cell(&ring, q, "x"), xy[2 * q + 1] = cell(&ring, q, "y");
+    if (n > 0) st = gb_bem_interior(&h->mesh, &h->sys.material, &pr, &sol, n, xy, NULL, sr, err);
+    double smax = 0, ds = 0, de = 0, mu = h->sys.material.shear_modulus, nu = h->sys.material.poisson;
+    for (int q = 0; q < n && !st; q++) {
+        double s[3] = {cell(&ring, q, "sxx"), cell(&ring, q, "syy"), cell(&ring, q, "sxy")};
+        for (int k = 0; k < 3; k++) smax = fmax(smax, fabs(sr[3 * q + k])), ds = fmax(ds, fabs(s[k] - sr[3 * q + k]));
+        de = fmax(de, fabs(cell(&ring, q, "exx") - (s[0] - nu * (s[0] + s[1])) / (2 * mu)));
+        de = fmax(de, fabs(cell(&ring, q, "exy") - s[2] / (2 * mu)));
+    }
+    printf("host step %d: hoop <= %.4g (off %.2g, empty off %.2g), largest concentration %.4f (s_ref %.4g, off "
+           "%.2g); ring of %d points, stress <= %.4g (off %.2g)\n",
+           r->step, hmax, dh, dh0, cmax, s_ref, dc, n, smax, ds);
+    CHECK(n >= h->m / 4); /* most cavity elements have their ring point */
+    CHECK_NEAR(dh, 0, 1e-8 * hmax + 1e-300);
+    CHECK_NEAR(dh0, 0, 1e-8 * hmax + 1e-300);
+    CHECK_NEAR(dc, 0, 1e-8 * cmax);
+    CHECK_NEAR(ds, 0, 1e-8 * smax + 1e-300);
+    CHECK_NEAR(de, 0, 1e-8 * smax / (2 * mu) + 1e-300);
+    if (r->step > 0) CHECK(hmax > 0 && cmax > 1);
+    table g;
+    CHECK(read_step(c->dir, "grains", r->step, &g));
+    CHECK(g.rows == 1 && cell(&g, 0, "triangles") == 0);
+    table_free(&g);
+    free(xy), free(sr), free(bs);
+    table_free(&w), table_free(&ring);
+    gb_bem_solution_free(&sol);
+    return st;
+}
+
+/* ---------------------------------------------------------------- granular, no host */
+
+static gb_status check_granular_step(void *user, const gb_sim *sim, const gb_step_report *r, gb_error *err)
+{
+    run_ctx *c = user;
+    gb_status st = gb_run_output_step(c->out, sim, r, err);
+    if (st) return st;
+    c->steps_seen++;
+    /* Sliding contacts counted from the public contact list and the scene's materials. */
+    const gb_scene *sc = gb_sim_scene(sim);
+    int m, count = 0;
+    gb_contact *ct = gb_sim_contacts_copy(sim, &m, err);
+    if (!ct) return err->code;
+    for (int k = 0; k < m; k++) {
+        const gb_material *mat = ct[k].j >= 0 ? &sc->grain_grain : &sc->grain_wall;
+        double limit = ct[k].pn * tan(mat->friction_deg * PI / 180) + mat->cohesion;
+        count += mat->kt > 0 && limit > 0 && fabs(ct[k].pt) >= limit * (1 - 1e-9);
+    }
+    free(ct);
+    table g, s;
+    CHECK(read_step(c->dir, "grains", r->step, &g));
+    CHECK(read_step(c->dir, "sliding", r->step, &s));
+    CHECK(g.rows == gb_sim_n_grains(sim));
+    CHECK(s.rows == count);
+    char path[1200];
+    snprintf(path, sizeof path, "%s/fields/triangles_%06d.vtu", c->dir, r->step);
+    CHECK(access(path, F_OK) == 0);
+    table_free(&g), table_free(&s);
+    return GB_OK;
+}
+
+static int run(const char *scene, const char *dir, gb_step_fn fn)
+{
+    gb_error err = {0};
+    gb_scene sc;
+    gb_sim *sim = NULL;
+    run_ctx c = {NULL, dir, 0};
+    if (gb_scene_load(scene, &sc, &err) || gb_sim_create(&sc, &sim, &err) ||
+        gb_run_output_open(dir, &sc, 1, "test_measures_output", &c.out, &err)) {
+        fprintf(stderr, "%s\n", err.msg);
+        return -1;
+    }
+    gb_status st = gb_sim_run(sim, fn, &c, &err);
+    if (st) fprintf(stderr, "%s\n", err.msg);
+    CHECK(st == GB_OK);
+    CHECK(gb_run_output_close(c.out, sim, st, NULL, &err) == GB_OK);
+    gb_sim_free(sim);
+    gb_scene_free(&sc);
+    return c.steps_seen;
+}
+
+static void check_localisation(const char *dir, int steps, int host)
+{
+    char path[1200];
+    snprintf(path, sizeof path, "%s/localisation.csv", dir);
+    table t;
+    CHECK(table_read(path, &t) && all_finite(&t));
+    CHECK(t.rows == steps);
+    CHECK(has_column(&t, "max_concentration") == host);
+    for (int k = 0; k < t.rows; k++) {
+        CHECK(cell(&t, k, "step") == k);
+        double L = cell(&t, k, "localisation_index");
+        if (!host && k > 0) CHECK(L >= 0.1 - 1e-9 && L <= 1 + 1e-9 && cell(&t, k, "mean_gamma") > 0);
+    }
+    if (t.rows > 1)
+        printf("%s: %d rows; last: localisation index %.4f, mean gamma %.3g, %g sliding contacts\n", path, t.rows,
+               cell(&t, t.rows - 1, "localisation_index"), cell(&t, t.rows - 1, "mean_gamma"),
+               cell(&t, t.rows - 1, "sliding_contacts"));
+    table_free(&t);
+}
+
+/* ---------------------------------------------------------------- affine known answer */
+
+static void check_affine(const char *dir)
+{
+    gb_error err = {0};
+    gb_scene sc;
+    gb_sim *sim = NULL;
+    mkdir(dir, 0777);
+    if (gb_scene_load("validation/cavity_packing/scene.yaml", &sc, &err) || gb_sim_create(&sc, &sim, &err) ||
+        gb_sim_state_save(sim, &sim->saved, &err)) {
+        fprintf(stderr, "%s\n", err.msg);
+        CHECK(0);
+        return;
+    }
+    const double A[4] = {0.01, 0.003, -0.002, -0.015}, b[2] = {0.01, -0.02};
+    for (int i = 0; i < sim->n; i++) {
+        double X = sim->saved.g[i].x, Y = sim->saved.g[i].y;
+        sim->g[i].x = X + A[0] * X + A[1] * Y + b[0], sim->g[i].y = Y + A[2] * X + A[3] * Y + b[1];
+    }
+    CHECK(gb_measure_write_step(dir, sim, 0, &err) == GB_OK);
+    double e[3] = {-(A[0] + 0.5 * (A[0] * A[0] + A[2] * A[2])), -(A[3] + 0.5 * (A[1] * A[1] + A[3] * A[3])),
+                   -0.5 * (A[1] + A[2] + A[0] * A[1] + A[2] * A[3])};
+    double gamma = 2 * sqrt(0.25 * (e[0] - e[1]) * (e[0] - e[1]) + e[2] * e[2]);
+    table g, t;
+    CHECK(read_step(dir, "grains", 0, &g));
+    int with = 0;
+    double off = 0, d2 = 0;
+    for (int i = 0; i < g.rows; i++) {
+        d2 = fmax(d2, cell(&g, i, "d2min"));
+        if (cell(&g, i, "triangles") == 0) continue;
+        with++;
+        off = fmax(off, fabs(cell(&g, i, "exx") - e[0]) + fabs(cell(&g, i, "eyy") - e[1]) +
+                            fabs(cell(&g, i, "exy") - e[2]) + fabs(cell(&g, i, "gamma") - gamma));
+    }
+    char path[1200];
+    snprintf(path, sizeof path, "%s/localisation.csv", dir);
+    CHECK(table_read(path, &t) && t.rows == 1);
+    printf("affine: %d of %d grains in triangles, strain off by %.2g, D2min <= %.2g, index %.12f\n", with, g.rows, off,
+           d2, cell(&t, 0, "localisation_index"));
+    CHECK(with >= 20);
+    CHECK_NEAR(off, 0, 1e-11);
+    CHECK_NEAR(d2, 0, 1e-20);
+    CHECK_NEAR(cell(&t, 0, "localisation_index"), 0.1, 1e-9);
+    CHECK_NEAR(cell(&t, 0, "mean_gamma"), gamma, 1e-11);
+    CHECK(cell(&t, 0, "triangles") > 0);
+    table_free(&g), table_free(&t);
+    gb_sim_free(sim);
+    gb_scene_free(&sc);
+}
+
+int main(void)
+{
+    char base[] = "/tmp/gembem_measures_XXXXXX";
+    if (!mkdtemp(base)) return 1;
+    char dir[256];
+    snprintf(dir, sizeof dir, "%s/host", base);
+    int n = run("tests/hybrid/host_loading.yaml", dir, check_host_step);
+    CHECK(n == 4);
+    check_localisation(dir, n, 1);
+    snprintf(dir, sizeof dir, "%s/affine", base);
+    check_affine(dir);
+    snprintf(dir, sizeof dir, "%s/granular", base);
+    n = run("validation/biaxial122/test_shear.yaml", dir, check_granular_step);
+    CHECK(n == 21);
+    check_localisation(dir, n, 0);
+    if (!gb_test_failures) {
+        char cmd[300];
+        snprintf(cmd, sizeof cmd, "rm -rf '%s'", base);
+        if (system(cmd) != 0) fprintf(stderr, "could not remove %s\n", base);
+    }
+    TEST_END();
+}
