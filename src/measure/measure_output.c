@@ -53,10 +53,12 @@ static gb_status zone_measure(const gb_sim *sim, zone *z, gb_error *err)
         z->r[i] = sim->g[i].r;
         dmax = fmax(dmax, 2 * z->r[i]);
     }
-    /* The triangulation drops edges with a gap wider than the largest diameter (gap < 0). */
+    /* The triangulation drops edges with a gap wider than the largest diameter (gap < 0). A zone
+     * that cannot be triangulated (fewer than 3 grains, collinear, qhull's precision failure) has
+     * no triangles: a measure, not a reason to stop the run. */
     gb_error terr = {0};
     gb_status st = gb_triangulate(n, z->x0, z->r, -1, &z->t, &terr);
-    if (st && st != GB_EINPUT) return gb_fail(err, st, "%s", terr.msg);
+    if (st && st != GB_EINPUT && st != GB_ENUMERIC) return gb_fail(err, st, "%s", terr.msg);
     z->tri_ok = !st && z->t.n > 0;
     z->tri = malloc((size_t)(z->t.n > 0 ? z->t.n : 1) * sizeof *z->tri);
     if (!z->tri) return gb_fail(err, GB_ENOMEM, "out of memory for %d triangles", z->t.n);
