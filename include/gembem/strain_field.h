@@ -22,11 +22,12 @@ typedef struct {
 /* Delaunay triangulation of n points (qhull "d Qt Qbb Qc Qz": triangulated output, so cocircular
  * points, as in a regular grid, still give triangles). Dropped: triangles of zero area (the
  * triangulated output may make them out of cocircular points) and, when radii r are given (NULL:
- * keep every triangle), a triangle with an edge a-b longer than r_a + r_b + gap. Such an edge
- * spans a space between two grains' surfaces wider than `gap`: with gap = the largest diameter
- * (pass gap < 0) another grain would fit there, so the triangle bridges a void, such as the
- * outside of a non-convex zone, not the zone. Fewer than 3 points, non-finite or collinear
- * points: GB_EINPUT and an empty triangulation. */
+ * keep every other triangle), the triangles that bridge a void where a grain of diameter `gap`
+ * would fit (gap < 0: the largest diameter): an edge a-b longer than r_a + r_b + gap (the space
+ * between the two surfaces), or a circumradius larger than r_max + gap/2 (the empty circumcircle,
+ * less the grains that reach into it). These are the triangles outside a non-convex zone, across
+ * large pores, and the flat ones along the convex hull. Fewer than 3 points, non-finite or
+ * collinear points: GB_EINPUT and an empty triangulation. */
 gb_status gb_triangulate(int n, const double *xy, const double *r, double gap, gb_triangulation *t,
                          gb_error *err);
 void gb_triangulation_free(gb_triangulation *t);
@@ -50,6 +51,10 @@ void gb_strain_triangles(const gb_triangulation *t, const double *x0, const doub
  * share the point; gamma from the mean strain, rotation from the mean H. n_tri (may be NULL)
  * counts them; a point in no triangle gets zeros. */
 void gb_strain_points(const gb_triangulation *t, const gb_strain *tri, int n, gb_strain *out, int *n_tri);
+
+/* The zone's mean: the area-weighted mean of H and of the strain over the n triangles (for a
+ * piecewise linear field the mean of H is the deformation of the triangulated zone's outline). */
+void gb_strain_mean(int n, const gb_strain *tri, gb_strain *out);
 
 typedef struct {
     double index;      /* share of the total shear, sum(gamma area), carried by the most strained

@@ -27,6 +27,7 @@ typedef struct {
     int *grain_tri;
     gb_d2min *d2;
     gb_localisation loc;
+    gb_strain mean; /* of the triangulated zone */
     double d2_range;
     int tri_ok; /* 0: too few or collinear grains, no triangles */
 } zone;
@@ -64,6 +65,7 @@ static gb_status zone_measure(const gb_sim *sim, zone *z, gb_error *err)
     if (!z->tri) return gb_fail(err, GB_ENOMEM, "out of memory for %d triangles", z->t.n);
     gb_strain_triangles(&z->t, z->x0, z->x1, z->tri);
     gb_strain_points(&z->t, z->tri, n, z->grain, z->grain_tri);
+    gb_strain_mean(z->t.n, z->tri, &z->mean);
     if (z->tri_ok && (st = gb_localisation_index(z->t.n, z->tri, LOC_FRACTION, &z->loc, err))) return st;
     /* D2min over the first shell and near contacts: touching grains are at most the largest
      * diameter apart. */
@@ -196,15 +198,15 @@ static gb_status write_row(const char *dir, int step, const zone *z, int n_slidi
     if (!f) return gb_fail(err, GB_EIO, "%s: %s", path, strerror(errno));
     if (step == 0)
         fprintf(f, "step,grains,triangles,triangles_delaunay,area,mean_gamma,max_gamma,localisation_index,"
-                   "mean_d2min,max_d2min,d2min_range,sliding_contacts%s\n",
+                   "zone_exx,zone_eyy,zone_exy,zone_ev,mean_d2min,max_d2min,d2min_range,sliding_contacts%s\n",
                 hm ? ",s_ref,s_ref_kind,max_concentration" : "");
     double d2sum = 0, d2max = 0;
     int nd = 0;
     for (int i = 0; i < z->n; i++)
         if (z->d2[i].ok) d2sum += z->d2[i].d2min, d2max = fmax(d2max, z->d2[i].d2min), nd++;
-    fprintf(f, "%d,%d,%d,%d,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%d", step, z->n, z->t.n, z->t.n_delaunay,
-            z->loc.area, z->loc.mean_gamma, z->loc.max_gamma, z->loc.index, nd ? d2sum / nd : 0, d2max, z->d2_range,
-            n_sliding);
+    fprintf(f, "%d,%d,%d,%d,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%d", step, z->n, z->t.n,
+            z->t.n_delaunay, z->loc.area, z->loc.mean_gamma, z->loc.max_gamma, z->loc.index, z->mean.exx, z->mean.eyy,
+            z->mean.exy, z->mean.ev, nd ? d2sum / nd : 0, d2max, z->d2_range, n_sliding);
     if (hm) fprintf(f, ",%.10e,%s,%.10e", hm->s_ref, hm->s_ref_kind, hm->max_concentration);
     fprintf(f, "\n");
     if (ferror(f) | fclose(f)) return gb_fail(err, GB_EIO, "%s: write failed", path);

@@ -45,6 +45,32 @@ void gb_strain_triangles(const gb_triangulation *t, const double *x0, const doub
     }
 }
 
+/* Strain, shear and rotation of a mean: from sums of area x (H, strain). */
+static void finish_mean(gb_strain *s)
+{
+    if (!(s->area > 0)) return;
+    for (int q = 0; q < 4; q++) s->H[q] /= s->area;
+    s->exx /= s->area, s->eyy /= s->area, s->exy /= s->area;
+    s->ev = s->exx + s->eyy;
+    s->gamma = 2 * sqrt(0.25 * (s->exx - s->eyy) * (s->exx - s->eyy) + s->exy * s->exy);
+    s->rotation = atan2(s->H[2] - s->H[1], 2 + s->H[0] + s->H[3]);
+}
+
+static void add_weighted(gb_strain *s, const gb_strain *t)
+{
+    double a = t->area;
+    for (int q = 0; q < 4; q++) s->H[q] += a * t->H[q];
+    s->exx += a * t->exx, s->eyy += a * t->eyy, s->exy += a * t->exy;
+    s->area += a;
+}
+
+void gb_strain_mean(int n, const gb_strain *tri, gb_strain *out)
+{
+    memset(out, 0, sizeof *out);
+    for (int k = 0; k < n; k++) add_weighted(out, &tri[k]);
+    finish_mean(out);
+}
+
 void gb_strain_points(const gb_triangulation *t, const gb_strain *tri, int n, gb_strain *out, int *n_tri)
 {
     memset(out, 0, (size_t)n * sizeof *out);
@@ -54,22 +80,10 @@ void gb_strain_points(const gb_triangulation *t, const gb_strain *tri, int n, gb
     for (int k = 0; k < t->n; k++)
         for (int c = 0; c < 3; c++) {
             int i = t->v[3 * k + c];
-            double a = tri[k].area;
-            gb_strain *s = &out[i];
-            for (int q = 0; q < 4; q++) s->H[q] += a * tri[k].H[q];
-            s->exx += a * tri[k].exx, s->eyy += a * tri[k].eyy, s->exy += a * tri[k].exy;
-            s->area += a;
+            add_weighted(&out[i], &tri[k]);
             if (n_tri) n_tri[i]++;
         }
-    for (int i = 0; i < n; i++) {
-        gb_strain *s = &out[i];
-        if (!(s->area > 0)) continue;
-        for (int q = 0; q < 4; q++) s->H[q] /= s->area;
-        s->exx /= s->area, s->eyy /= s->area, s->exy /= s->area;
-        s->ev = s->exx + s->eyy;
-        s->gamma = 2 * sqrt(0.25 * (s->exx - s->eyy) * (s->exx - s->eyy) + s->exy * s->exy);
-        s->rotation = atan2(s->H[2] - s->H[1], 2 + s->H[0] + s->H[3]);
-    }
+    for (int i = 0; i < n; i++) finish_mean(&out[i]);
 }
 
 typedef struct {

@@ -42,17 +42,24 @@ static gb_status check_input(int n, const double *xy, gb_error *err)
     return GB_OK;
 }
 
-/* Keeps a triangle unless it has (almost) no area or an edge longer than r_a + r_b + gap. */
-static int keep(const double *xy, const double *r, double gap, const int v[3])
+/* Keeps a triangle unless it has (almost) no area, or, with radii, it bridges a void: an edge
+ * longer than r_a + r_b + gap, or a circumradius R larger than r_max + gap/2. The circumcircle
+ * holds no other centre (Delaunay), so no grain reaches nearer than R - r_max to its centre: a
+ * larger R leaves a hole that holds a grain of diameter gap. This drops the flat triangles along
+ * the convex hull, whose strain is ill-conditioned, as well as those across a notch. */
+static int keep(const double *xy, const double *r, double gap, double r_max, const int v[3])
 {
-    double lmax2 = 0;
+    double lmax2 = 0, lprod = 1;
     for (int k = 0; k < 3; k++) {
         int a = v[k], b = v[(k + 1) % 3];
         double dx = xy[2 * b] - xy[2 * a], dy = xy[2 * b + 1] - xy[2 * a + 1], l2 = dx * dx + dy * dy;
         lmax2 = fmax(lmax2, l2);
+        lprod *= sqrt(l2);
         if (r && sqrt(l2) > r[a] + r[b] + gap) return 0;
     }
-    return fabs(cross3(xy, v[0], v[1], v[2])) > 1e-10 * lmax2;
+    double cross = fabs(cross3(xy, v[0], v[1], v[2]));
+    if (!(cross > 1e-10 * lmax2)) return 0;
+    return !r || lprod / (2 * cross) <= r_max + 0.5 * gap; /* R = abc / (4 area) */
 }
 
 gb_status gb_triangulate(int n, const double *xy, const double *r, double gap, gb_triangulation *t,
@@ -61,10 +68,9 @@ gb_status gb_triangulate(int n, const double *xy, const double *r, double gap, g
     memset(t, 0, sizeof *t);
     gb_status st = check_input(n, xy, err);
     if (st) return st;
-    if (r && gap < 0) {
-        gap = 0;
-        for (int i = 0; i < n; i++) gap = fmax(gap, 2 * r[i]);
-    }
+    double r_max = 0;
+    for (int i = 0; r && i < n; i++) r_max = fmax(r_max, r[i]);
+    if (r && gap < 0) gap = 2 * r_max;
     /* qhull reports on a stream: a memory one, so that its message goes into err, never to stderr. */
     char *msg = NULL;
     size_t msg_len = 0;
@@ -106,7 +112,7 @@ gb_status gb_triangulate(int n, const double *xy, const double *r, double gap, g
                 int s = v[1];
                 v[1] = v[2], v[2] = s;
             }
-            if (!keep(xy, r, gap, v)) continue;
+            if (!keep(xy, r, gap, r_max, v)) continue;
             memcpy(&t->v[3 * t->n], v, sizeof v);
             t->n++;
         }

@@ -1,11 +1,13 @@
 /* The strain field of grain centres (src/measure): references computed here.
  * - An affine displacement x = (I + A) X + b: in every triangle H = A and the strain
  *   -(A + A^t + A^t A)/2 (1e-12), every grain's mean the same (1e-12), D2min = 0 (1e-24 of the
- *   squared spacing), the localisation index of a uniform strain = the fraction (1e-12).
+ *   squared spacing), the zone's mean the same (1e-12), the localisation index of a uniform strain
+ *   = the fraction (1e-12).
  * - A rigid rotation by 0.3 rad (and a translation): zero strain (1e-12), rotation 0.3 (1e-12).
  * - Two shear bands on a grid (displacement piecewise affine in y): the index from the bands' areas
  *   and shears (1e-12), on a regular grid (cocircular points) and a jittered one.
- * - The sliver criterion drops the triangles across a notch of a non-convex zone.
+ * - The void criterion drops the triangles across a notch of a non-convex zone and a flat triangle
+ *   along the convex hull, and nothing else there.
  * - Degenerate input: fewer than 3 points, collinear points, a non-finite point: GB_EINPUT, no
  *   triangles; D2min of collinear neighbours: ok = 0 and zeros, never NaN. */
 #include <math.h>
@@ -69,6 +71,10 @@ static void test_affine(void)
                               fabs(pt[i].gamma - e[3]));
     }
     CHECK_NEAR(pmax, 0, 1e-12);
+    gb_strain mean;
+    gb_strain_mean(t.n, tri, &mean);
+    CHECK_NEAR(fabs(mean.exx - e[0]) + fabs(mean.eyy - e[1]) + fabs(mean.exy - e[2]) + fabs(mean.gamma - e[3]), 0, 1e-12);
+    CHECK_NEAR(mean.area, area, 1e-12);
     gb_localisation loc;
     CHECK(gb_localisation_index(t.n, tri, 0.1, &loc, &err) == GB_OK);
     CHECK_NEAR(loc.index, 0.1, 1e-12);
@@ -191,6 +197,35 @@ static void test_notch(void)
     gb_triangulation_free(&all);
 }
 
+/* A 3 x 3 grid (radius 0.5) with the middle of its bottom row raised by 0.05: the flat triangle
+ * of the bottom row along the hull has edges no longer than r + r + gap = 2 but a circumradius of
+ * about 10, over r_max + gap/2 = 1, and goes; every other triangle stays. */
+static void test_hull_sliver(void)
+{
+    double xy[18], r[9];
+    for (int k = 0; k < 9; k++) xy[2 * k] = k % 3, xy[2 * k + 1] = k / 3, r[k] = 0.5;
+    xy[3] = 0.05;
+    gb_error err = {0};
+    gb_triangulation t, all;
+    CHECK(gb_triangulate(9, xy, r, -1, &t, &err) == GB_OK);
+    CHECK(gb_triangulate(9, xy, NULL, 0, &all, &err) == GB_OK);
+    int flat = 0;
+    for (int k = 0; k < all.n; k++) {
+        int has[9] = {0};
+        for (int c = 0; c < 3; c++) has[all.v[3 * k + c]] = 1;
+        flat += has[0] && has[1] && has[2];
+    }
+    for (int k = 0; k < t.n; k++) {
+        int has[9] = {0};
+        for (int c = 0; c < 3; c++) has[t.v[3 * k + c]] = 1;
+        flat -= has[0] && has[1] && has[2];
+    }
+    printf("hull sliver: %d Delaunay triangles, %d kept\n", all.n, t.n);
+    CHECK(t.n == all.n - 1 && flat == 1);
+    gb_triangulation_free(&t);
+    gb_triangulation_free(&all);
+}
+
 static void test_degenerate(void)
 {
     gb_error err = {0};
@@ -202,8 +237,16 @@ static void test_degenerate(void)
     printf("collinear: %s\n", err.msg);
     CHECK(gb_triangulate(3, nan_, NULL, 0, &t, &err) == GB_EINPUT && t.n == 0);
     gb_triangulation_free(&t);
+    /* The smallest zone: one triangle. */
+    double three[6] = {0, 0, 1, 0, 0, 1}, moved3[6] = {0, 0, 1.01, 0, 0.02, 1};
+    CHECK(gb_triangulate(3, three, NULL, 0, &t, &err) == GB_OK && t.n == 1);
+    gb_strain s3;
+    if (t.n == 1) gb_strain_triangles(&t, three, moved3, &s3);
+    CHECK(t.n == 1 && fabs(s3.H[0] - 0.01) < 1e-15 && fabs(s3.H[1] - 0.02) < 1e-15 && s3.area == 0.5);
+    gb_triangulation_free(&t);
     gb_localisation loc;
     CHECK(gb_localisation_index(0, NULL, 0.1, &loc, &err) == GB_EINPUT && loc.index == 0);
+    CHECK(gb_localisation_index(1, &s3, 1.5, &loc, &err) == GB_EINPUT);
     /* D2min: neighbours on a line through the point, none, or a single point: no fit, zeros. */
     double moved[10] = {0, 0.1, 1, 1.3, 2, 2, 3, 3, 4, 4.2};
     gb_d2min d[5];
@@ -220,6 +263,7 @@ int main(void)
     test_bands(0);
     test_bands(0.2);
     test_notch();
+    test_hull_sliver();
     test_degenerate();
     TEST_END();
 }
