@@ -9,7 +9,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include <unistd.h>
 
 #include "gem/sim.h"
 #include "gembem/strain_field.h"
@@ -132,22 +131,23 @@ static gb_status write_triangles(const char *path, const zone *z, gb_error *err)
     return gb_atomic_commit(&a, err);
 }
 
-/* fields/triangles.pvd: the steps whose triangulation was written, for ParaView's time bar. */
-static gb_status write_pvd(const char *dir, int step, gb_error *err)
+/* fields/triangles.pvd, for ParaView's time bar: created at step 0, then each written step's
+ * entry goes in before the closing tags (a seek back over them: constant time per step). */
+static gb_status add_to_pvd(const char *dir, int step, gb_error *err)
 {
+    static const char close_tags[] = "</Collection>\n</VTKFile>\n";
     char path[1200];
     snprintf(path, sizeof path, "%s/fields/triangles.pvd", dir);
-    gb_atomic_file a;
-    gb_status st = gb_atomic_open(&a, path, err);
-    if (st) return st;
-    fprintf(a.f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n");
-    for (int k = 0; k <= step; k++) {
-        snprintf(path, sizeof path, "%s/fields/triangles_%06d.vtu", dir, k);
-        if (access(path, F_OK) == 0)
-            fprintf(a.f, "<DataSet timestep=\"%d\" file=\"triangles_%06d.vtu\"/>\n", k, k);
-    }
-    fprintf(a.f, "</Collection>\n</VTKFile>\n");
-    return gb_atomic_commit(&a, err);
+    FILE *f = fopen(path, step == 0 ? "w" : "r+");
+    if (!f && step > 0) f = fopen(path, "w"); /* no triangulation until now */
+    if (!f) return gb_fail(err, GB_EIO, "%s: %s", path, strerror(errno));
+    fseek(f, 0, SEEK_END);
+    long end = ftell(f), tail = (long)strlen(close_tags);
+    if (end >= tail) fseek(f, -tail, SEEK_END);
+    else fprintf(f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n");
+    fprintf(f, "<DataSet timestep=\"%d\" file=\"triangles_%06d.vtu\"/>\n%s", step, step, close_tags);
+    if (ferror(f) | fclose(f)) return gb_fail(err, GB_EIO, "%s: write failed", path);
+    return GB_OK;
 }
 
 static gb_status write_sliding(const char *path, const gb_sliding_contact *c, int n, gb_error *err)
@@ -233,7 +233,7 @@ gb_status gb_measure_write_step(const char *dir, const gb_sim *sim, int step, gb
     }
     if (!st && z.tri_ok) {
         snprintf(path, sizeof path, "%s/fields/triangles_%06d.vtu", dir, step);
-        if (!(st = write_triangles(path, &z, err))) st = write_pvd(dir, step, err);
+        if (!(st = write_triangles(path, &z, err))) st = add_to_pvd(dir, step, err);
     }
     if (!st) {
         snprintf(path, sizeof path, "%s/fields/sliding_%06d.csv", dir, step);

@@ -6,6 +6,8 @@
  *   here (1e-8 of the largest value; the files hold 11 digits); the concentration is the hoop
  *   stress over s_ref = |force on the top| / its length 10 (1e-8); the strain follows from Hooke's
  *   law (1e-8); one grain: no triangles, all numbers finite.
+ * - hybrid with grains (validation/cavity_packing, 27 grains): every file of both steps, finite;
+ *   fields/triangles.pvd lists both steps.
  * - affine known answer: the 27 grains of validation/cavity_packing moved by x = (I + A) X + b in
  *   one "step": every grain's strain is the exact Green-Lagrange strain (1e-11, the files' digits),
  *   D2min <= 1e-20, the localisation index of the uniform strain is 0.1 (1e-9).
@@ -342,6 +344,34 @@ static void check_zone_follows_box(const char *dir)
     table_free(&L), table_free(&S);
 }
 
+/* Entries of fields/triangles.pvd (-1: no such file). */
+static int pvd_entries(const char *dir)
+{
+    char path[1200], line[512];
+    snprintf(path, sizeof path, "%s/fields/triangles.pvd", dir);
+    FILE *f = fopen(path, "r");
+    if (!f) return -1;
+    int n = 0, closed = 0;
+    while (fgets(line, sizeof line, f)) n += strstr(line, "<DataSet ") != NULL, closed += !strcmp(line, "</VTKFile>\n");
+    fclose(f);
+    return closed == 1 ? n : -2;
+}
+
+/* A hybrid run with grains (the 27-grain cavity packing): finite files, a reference stress. */
+static gb_status check_cavity_step(void *user, const gb_sim *sim, const gb_step_report *r, gb_error *err)
+{
+    run_ctx *c = user;
+    gb_status st = gb_run_output_step(c->out, sim, r, err);
+    if (st) return st;
+    c->steps_seen++;
+    table g, w, ring;
+    CHECK(read_step(c->dir, "grains", r->step, &g) && g.rows == 27);
+    CHECK(read_step(c->dir, "host_wall", r->step, &w) && w.rows == 24);
+    CHECK(read_step(c->dir, "host_ring", r->step, &ring) && ring.rows > 12);
+    table_free(&g), table_free(&w), table_free(&ring);
+    return GB_OK;
+}
+
 int main(void)
 {
     char base[] = "/tmp/gembem_measures_XXXXXX";
@@ -351,6 +381,12 @@ int main(void)
     int n = run("tests/hybrid/host_loading.yaml", dir, check_host_step);
     CHECK(n == 4);
     check_localisation(dir, n, 1);
+    CHECK(pvd_entries(dir) == -1); /* one grain: never a triangle */
+    snprintf(dir, sizeof dir, "%s/cavity", base);
+    n = run("validation/cavity_packing/scene.yaml", dir, check_cavity_step);
+    CHECK(n == 2);
+    check_localisation(dir, n, 1);
+    CHECK(pvd_entries(dir) == 2);
     snprintf(dir, sizeof dir, "%s/affine", base);
     check_affine(dir);
     snprintf(dir, sizeof dir, "%s/granular", base);
@@ -358,6 +394,7 @@ int main(void)
     CHECK(n == 21);
     check_localisation(dir, n, 0);
     check_zone_follows_box(dir);
+    CHECK(pvd_entries(dir) == 21);
     if (!gb_test_failures) {
         char cmd[300];
         snprintf(cmd, sizeof cmd, "rm -rf '%s'", base);
