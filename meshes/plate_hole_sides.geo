@@ -1,0 +1,18 @@
+// Square body 40 x 40 (a wide plate for Kirsch's hole) with a circular cavity of radius 2.5 at its centre, its sides in separate
+// physical groups "bottom", "right", "top", "left" (for loading the body), and "cavity".
+L = 40; R = 2.5; lc = 2.0;
+Point(1) = {-L/2, -L/2, 0, lc}; Point(2) = {L/2, -L/2, 0, lc};
+Point(3) = {L/2, L/2, 0, lc};   Point(4) = {-L/2, L/2, 0, lc};
+Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};
+Point(5) = {0, 0, 0, lc};
+Point(6) = {R, 0, 0, lc}; Point(7) = {0, R, 0, lc}; Point(8) = {-R, 0, 0, lc}; Point(9) = {0, -R, 0, lc};
+Circle(5) = {6, 5, 7}; Circle(6) = {7, 5, 8}; Circle(7) = {8, 5, 9}; Circle(8) = {9, 5, 6};
+Curve Loop(1) = {1, 2, 3, 4};
+Curve Loop(2) = {5, 6, 7, 8};
+Plane Surface(1) = {1, 2};
+Physical Curve("bottom") = {1};
+Physical Curve("right") = {2};
+Physical Curve("top") = {3};
+Physical Curve("left") = {4};
+Physical Curve("cavity") = {5, 6, 7, 8};
+Physical Surface("body") = {1};
