@@ -62,15 +62,63 @@ static gb_status add_remote(const gb_bem_mesh *m, const gb_bem_system *sys, cons
     return GB_OK;
 }
 
+/* The outputs of every right-hand side's whole state (see gb_bem_outputs). Column j of B holds the
+ * unknown half of every DOF (z: traction where the displacement is given, else displacement). */
+static gb_status case_outputs(const gb_bem_mesh *m, const gb_bem_system *sys, const gb_bem_problem *probs, int n_probs,
+                              int group, const unsigned char *tu, const double *given, const double *B,
+                              const gb_bem_stiffness *k, gb_bem_outputs *o, gb_error *err)
+{
+    int nd = 2 * m->n, mm = k->m, no = o->n_out;
+    double *u = malloc(sizeof(double) * (size_t)nd), *t = malloc(sizeof(double) * (size_t)nd),
+           *uinf = malloc(sizeof(double) * (size_t)mm);
+    if (!u || !t || !uinf) {
+        free(u), free(t), free(uinf);
+        return gb_fail(err, GB_ENOMEM, "out of memory for the condensation's outputs");
+    }
+    for (int j = 0; j < mm + n_probs; j++) {
+        const double *z = B + (size_t)j * (size_t)nd;
+        const double *gv = j < mm ? NULL : given + (size_t)(j - mm) * (size_t)nd;
+        int unit = j < mm ? 2 * k->elem[j / 2] + j % 2 : -1;
+        for (int d = 0; d < nd; d++) {
+            int in_group = m->group[d / 2] == group; /* held at zero in a load case */
+            double g = gv && !in_group ? gv[d] : d == unit ? 1 : 0;
+            u[d] = tu[d] ? g : z[d];
+            t[d] = tu[d] ? z[d] : g;
+        }
+        const gb_bem_problem *p = j < mm ? NULL : &probs[j - mm];
+        int remote = p && gb_bem_remote_active(m, p);
+        for (int e = 0; remote && e < m->n; e++) { /* total fields */
+            double ru[2], rt[2];
+            gb_bem_remote_u(&sys->material, p, m->mid + 2 * e, ru);
+            gb_bem_remote_t(p, m->normal + 2 * e, rt);
+            u[2 * e] += ru[0], u[2 * e + 1] += ru[1], t[2 * e] += rt[0], t[2 * e + 1] += rt[1];
+        }
+        double *col = o->out + (size_t)j * (size_t)no;
+        for (int q = 0; q < no; q++) {
+            const double *a = o->wu + (size_t)q * (size_t)nd, *b = o->wt + (size_t)q * (size_t)nd;
+            double s = 0;
+            for (int d = 0; d < nd; d++) s += a[d] * u[d] + b[d] * t[d];
+            col[q] = s;
+        }
+        if (remote) { /* the group now moves with the remote field: take those unit states back out */
+            for (int q = 0; q < mm; q += 2) gb_bem_remote_u(&sys->material, p, m->mid + 2 * k->elem[q / 2], uinf + q);
+            for (int i = 0; i < mm; i++)
+                for (int q = 0; q < no; q++) col[q] -= uinf[i] * o->out[(size_t)i * (size_t)no + (size_t)q];
+        }
+    }
+    free(u), free(t), free(uinf);
+    return GB_OK;
+}
+
 gb_status gb_bem_condense(const gb_bem_mesh *m, const gb_bem_system *sys, const gb_bem_problem *prob, int group,
                           const gb_bem_guard *guard, gb_bem_stiffness *out, gb_error *err)
 {
-    return gb_bem_condense_loads(m, sys, prob, 1, group, guard, out, NULL, err);
+    return gb_bem_condense_loads(m, sys, prob, 1, group, guard, out, NULL, NULL, err);
 }
 
 gb_status gb_bem_condense_loads(const gb_bem_mesh *m, const gb_bem_system *sys, const gb_bem_problem *probs,
                                 int n_probs, int group, const gb_bem_guard *guard, gb_bem_stiffness *out,
-                                double *f0_more, gb_error *err)
+                                double *f0_more, gb_bem_outputs *outs, gb_error *err)
 {
     memset(out, 0, sizeof *out);
     if (group < 0 || group >= m->n_groups) return gb_fail(err, GB_EINPUT, "no boundary group %d to condense on", group);
@@ -133,6 +181,7 @@ gb_status gb_bem_condense_loads(const gb_bem_mesh *m, const gb_bem_system *sys, 
         for (int j = 0; !st && j < n_probs; j++)
             st = add_remote(m, sys, &probs[j], out, j ? f0_more + (size_t)(j - 1) * (size_t)mm : out->f0, err);
     }
+    if (!st && outs) st = case_outputs(m, sys, probs, n_probs, group, tu, given, B, out, outs, err);
     if (!st) {
         double num = 0, den = 0;
         for (int i = 0; i < mm; i++)

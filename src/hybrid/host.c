@@ -18,6 +18,7 @@ void gb_host_free(gb_host *h)
     free(h->load0);
     free(h->f0_base);
     free(h->f0_unit);
+    free(h->resultant_unit);
     free(h);
 }
 

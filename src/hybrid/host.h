@@ -32,6 +32,10 @@ typedef struct {
     double *load0;       /* the values at creation */
     double *f0_base;     /* f0 at creation, m */
     double *f0_unit;     /* m per load: f0 for a unit value of that load alone */
+    /* Each group's force and mean displacement (4 per group) are linear too: their values for a
+     * unit displacement of each cavity DOF (m columns), for the loads at creation (1) and for a
+     * unit value of each load (n_loads); gb_host_group_resultant sums them, no solve per step. */
+    double *resultant_unit;
 } gb_host;
 
 /* Meshes, assembles and condenses the host, with the unit responses of f0 to every loadable value
@@ -56,6 +60,8 @@ gb_status gb_host_solve(const gb_host *h, gb_bem_solution *sol, gb_error *err);
 /* A group's total force (sum of traction x length over its elements: what the outside puts on the
  * body) and its mean displacement (length-weighted), from a solution of gb_host_solve. */
 void gb_host_group_sum(const gb_host *h, const gb_bem_solution *sol, int group, double force[2], double disp[2]);
+/* The same for the current cavity displacements and loads, from the unit responses: O(m + n_loads). */
+void gb_host_group_resultant(const gb_host *h, int group, double force[2], double disp[2]);
 /* The same by name, solving for it. */
 gb_status gb_host_group_force(const gb_host *h, const char *group, double force[2], double disp[2], gb_error *err);
 /* 1 if (x, y) lies in the cavity: not in the body, and within the cavity's bounding box. */

@@ -18,6 +18,14 @@ static double *load_value(gb_bem_problem *p, const gb_host_load *l)
     return l->group < 0 ? &p->remote_stress[l->comp] : &p->bc[l->group].value[l->comp];
 }
 
+/* How far load j is from its value at creation. */
+static double load_change(const gb_host *h, int j)
+{
+    const gb_host_load *l = &h->loads[j];
+    double v = l->group < 0 ? h->prob.remote_stress[l->comp] : h->prob.bc[l->group].value[l->comp];
+    return v - h->load0[j];
+}
+
 gb_status gb_host_condense(gb_host *h, gb_error *err)
 {
     int n = 0;
@@ -47,22 +55,56 @@ gb_status gb_host_condense(gb_host *h, gb_error *err)
         *load_value(&probs[1 + j], &h->loads[j]) = 1;
     }
     /* the cavity's size is known only after condensing: count its elements for the unit responses */
-    int mm = 0;
+    int mm = 0, nd = 2 * h->mesh.n, no = 4 * h->mesh.n_groups;
     for (int e = 0; e < h->mesh.n; e++) mm += 2 * (h->mesh.group[e] == h->cavity);
     h->f0_unit = malloc((size_t)(n > 0 ? n : 1) * (size_t)mm * sizeof(double));
     h->f0_base = malloc((size_t)(mm > 0 ? mm : 1) * sizeof(double));
-    gb_status st = !h->f0_unit || !h->f0_base ? gb_fail(err, GB_ENOMEM, "out of memory for the host's loads") : GB_OK;
-    if (!st) st = gb_bem_condense_loads(&h->mesh, &h->sys, probs, n + 1, h->cavity, NULL, &h->K, h->f0_unit, err);
+    h->resultant_unit = malloc((size_t)no * (size_t)(mm + n + 1) * sizeof(double));
+    /* resultant weights: per group, its force (sum of L t) and mean displacement (sum of L u / its length) */
+    double *wu = calloc((size_t)no * (size_t)nd, sizeof(double)), *wt = calloc((size_t)no * (size_t)nd, sizeof(double)),
+           *glen = calloc((size_t)h->mesh.n_groups, sizeof(double));
+    gb_status st = !h->f0_unit || !h->f0_base || !h->resultant_unit || !wu || !wt || !glen
+                       ? gb_fail(err, GB_ENOMEM, "out of memory for the host's loads")
+                       : GB_OK;
+    for (int e = 0; !st && e < h->mesh.n; e++) glen[h->mesh.group[e]] += h->mesh.length[e];
+    for (int e = 0; !st && e < h->mesh.n; e++) {
+        int g = h->mesh.group[e];
+        double L = h->mesh.length[e];
+        for (int c = 0; c < 2; c++) {
+            wt[(size_t)(4 * g + c) * (size_t)nd + (size_t)(2 * e + c)] = L;
+            wu[(size_t)(4 * g + 2 + c) * (size_t)nd + (size_t)(2 * e + c)] = L / glen[g];
+        }
+    }
+    gb_bem_outputs outs = {no, wu, wt, h->resultant_unit};
+    if (!st) st = gb_bem_condense_loads(&h->mesh, &h->sys, probs, n + 1, h->cavity, NULL, &h->K, h->f0_unit, &outs, err);
     if (!st) memcpy(h->f0_base, h->K.f0, (size_t)mm * sizeof(double));
-    free(probs);
+    free(probs), free(wu), free(wt), free(glen);
     return st;
+}
+
+void gb_host_group_resultant(const gb_host *h, int g, double force[2], double disp[2])
+{
+    int no = 4 * h->mesh.n_groups, m = h->m;
+    double r[4];
+    const double *base = h->resultant_unit + (size_t)m * (size_t)no;
+    for (int c = 0; c < 4; c++) r[c] = base[4 * g + c];
+    for (int j = 0; j < m; j++) {
+        const double *col = h->resultant_unit + (size_t)j * (size_t)no;
+        for (int c = 0; c < 4; c++) r[c] += h->u[j] * col[4 * g + c];
+    }
+    for (int j = 0; j < h->n_loads; j++) {
+        double dv = load_change(h, j);
+        const double *col = h->resultant_unit + (size_t)(m + 1 + j) * (size_t)no;
+        for (int c = 0; c < 4; c++) r[c] += dv * col[4 * g + c];
+    }
+    force[0] = r[0], force[1] = r[1], disp[0] = r[2], disp[1] = r[3];
 }
 
 void gb_host_update_f0(gb_host *h)
 {
     memcpy(h->K.f0, h->f0_base, (size_t)h->m * sizeof(double));
     for (int j = 0; j < h->n_loads; j++) {
-        double dv = *load_value(&h->prob, &h->loads[j]) - h->load0[j];
+        double dv = load_change(h, j);
         if (dv == 0) continue;
         const double *r = h->f0_unit + (size_t)j * (size_t)h->m;
         for (int q = 0; q < h->m; q++) h->K.f0[q] += dv * r[q];

@@ -9,6 +9,8 @@
  *  - the host's state solved for the coupled cavity displacements (gb_bem_solve_group_displacement)
  *    puts on the cavity's elements the forces K u + f0 (1e-8), and their sum is the grains' total
  *    body force (zero here: 1e-8);
+ *  - every group's force and mean displacement summed from the unit responses (host_steps.csv)
+ *    equal those of the solve (1e-10 of the largest);
  *  - the body's boundary forces balance: the sum over every group, the cavity included, of
  *    traction x length is zero to the discretisation error of constant elements (collocation
  *    does not make it exact: 1.5 % of the largest group force with 5 elements a side and rollers
@@ -128,12 +130,23 @@ static gb_status check(void *user, const gb_sim *sim, const gb_step_report *r, g
     gb_bem_stiffness_free(&k);
 
     /* the body's boundary forces balance */
-    double total[2] = {0, 0}, fmaxg = 0, gf[GB_BEM_MAX_GROUPS][2], gu[GB_BEM_MAX_GROUPS][2];
+    double total[2] = {0, 0}, fmaxg = 0, umaxg = 0, gf[GB_BEM_MAX_GROUPS][2], gu[GB_BEM_MAX_GROUPS][2];
     for (int g = 0; g < h->mesh.n_groups; g++) {
         gb_host_group_sum(h, &sol, g, gf[g], gu[g]);
         total[0] += gf[g][0], total[1] += gf[g][1];
         fmaxg = fmax(fmaxg, hypot(gf[g][0], gf[g][1]));
+        umaxg = fmax(umaxg, hypot(gu[g][0], gu[g][1]));
     }
+    /* the resultants of host_steps.csv, summed from unit responses, against the solve */
+    double dres_f = 0, dres_u = 0;
+    for (int g = 0; g < h->mesh.n_groups; g++) {
+        double f[2], u[2];
+        gb_host_group_resultant(h, g, f, u);
+        for (int c = 0; c < 2; c++)
+            dres_f = fmax(dres_f, fabs(f[c] - gf[g][c])), dres_u = fmax(dres_u, fabs(u[c] - gu[g][c]));
+    }
+    CHECK(dres_f <= 1e-10 * fmax(fmaxg, scale));
+    CHECK(dres_u <= 1e-10 * fmax(umaxg, max_abs(h->u, m)));
     CHECK(hypot(total[0], total[1]) <= (h->mesh.unbounded ? 1e-8 * scale : 0.02 * fmaxg));
 
     /* an empty granular zone: the module's own solution with a traction-free cavity */
@@ -161,9 +174,10 @@ static gb_status check(void *user, const gb_sim *sim, const gb_step_report *r, g
     }
     gb_bem_solution_free(&sol);
     printf("step %d: %d particle contacts; |f0| %.4g, f0 - fresh %.2g; |K u + f0| %.4g, grains - host %.2g, "
-           "tractions - host %.2g; largest group force %.4g, resultant %.2g; empty zone: u %.4g, coupled - module "
+           "tractions - host %.2g; largest group force %.4g, resultant %.2g; summed resultants - solve %.2g, %.2g; empty zone: u %.4g, coupled - module "
            "%.2g, forces %.2g\n",
-           r->step, n_bp_contacts, f0max, df0, scale, dforce, dcav, fmaxg, hypot(total[0], total[1]), umax, du, dgf);
+           r->step, n_bp_contacts, f0max, df0, scale, dforce, dcav, fmaxg, hypot(total[0], total[1]), dres_f, dres_u, umax,
+           du, dgf);
     return record(log, sim);
 }
 
