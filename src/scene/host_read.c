@@ -97,9 +97,16 @@ gb_status gb_host_section_read(gb_ymap *top, gb_host_def *h, gb_error *err)
         h->bc_group[h->n_bcs][len] = '\0';
         char path[GB_BEM_NAME_MAX + 32];
         snprintf(path, sizeof path, "host.boundary.%s", h->bc_group[h->n_bcs]);
+        int is_map = vnode && fy_node_get_type(vnode) == FYNT_MAPPING;
         if (val && vlen == 12 && !strncmp(val, "displacement", 12)) {
             memset(bc, 0, sizeof *bc);
             bc->kind = GB_BEM_BC_DISPLACEMENT;
+        } else if (!is_map && !(val && ((vlen == 5 && !strncmp(val, "fixed", 5)) || (vlen == 4 && !strncmp(val, "free", 4))))) {
+            /* an empty value has no position of its own: name its key's */
+            return gb_yaml_fail(m.doc, vnode && !(val && vlen == 0) ? vnode : fy_node_pair_key(p), err,
+                                "%s: expected fixed, free, displacement (from zero, moved by stages), {displacement: "
+                                "[ux, uy]}, {traction: [tx, ty]}, {pressure: p}, {normal_displacement: d} or "
+                                "{ux | tx: a, uy | ty: b}", path);
         } else if ((st = gb_bem_bc_read(m.doc, vnode, path, bc, err))) {
             return st;
         }
