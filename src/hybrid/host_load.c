@@ -1,7 +1,8 @@
-/* Loading the host in steps (METHOD.md section 11): f0 of the condensed cavity is linear in the
- * boundary values of the other groups and in the remote stress, so the condensation computes, once
- * and with the same factorisation, f0's response to a unit value of each; a load step then only
- * adds up those responses. */
+/* Loading the host in steps (issue 7; the coupling of METHOD.md section 10): f0 of the condensed
+ * cavity is linear in the boundary values of the other groups and in the remote stress, so the
+ * condensation computes, once and with the same factorisation, f0's response to a unit value of
+ * each (and the groups' resultants' responses, for host_steps.csv); a load step then only adds up
+ * those responses. */
 #include <stdlib.h>
 #include <string.h>
 
