@@ -492,9 +492,10 @@ gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const gb_wall_control *wc,
     int n = gl->n, np = gl->np;
     if ((st = tangents(gl, sim, err))) return st;
     for (int i = 0; i < n; i++) {
-        int few = sim->nc[i] < 2;
-        gl->held[3 * i] = gl->held[3 * i + 1] = (unsigned char)few;
-        gl->held[3 * i + 2] = (unsigned char)(few || !(gl->S[6 * i + 5] > 0)); /* no rotational stiffness */
+        int out = !sim->in_system[i];
+        gl->held[3 * i] = gl->held[3 * i + 1] = (unsigned char)out;
+        gl->held[3 * i + 2] = (unsigned char)(out || sim->in_system[i] == GB_IN_SYSTEM_NO_ROTATION ||
+                                              !(gl->S[6 * i + 5] > 0)); /* no rotational stiffness */
         for (int a = 0; a < 3; a++) gl->rhs[3 * i + a] = gl->held[3 * i + a] ? 0 : -sim->F[3 * i + a];
     }
     int rigid = sim->scene->host.rigid; /* a rigid cavity: its particles are held */
@@ -535,7 +536,7 @@ gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const gb_wall_control *wc,
     double a = sv->global_alpha, scale = worst * a > sv->max_move ? sv->max_move / worst : a;
     for (int i = 0; i < n; i++) {
         double *d = &sim->dX[3 * i];
-        if (sim->nc[i] < 2) {
+        if (!sim->in_system[i]) {
             gb_gem_grain_move(sim, i, d);
             continue;
         }
