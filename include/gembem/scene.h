@@ -107,7 +107,15 @@ typedef struct {
     int n_snapshot_steps;
     int *snapshot_steps;     /* and at these global step numbers */
     int contacts_every;      /* write contacts/contacts_NNNNNN.csv every k steps (and at snapshots) */
+    /* The per-step measures (src/measure): localisation.csv gets a row at every step; the files
+     * of fields/ are written at the steps that are multiples of measures_every (step 0 included;
+     * 0: never). Default GB_MEASURES_DEFAULT_EVERY below GB_MEASURES_DEFAULT_GRAINS grains, else 0. */
+    int measures_every;
+    int measures_every_given; /* the scene set it (else the default by size) */
 } gb_scene;
+
+#define GB_MEASURES_DEFAULT_GRAINS 5000
+#define GB_MEASURES_DEFAULT_EVERY 1
 
 /* Reads and validates a scene; on any error *out is left empty and err says file:line:column. */
 gb_status gb_scene_load(const char *path, gb_scene *out, gb_error *err);

@@ -276,6 +276,15 @@ static gb_status read_output(gb_ymap *top, gb_scene *s, gb_error *err)
     long contacts_every = 0;
     if ((st = gb_ymap_int(&m, "contacts_every", 0, 0, 100000000L, &contacts_every, err))) return st;
     s->contacts_every = (int)contacts_every;
+    /* fields/ of the per-step measures: every step for small scenes, off for large ones (about 600
+     * bytes per grain and step) unless the scene says */
+    struct fy_node *me;
+    long measures_every = s->n_grains < GB_MEASURES_DEFAULT_GRAINS ? GB_MEASURES_DEFAULT_EVERY : 0;
+    if ((st = gb_ymap_find(&m, "measures_every", 0, &me, err)) ||
+        (st = gb_ymap_int(&m, "measures_every", 0, 0, 100000000L, &measures_every, err)))
+        return st;
+    s->measures_every = (int)measures_every;
+    s->measures_every_given = me != NULL;
     if (list) {
         int total = gb_scene_total_steps(s);
         if (fy_node_get_type(list) != FYNT_SEQUENCE)
