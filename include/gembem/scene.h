@@ -88,12 +88,36 @@ typedef struct {
     int rigid;                    /* the cavity does not deform: boundary particles held (a reference) */
 } gb_host_def;
 
+/* A hybrid run's host as a state file left it (`initial_state:` of a scene with a host): the
+ * cavity's displacements and boundary particles, the current values of every group's condition
+ * and the remote stress, checked against the scene's mesh and conditions when read. */
+typedef struct {
+    int present;
+    int n_cavity;        /* cavity elements, in the host's (mesh) order */
+    double *u;           /* their displacements, 2 per element */
+    double *xy;          /* their boundary particles' centres now, 2 per element */
+    gb_bem_bc bc[GB_HOST_MAX_BCS]; /* by the scene's host.bc_group index: the current values */
+    double remote_stress[3];
+} gb_host_state;
+
+/* The global solver's Levenberg-Marquardt damping as a state file left it, so that a restart
+ * follows the path of the run it continues. */
+#define GB_SOLVER_HISTORY 10
+typedef struct {
+    int present;
+    double mu;
+    double history[GB_SOLVER_HISTORY];
+    int next;
+} gb_solver_state;
+
 typedef struct {
     char path[512];          /* the scene file */
     char length_unit[32], force_unit[32];
     gb_material grain_grain, grain_wall;
     gb_material grain_boundary;  /* grains against boundary particles: kt = 0 unless given */
     gb_host_def host;            /* instead of a box */
+    gb_host_state host_state;    /* from initial_state: the host where the earlier run left it */
+    gb_solver_state solver_state; /* from initial_state */
     int n_grains;
     gb_grain *grains;
     int n_contacts;

@@ -66,7 +66,7 @@ struct gb_sim {
     /* The state before a trial move of the global solver. */
     gb_sim_state trial;
     double lm_mu;        /* Levenberg-Marquardt damping of the global solver */
-#define LM_MEMORY 10
+#define LM_MEMORY GB_SOLVER_HISTORY
     double lm_history[LM_MEMORY]; /* merits before the last accepted moves */
     int lm_next;
     unsigned char *in_system; /* per grain: moved by the global system in this iteration */
