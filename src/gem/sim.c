@@ -172,6 +172,9 @@ gb_status gb_sim_create(const gb_scene *scene, gb_sim **out, gb_error *err)
         gb_pair *p = find_pair(&sim->pairs, i, j);
         if (!p || !(p->d > 0)) {
             gb_sim_free(sim);
+            if (GB_IS_PARTICLE(ci->j))
+                return gb_fail(err, GB_EINPUT, "initial contact %d (grain %d, boundary particle p%d) does not overlap",
+                               c, ci->i, GB_PARTICLE_OF(ci->j));
             return gb_fail(err, GB_EINPUT, "initial contact %d (grains %d, %d) does not overlap", c, ci->i, ci->j);
         }
         /* Seen from the lower index the tangential force keeps its sign (K 25). */
