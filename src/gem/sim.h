@@ -66,7 +66,7 @@ struct gb_sim {
     /* The state before a trial move of the global solver. */
     gb_sim_state trial;
     double lm_mu;        /* Levenberg-Marquardt damping of the global solver */
-#define LM_MEMORY 10
+#define LM_MEMORY GB_SOLVER_HISTORY
 /* sim->in_system: 0 moved by the reference cases, else by the global system, its rotation held or not */
 #define GB_IN_SYSTEM 1
 #define GB_IN_SYSTEM_NO_ROTATION 2
