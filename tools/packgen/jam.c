@@ -246,5 +246,7 @@ int main(int argc, char **argv)
                     "force %.3g, %d contacts between discs and %d with walls (%.2f per disc), wall stresses s_x %.4g s_y %.4g\n",
             n, porosity, converged ? "converged" : "NOT converged", it, rebuilds, worst, contacts, walls,
             (2.0 * contacts + walls) / n, 0.5 * (wall[0] + wall[1]) / H, 0.5 * (wall[2] + wall[3]) / W);
+    free(J.x), free(J.y), free(J.r), free(J.vx), free(J.vy), free(J.fx), free(J.fy), free(J.m);
+    free(J.x0), free(J.y0), free(J.pi), free(J.pj), free(J.head), free(J.next);
     return converged ? 0 : 3;
 }
