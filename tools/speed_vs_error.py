@@ -251,6 +251,7 @@ def cavity_reference_iteration():
 
 def cavity_section():
     """The 27-grain cavity packing: error against a tightly converged run, over a and the solver."""
+    load = os.getloadavg()
     refusal = cavity_reference_iteration()
     if refusal is None:
         sys.exit("the reference iteration now runs hybrid scenes: add it to CAVITY_SOLVERS")
@@ -277,6 +278,10 @@ def cavity_section():
                     r.update(pos=position_error(r, exact), force=force_error(r, exact),
                              own=position_error(r, ref[solver]))
                 rows[case].append(dict(r, solver=solver, a=a, secs=secs, iters=iters))
+    # the reference's own error: against a run 100 times tighter still (untimed)
+    tighter = cavity_result(run_scene("cavity_confined_umfpack_tighter", cavity_scene(
+        "confined", CAVITY_TIGHT / 100, "umfpack"), repeat=1)[0])
+    self_pos = position_error(exact, tighter)
     sym_pos = position_error(ref["global CHOLMOD"], exact)
     sym_force = force_error(ref["global CHOLMOD"], exact)
     # the iterations per decade of a, with friction and without (one run each end, untimed)
@@ -339,7 +344,8 @@ def cavity_section():
         "## Cavity packing (hybrid, validation/cavity_packing)",
         "",
         f"Measured {datetime.date.today()}; the fastest of {CAVITY_REPEAT} runs of each setting, taken in turn (on this",
-        "shared machine the times still vary by some 20 % from one regeneration to the next).",
+        f"shared machine the times still vary by some 20 % from one regeneration to the next; load average",
+        f"{load[0]:.1f} before the runs, {os.getloadavg()[0]:.1f} after).",
         "",
         "The 27 grains in the cavity of the elastic square (validation/cavity_packing/README.md), relaxed",
         "by the global solver to the accuracy a (every grain's and boundary particle's fixing force",
@@ -350,7 +356,8 @@ def cavity_section():
         f"element over the largest such force ({top:.0f} kgf). The tight runs of CHOLMOD (which solves the",
         f"symmetric part of the host's K, unsymmetric by {100 * asym:.1f} %) and UMFPACK differ by {sym_pos:.1e} cm in",
         f"the grain positions and {sym_force:.1e} in the cavity forces: no CHOLMOD run can get closer.",
-        "The last column measures CHOLMOD against its own tight run (its convergence alone).",
+        f"The reference itself is {self_pos:.0e} cm from a run at a = {CAVITY_TIGHT / 100:g} kgf. The last column measures CHOLMOD",
+        "against its own tight run (its convergence alone).",
         "",
         "**As placed** (the paper's scene): with no body force the grains separate until every overlap",
         "is gone, and a grain with no contact is in equilibrium wherever it stops, so its final place",
@@ -359,8 +366,8 @@ def cavity_section():
         "the result is from a state without overlaps: the largest overlap left (with the largest fixing",
         "force, below a by construction).",
         "",
-        f"The reference iteration does not run hybrid scenes: `gembem` refuses them (\"{refusal.split(': ', 2)[-1]}\"),",
-        "so only the global solver is measured.",
+        "The reference iteration does not run hybrid scenes, so only the global solver is measured:",
+        f"`gembem` refuses them (\"{refusal.split(': ', 2)[-1]}\").",
         "",
         "![error against seconds](speed_vs_error_cavity.png)",
         "",
@@ -394,8 +401,9 @@ def cavity_section():
         f"The iterations grow by {per_decade:.0f} per decade of a: the convergence is linear, not Newton's",
         f"quadratic one. At a = {hi:g} the largest force left is on grain {w['worst']}, which has "
         f"{w['worst_contacts']} contact{'s' if w['worst_contacts'] != 1 else ''}:",
-        "a grain with fewer than two contacts is held in the system and moved by the reference",
-        "iteration's cases, so its force only decays geometrically. Frictionless, the same scene takes",
+        "a grain with fewer than two contacts is not moved by the Newton step (it is held in the system)",
+        "but by the reference iteration's cases, and the force left there decays only geometrically",
+        "(measured, not proven: the largest forces left sit on that grain). Frictionless, the same scene takes",
         f"{nofric[0]} iterations at a = {lo:g} and {nofric[1]} at {hi:g} ({(nofric[1] - nofric[0]) / decades:.1f} per decade). "
         "With so few iterations",
         "per decade the time hardly depends on a: the linear solver, not a, sets the cost here.",
