@@ -311,15 +311,17 @@ def cavity_section():
         for solver, mark in zip(CAVITY_SOLVERS, "sd"):
             pts = [(r["secs"], max(r[key], FLOOR), r["a"]) for r in rows[case] if r["solver"] == solver]
             line, = ax.loglog([p[0] for p in pts], [p[1] for p in pts], mark + "-", label=solver)
-            labels = []  # [x, y, first a, annotation]: points on top of each other share one label
+            groups = []  # consecutive a with the same error (a plateau) share one label, at its slowest run
             for x, y, a in pts:
-                name = f"{a:.0e}".replace("e-0", "e-")
-                near = [g for g in labels if abs(math.log10(x / g[0])) < 0.05 and abs(math.log10(y / g[1])) < 0.3]
-                if near:
-                    near[0][3].set_text(near[0][2] + ".." + name)
-                    continue
-                labels.append([x, y, name, ax.annotate(name, (x, y), fontsize=6, color=line.get_color(),
-                                                       xytext=(3, 3), textcoords="offset points")])
+                if groups and abs(math.log10(y / groups[-1][-1][1])) < 0.15:
+                    groups[-1].append((x, y, a))
+                else:
+                    groups.append([(x, y, a)])
+            for g in groups:
+                name = "..".join(dict.fromkeys(f"{p[2]:.0e}".replace("e-0", "e-") for p in (g[0], g[-1])))
+                x, y, _ = max(g)
+                ax.annotate(name, (x, y), fontsize=6, color=line.get_color(), xytext=(3, 3),
+                            textcoords="offset points")
         if case == "confined":
             ax.axhline(sym_pos if key == "pos" else sym_force, color="grey", ls=":",
                        label="CHOLMOD's tight run (symmetrised K)")
