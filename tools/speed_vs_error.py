@@ -296,6 +296,7 @@ def cavity_section():
         [r for r in rows["confined"] if r["solver"] == "global CHOLMOD"]))[len(CAVITY_ACCURACIES) // 2]
     slope = sorted(conf[a]["pos"] / a for a in CAVITY_ACCURACIES)[len(CAVITY_ACCURACIES) // 2]
     chol = {r["a"]: r for r in rows["confined"] if r["solver"] == "global CHOLMOD"}
+    same_iters = all(chol[a]["iters"] == conf[a]["iters"] for a in CAVITY_ACCURACIES)
     top = max(math.hypot(*f) for f in exact["forces"])
     asym = float([line.split(":")[1].split("#")[0] for line in open(os.path.join(
         done["cavity_confined_umfpack_tight"][0], "host_info.yaml")) if line.startswith("asymmetry")][0])
@@ -400,15 +401,18 @@ def cavity_section():
         f"whose position error is about {slope:.1e} cm per kgf of a (a = 1e-4 kgf for {slope * 1e-4:.1e} cm), every",
         f"decade of a costing {per_decade:.0f} more iterations (about {100 * per_decade / conf[1e-3]['iters']:.0f} % more time).",
         "",
-        f"The iterations grow by {per_decade:.0f} per decade of a: the convergence is linear, not Newton's",
+    ] + textwrap.wrap(
+        f"The iterations grow by {per_decade:.0f} per decade of a: the convergence is linear, not Newton's "
         f"quadratic one. At a = {hi:g} the largest force left is on grain {w['worst']}, which has "
-        f"{w['worst_contacts']} contact{'s' if w['worst_contacts'] != 1 else ''}:",
-        "a grain with fewer than two contacts is not moved by the Newton step (it is held in the system)",
-        "but by the reference iteration's cases, and the force left there decays only geometrically",
-        "(measured, not proven: the largest forces left sit on that grain). Frictionless, the same scene takes",
-        f"{nofric[0]} iterations at a = {lo:g} and {nofric[1]} at {hi:g} ({(nofric[1] - nofric[0]) / decades:.1f} per decade). "
-        "With so few iterations",
-        "per decade the time hardly depends on a: the linear solver, not a, sets the cost here.",
+        f"{w['worst_contacts']} contact{'s' if w['worst_contacts'] != 1 else ''}: a grain with fewer than two "
+        "contacts is not moved by the Newton step (it is held in the system) but by the reference iteration's "
+        "cases, and the force left there decays only geometrically (measured, not proven: the largest force "
+        "left sits on that grain"
+        + ("; and CHOLMOD and UMFPACK, two different Newton systems, take the same iterations at every a"
+           if same_iters else "") + "). "
+        f"Frictionless, the same scene takes {nofric[0]} iterations at a = {lo:g} and {nofric[1]} at {hi:g} "
+        f"({(nofric[1] - nofric[0]) / decades:.1f} per decade). With so few iterations per decade the time hardly "
+        "depends on a: the linear solver, not a, sets the cost here.", 100) + [
         "",
     ] + textwrap.wrap(
         "As placed, " + ("CHOLMOD ends with every contact open (no overlap, no fixing force) whatever a; "
