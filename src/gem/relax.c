@@ -259,20 +259,19 @@ static double merit(const gb_sim *sim, const unsigned char *in_system, double wa
 }
 
 /* Which grains the global system moves (sim->in_system): those with two contacts or more, and
- * (GB_IN_SYSTEM_NO_ROTATION) a grain without body force whose single contact sticks with a
- * tangential spring. Such a grain's only zero mode is rolling over its neighbour, which its contact
- * force cannot drive, so the system holds its rotation and moves it with its neighbours: moved apart
- * by the reference case c) it would trade its force back and forth with the system every iteration
- * (a two-cycle that decays by a few per cent per iteration). With a body force it rolls: case c). */
+ * (GB_IN_SYSTEM_NO_ROTATION) a grain without body force whose single contact has a tangential
+ * spring. Such a grain's only zero mode is rolling over its neighbour, which its contact force
+ * cannot drive, so the system holds its rotation and moves it with its neighbours (its contact
+ * with kt in K even if it slides: the grain must unload it), where moved apart by the reference
+ * case c) it would trade its force back and forth with the system every iteration (a two-cycle
+ * that decays by a few per cent per iteration). With a body force it rolls: case c). */
 static void mark_system(gb_sim *sim)
 {
     for (int i = 0; i < sim->n; i++) sim->in_system[i] = sim->nc[i] >= 2 ? GB_IN_SYSTEM : 0;
     for (int k = 0; k < sim->pairs.n; k++) {
         const gb_pair *p = &sim->pairs.p[k];
         if (!(p->d > 0)) continue;
-        const gb_material *mat = gb_sim_material(sim, p->j);
-        double limit = p->pn * gb_sim_tan_phi(sim, p->j) + mat->cohesion;
-        if (!(mat->kt > 0) || fabs(p->pt) >= limit * (1 - 1e-9)) continue;
+        if (!(gb_sim_material(sim, p->j)->kt > 0)) continue;
         int ends[2] = {p->i, p->j >= 0 ? p->j : -1};
         for (int e = 0; e < 2; e++) {
             int i = ends[e];

@@ -16,6 +16,7 @@ typedef enum { GB_LINEAR_CHOLMOD = 0, GB_LINEAR_UMFPACK = 1 } gb_linear_kind;
 typedef struct {
     double assemble, analyse, factorise, solve;
     long analyses, factorisations, regularised;
+    long corrections; /* iterations solved twice: sliding contacts that the first solution unloads */
 } gb_global_stats;
 
 gb_status gb_global_create(gb_linear_kind kind, int n_grains, int n_particles, gb_global **out, gb_error *err);
