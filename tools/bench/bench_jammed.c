@@ -1,9 +1,9 @@
 /* Benchmark of load steps on jammed random packings (not a test).
  *   bench_jammed SCENE.yaml STEPS reference|cholmod|umfpack [PREP_CAP (5000)]
- * The scene's box is overfilled (tools/bench_gem.sh shrinks a deposit): the grains are first
- * relaxed with the walls fixed by the global solver (CHOLMOD), which leaves a jammed packing under
- * some isotropic-ish stress s_r; then STEPS load steps of isotropic stress control, each adding
- * 5 % of s_r, are run with the chosen solver. Prints one Markdown row: solver, grains, contacts,
+ * The scene's packing is jammed (tools/bench_gem.sh makes it with gb_jam): the grains are first
+ * relaxed with the walls fixed by the global solver (CHOLMOD; no iteration if gb_jam's packing is
+ * already within a), which leaves it under some isotropic-ish stress s_r; then STEPS load steps
+ * of isotropic stress control, each adding 5 % of s_r, are run with the chosen solver. Prints one Markdown row: solver, grains, contacts,
  * preparation iterations and seconds, s_r, iterations per load step, seconds per iteration,
  * nanoseconds per contact and iteration. */
 #define _POSIX_C_SOURCE 199309L
@@ -65,6 +65,12 @@ int main(int argc, char **argv)
     printf("| %s | %d | %d | %ld (%.1f s) | %.3g | %s%.0f | %.3e | %.1f | %.1f |\n", method, sim->n, contacts, prep,
            t_prep, sr, done < steps ? "not converged after " : "", done < steps ? (double)it : (double)it / steps,
            t_steps / (it ? it : 1), 1e9 * t_steps / (contact_its ? contact_its : 1), t_steps);
+    if (sim->global) {
+        const gb_global_stats *g = gb_global_statistics(sim->global);
+        fprintf(stderr, "  %s %d: whole run: assembly %.2f s, %ld analyses %.2f s, %ld factorisations %.2f s, solves %.2f s, "
+                "%ld corrections, %ld regularised\n", method, sim->n, g->assemble, g->analyses, g->analyse, g->factorisations,
+                g->factorise, g->solve, g->corrections, g->regularised);
+    }
     gb_sim_free(sim);
     gb_scene_free(&sc);
     return 0;

@@ -169,7 +169,7 @@ int main(int argc, char **argv)
     int n = J.n;
     if (n < 1) return fprintf(stderr, "gb_jam: %s holds no disc\n", in), 2;
 
-    /* Shrink to the porosity (as tools/overfill.py did). */
+    /* Shrink to the porosity: neighbours overlap, the packing is jammed. */
     double area = 0, rmax = 0, rmin = HUGE_VAL;
     for (int i = 0; i < n; i++) area += PI * J.r[i] * J.r[i], rmax = fmax(rmax, J.r[i]), rmin = fmin(rmin, J.r[i]);
     double p0 = 1 - area / ((box[1] - box[0]) * (box[3] - box[2]));
