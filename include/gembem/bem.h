@@ -139,6 +139,10 @@ typedef struct {
     int u_given; /* GB_BEM_BC_COMPONENTS only: bit 0 x, bit 1 y */
 } gb_bem_bc;
 
+/* How many of value[] a condition uses: 2 (displacement, traction, component-wise), 1 (pressure,
+ * normal displacement), 0 (fixed, free, none). */
+int gb_bem_bc_n_values(const gb_bem_bc *bc);
+
 typedef struct {
     gb_bem_bc bc[GB_BEM_MAX_GROUPS]; /* by mesh group index */
     double remote_stress[3];         /* sxx, syy, sxy at infinity (unbounded bodies only) */
@@ -217,6 +221,28 @@ typedef struct {
 
 gb_status gb_bem_condense(const gb_bem_mesh *mesh, const gb_bem_system *sys, const gb_bem_problem *prob, int group,
                           const gb_bem_guard *guard, gb_bem_stiffness *k, gb_error *err);
+/* Linear outputs of the whole boundary state (resultants, means, ...) of every load case of a
+ * condensation: output o = sum_d wu[o 2n + d] u[d] + wt[o 2n + d] t[d] (total fields, 2n DOFs;
+ * row-major n_out x 2n weights). out (n_out x (m + n_probs), column-major, the caller allocates)
+ * receives, in column j < m, the outputs of the state with the group's DOF j displaced by one and
+ * every other value and the remote stress zero, and in column m + i those of load case i with the
+ * group held at u = 0. The state for group displacements u and load case i is then
+ * sum_j u_j column j + column m + i: no solve per step. */
+typedef struct {
+    int n_out;
+    const double *wu, *wt;
+    double *out;
+} gb_bem_outputs;
+
+/* The same for n_probs load cases that differ only in their values (the same condition kinds on
+ * every group, so one factorisation serves all: m + n_probs right-hand sides): K and f0 of
+ * probs[0] in k, the f0 of probs[j] (j >= 1) in f0_more[(j - 1) m .. j m) (the caller allocates
+ * (n_probs - 1) m, m = 2 x group elements; NULL when n_probs is 1). f0 is linear in the values of
+ * the conditions and the remote stress: unit load cases give the response of f0 to each. `outs`
+ * (NULL: none) asks for linear outputs of every case's whole boundary state. */
+gb_status gb_bem_condense_loads(const gb_bem_mesh *mesh, const gb_bem_system *sys, const gb_bem_problem *probs,
+                                int n_probs, int group, const gb_bem_guard *guard, gb_bem_stiffness *k,
+                                double *f0_more, gb_bem_outputs *outs, gb_error *err);
 void gb_bem_stiffness_free(gb_bem_stiffness *k);
 
 /* ---------------------------------------------------------------- scenes */

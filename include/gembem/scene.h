@@ -36,8 +36,11 @@ typedef enum {
     GB_STAGE_SHEAR_MEAN = 2,     /* constant mean stress shear: d(e1 - e2) per step */
     GB_STAGE_BIAXIAL_STRESS = 3, /* stress-controlled: s1, s2 targets */
     GB_STAGE_RELAX = 4,          /* nothing imposed: equilibrium from the current placement */
-    GB_STAGE_HOST_DISPLACEMENT = 5 /* the host's groups displaced by given increments per step */
+    GB_STAGE_HOST_DISPLACEMENT = 5, /* the host's 'displacement' groups moved by increments per step */
+    GB_STAGE_HOST_LOAD = 6          /* the host's condition values and remote stress grown per step */
 } gb_stage_kind;
+
+#define GB_HOST_MAX_BCS 16
 
 typedef struct {
     gb_stage_kind kind;
@@ -48,10 +51,13 @@ typedef struct {
     double d_shear;      /* GB_STAGE_SHEAR_MEAN: d(e1 - e2) per step */
     double mean_stress;  /* GB_STAGE_SHEAR_MEAN: the mean stress held */
     int reset_strain;    /* strains are measured from the box at the start of this stage */
-    /* GB_STAGE_HOST_DISPLACEMENT: per step, group host_group[k] moves by host_increment[k] */
+    /* GB_STAGE_HOST_DISPLACEMENT, GB_STAGE_HOST_LOAD: per step, the values of group host_group[k]'s
+     * condition grow by host_increment[k] (2 values, or 1 for a pressure or normal displacement),
+     * and the remote stress of an unbounded host by host_remote_increment (sxx, syy, sxy) */
     int n_host_groups;
-    char host_group[4][GB_BEM_NAME_MAX];
-    double host_increment[4][2];
+    char host_group[GB_HOST_MAX_BCS][GB_BEM_NAME_MAX];
+    double host_increment[GB_HOST_MAX_BCS][2];
+    double host_remote_increment[3];
 } gb_stage;
 
 /* Correction factors of the reference iteration (K 9-12) and its convergence test (K 14). */
@@ -69,7 +75,6 @@ typedef struct {
 enum { GB_METHOD_REFERENCE = 0, GB_METHOD_GLOBAL = 1 };
 
 /* An elastic host with a cavity that holds the grains (the hybrid method, METHOD.md sections 9-11). */
-#define GB_HOST_MAX_BCS 16
 typedef struct {
     int present;
     char mesh[1024];              /* the .geo or .msh file */
@@ -78,7 +83,8 @@ typedef struct {
     char cavity[GB_BEM_NAME_MAX]; /* the group whose elements carry the boundary particles */
     int n_bcs;
     char bc_group[GB_HOST_MAX_BCS][GB_BEM_NAME_MAX];
-    gb_bem_bc bc[GB_HOST_MAX_BCS]; /* the other groups: fixed or free */
+    gb_bem_bc bc[GB_HOST_MAX_BCS]; /* the other groups: any condition of the BEM module */
+    double remote_stress[3];      /* sxx, syy, sxy at infinity (unbounded meshes, mesh_opts.unbounded) */
     int rigid;                    /* the cavity does not deform: boundary particles held (a reference) */
 } gb_host_def;
 

@@ -2,6 +2,18 @@
 
 #include "bem/remote.h"
 
+int gb_bem_bc_n_values(const gb_bem_bc *bc)
+{
+    switch (bc->kind) {
+    case GB_BEM_BC_DISPLACEMENT:
+    case GB_BEM_BC_TRACTION:
+    case GB_BEM_BC_COMPONENTS: return 2;
+    case GB_BEM_BC_PRESSURE:
+    case GB_BEM_BC_NORMAL_DISPLACEMENT: return 1;
+    default: return 0;
+    }
+}
+
 gb_status gb_bem_bc_dofs(const gb_bem_mesh *m, const gb_bem_material *mat, const gb_bem_problem *prob,
                          unsigned char *t_unknown, double *given, gb_error *err)
 {

@@ -128,7 +128,60 @@ static gb_status read_mesh(const gb_yaml_doc *doc, gb_ymap *root, gb_bem_scene *
     return st;
 }
 
-/* boundary: {group: fixed | free | {displacement: [ux, uy]} | {traction: [tx, ty]} | {pressure: p}} */
+gb_status gb_bem_bc_read(const gb_yaml_doc *doc, struct fy_node *val, const char *path, gb_bem_bc *bc, gb_error *err)
+{
+    gb_status st;
+    memset(bc, 0, sizeof *bc);
+    if (scalar_is(val, "fixed")) {
+        bc->kind = GB_BEM_BC_FIXED;
+        return GB_OK;
+    }
+    if (scalar_is(val, "free")) {
+        bc->kind = GB_BEM_BC_FREE;
+        return GB_OK;
+    }
+    if (!val || fy_node_get_type(val) != FYNT_MAPPING)
+        return gb_yaml_fail(doc, val, err,
+                            "%s: expected fixed, free, {displacement: [ux, uy]}, {traction: [tx, ty]}, "
+                            "{pressure: p}, {normal_displacement: d} or {ux | tx: a, uy | ty: b}",
+                            path);
+    gb_ymap c;
+    int found = 0;
+    if ((st = gb_ymap_open(doc, val, path, &c, err))) return st;
+    if (lookup(&c, "displacement")) found++, bc->kind = GB_BEM_BC_DISPLACEMENT;
+    if ((st = gb_ymap_vector(&c, "displacement", 0, 2, bc->value, err))) return st;
+    if (lookup(&c, "traction")) found++, bc->kind = GB_BEM_BC_TRACTION;
+    if ((st = gb_ymap_vector(&c, "traction", 0, 2, bc->value, err))) return st;
+    if (lookup(&c, "pressure")) found++, bc->kind = GB_BEM_BC_PRESSURE;
+    if ((st = gb_ymap_number(&c, "pressure", 0, &bc->value[0], err))) return st;
+    if (lookup(&c, "normal_displacement")) found++, bc->kind = GB_BEM_BC_NORMAL_DISPLACEMENT;
+    if ((st = gb_ymap_number(&c, "normal_displacement", 0, &bc->value[0], err))) return st;
+    /* component-wise: one of ux / tx and one of uy / ty */
+    static const char *const ck[4] = {"ux", "tx", "uy", "ty"};
+    int per[2] = {0, 0};
+    for (int q = 0; q < 4; q++) {
+        double x = NAN;
+        if ((st = gb_ymap_number(&c, ck[q], 0, &x, err))) return st;
+        if (isnan(x)) continue; /* absent */
+        per[q / 2]++;
+        bc->value[q / 2] = x;
+        if (q % 2 == 0) bc->u_given |= 1 << (q / 2);
+    }
+    if (per[0] || per[1]) {
+        found++;
+        bc->kind = GB_BEM_BC_COMPONENTS;
+        if (per[0] != 1 || per[1] != 1) return gb_yaml_fail(doc, val, err, "%s: give one of ux, tx and one of uy, ty", path);
+    }
+    if ((st = gb_ymap_close(&c, err))) return st;
+    if (found != 1)
+        return gb_yaml_fail(doc, val, err,
+                            "%s: expected exactly one of displacement, traction, pressure, normal_displacement, "
+                            "or component-wise {ux | tx, uy | ty}",
+                            path);
+    return GB_OK;
+}
+
+/* boundary: {group: condition, ...} for every group of the mesh */
 static gb_status read_boundary(const gb_yaml_doc *doc, gb_ymap *root, gb_bem_scene *s, gb_error *err)
 {
     struct fy_node *b = NULL;
@@ -154,57 +207,11 @@ static gb_status read_boundary(const gb_yaml_doc *doc, gb_ymap *root, gb_bem_sce
             return gb_yaml_fail(doc, key, err, "boundary: the mesh has no group '%s'; its groups are: %s", gname,
                                 known);
         }
-        gb_bem_bc *bc = &s->problem.bc[g];
-        if (bc->kind != GB_BEM_BC_NONE) return gb_yaml_fail(doc, key, err, "boundary: group '%s' given twice", gname);
-        if (scalar_is(val, "fixed"))
-            bc->kind = GB_BEM_BC_FIXED;
-        else if (scalar_is(val, "free"))
-            bc->kind = GB_BEM_BC_FREE;
-        else if (val && fy_node_get_type(val) == FYNT_MAPPING) {
-            char path[128];
-            snprintf(path, sizeof path, "boundary.%s", gname);
-            gb_ymap c;
-            struct fy_node *v;
-            int found = 0;
-            if ((st = gb_ymap_open(doc, val, path, &c, err))) return st;
-            if ((v = lookup(&c, "displacement"))) found++, bc->kind = GB_BEM_BC_DISPLACEMENT;
-            if ((st = gb_ymap_vector(&c, "displacement", 0, 2, bc->value, err))) return st;
-            if ((v = lookup(&c, "traction"))) found++, bc->kind = GB_BEM_BC_TRACTION;
-            if ((st = gb_ymap_vector(&c, "traction", 0, 2, bc->value, err))) return st;
-            if ((v = lookup(&c, "pressure"))) found++, bc->kind = GB_BEM_BC_PRESSURE;
-            if ((st = gb_ymap_number(&c, "pressure", 0, &bc->value[0], err))) return st;
-            if ((v = lookup(&c, "normal_displacement"))) found++, bc->kind = GB_BEM_BC_NORMAL_DISPLACEMENT;
-            if ((st = gb_ymap_number(&c, "normal_displacement", 0, &bc->value[0], err))) return st;
-            /* component-wise: one of ux / tx and one of uy / ty */
-            static const char *const ck[4] = {"ux", "tx", "uy", "ty"};
-            int per[2] = {0, 0};
-            for (int q = 0; q < 4; q++) {
-                double x = NAN;
-                if ((st = gb_ymap_number(&c, ck[q], 0, &x, err))) return st;
-                if (isnan(x)) continue; /* absent */
-                per[q / 2]++;
-                bc->value[q / 2] = x;
-                if (q % 2 == 0) bc->u_given |= 1 << (q / 2);
-            }
-            if (per[0] || per[1]) {
-                found++;
-                bc->kind = GB_BEM_BC_COMPONENTS;
-                if (per[0] != 1 || per[1] != 1)
-                    return gb_yaml_fail(doc, val, err, "%s: give one of ux, tx and one of uy, ty", path);
-            }
-            if ((st = gb_ymap_close(&c, err))) return st;
-            if (found != 1)
-                return gb_yaml_fail(
-                    doc, val, err,
-                    "%s: expected exactly one of displacement, traction, pressure, normal_displacement, "
-                    "or component-wise {ux | tx, uy | ty}",
-                    path);
-        } else {
-            return gb_yaml_fail(doc, val ? val : key, err,
-                                "boundary.%s: expected fixed, free, {displacement: [ux, uy]}, {traction: [tx, ty]}, "
-                                "{pressure: p}, {normal_displacement: d} or {ux | tx: a, uy | ty: b}",
-                                gname);
-        }
+        if (s->problem.bc[g].kind != GB_BEM_BC_NONE)
+            return gb_yaml_fail(doc, key, err, "boundary: group '%s' given twice", gname);
+        char path[128];
+        snprintf(path, sizeof path, "boundary.%s", gname);
+        if ((st = gb_bem_bc_read(doc, val ? val : key, path, &s->problem.bc[g], err))) return st;
     }
     for (int g = 0; g < s->mesh.n_groups; g++)
         if (s->problem.bc[g].kind == GB_BEM_BC_NONE)

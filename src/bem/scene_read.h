@@ -10,6 +10,11 @@
 #include "gembem/bem.h"
 #include "scene/yaml_read.h"
 
+/* One group's boundary condition at `val`: fixed | free | {displacement: [ux, uy]} |
+ * {traction: [tx, ty]} | {pressure: p} | {normal_displacement: d} | {ux | tx: a, uy | ty: b}
+ * (component-wise: a roller). `path` names the value in messages ("boundary.top"). */
+gb_status gb_bem_bc_read(const gb_yaml_doc *doc, struct fy_node *val, const char *path, gb_bem_bc *bc, gb_error *err);
+
 gb_status gb_bem_host_read(const gb_yaml_doc *doc, gb_ymap *map, gb_bem_scene *scene, gb_error *err);
 
 #endif

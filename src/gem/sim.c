@@ -297,6 +297,7 @@ static const char *stage_name(gb_stage_kind k)
     case GB_STAGE_SHEAR_MEAN: return "shear_mean_stress";
     case GB_STAGE_RELAX: return "relax";
     case GB_STAGE_HOST_DISPLACEMENT: return "host_displacement";
+    case GB_STAGE_HOST_LOAD: return "host_load";
     default: return "biaxial_stress";
     }
 }
@@ -325,11 +326,13 @@ static gb_status load_step(gb_sim *sim, const gb_stage *sg, int k, const double 
     case GB_STAGE_RELAX:
         return gb_gem_relax(sim, &wc, cap, iters, max_force, residual, err);
     case GB_STAGE_HOST_DISPLACEMENT:
-        /* The host's boundary moves (grains held), then the grains and the cavity relax. */
+    case GB_STAGE_HOST_LOAD:
+        /* The host's loads grow (grains and cavity held: f0 changes), then the grains and the
+         * cavity relax. */
         for (int q = 0; q < sg->n_host_groups; q++)
-            if ((st = gb_host_move_group(sim->host, sg->host_group[q], sg->host_increment[q][0],
-                                         sg->host_increment[q][1], err)))
-                return st;
+            if ((st = gb_host_add_load(sim->host, sg->host_group[q], sg->host_increment[q], err))) return st;
+        if (sim->host->mesh.unbounded && (st = gb_host_add_remote(sim->host, sg->host_remote_increment, err)))
+            return st;
         return gb_gem_relax(sim, &wc, cap, iters, max_force, residual, err);
     case GB_STAGE_STRAIN:
         if ((st = impose_strain(sim, sg->de1, sg->de2, err))) return st;

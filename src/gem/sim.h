@@ -35,6 +35,7 @@ typedef struct {
     double *host_u;      /* the host's cavity displacements */
     double *host_f0;     /* and its f0, which follows the host's prescribed boundary values */
     double host_bc[GB_BEM_MAX_GROUPS][2];
+    double host_remote[3];
 } gb_sim_state;
 
 struct gb_sim {

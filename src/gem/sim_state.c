@@ -38,6 +38,7 @@ gb_status gb_sim_state_save(const gb_sim *sim, gb_sim_state *st, gb_error *err)
         memcpy(st->host_f0, sim->host->K.f0, (size_t)sim->host->m * sizeof(double));
         for (int g = 0; g < GB_BEM_MAX_GROUPS; g++)
             st->host_bc[g][0] = sim->host->prob.bc[g].value[0], st->host_bc[g][1] = sim->host->prob.bc[g].value[1];
+        memcpy(st->host_remote, sim->host->prob.remote_stress, sizeof st->host_remote);
     }
     memcpy(st->g, sim->g, (size_t)sim->n * sizeof *st->g);
     if (sim->pairs.n > 0) memcpy(st->p, sim->pairs.p, (size_t)sim->pairs.n * sizeof *st->p);
@@ -71,6 +72,7 @@ void gb_sim_state_restore(gb_sim *sim, const gb_sim_state *st)
         memcpy(sim->host->K.f0, st->host_f0, (size_t)sim->host->m * sizeof(double));
         for (int g = 0; g < GB_BEM_MAX_GROUPS; g++)
             sim->host->prob.bc[g].value[0] = st->host_bc[g][0], sim->host->prob.bc[g].value[1] = st->host_bc[g][1];
+        memcpy(sim->host->prob.remote_stress, st->host_remote, sizeof st->host_remote);
         gb_host_update_force(sim->host);
     }
     memcpy(sim->g, st->g, (size_t)sim->n * sizeof *st->g);

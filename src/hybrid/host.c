@@ -14,6 +14,11 @@ void gb_host_free(gb_host *h)
     free(h->Ksym);
     free(h->u);
     free(h->force);
+    free(h->loads);
+    free(h->load0);
+    free(h->f0_base);
+    free(h->f0_unit);
+    free(h->resultant_unit);
     free(h);
 }
 
@@ -39,7 +44,7 @@ gb_status gb_host_create(const gb_host_def *def, gb_host **out, gb_error *err)
         for (int k = 0; k < def->n_bcs; k++)
             if (!strcmp(def->bc_group[k], h->mesh.group_name[g])) found = k;
         if (found < 0) {
-            gb_fail(err, GB_EINPUT, "%s: host.boundary: no condition (fixed or free) for the group '%s'", def->mesh,
+            gb_fail(err, GB_EINPUT, "%s: host.boundary: no condition for the group '%s'", def->mesh,
                     h->mesh.group_name[g]);
             gb_host_free(h);
             return GB_EINPUT;
@@ -53,8 +58,13 @@ gb_status gb_host_create(const gb_host_def *def, gb_host **out, gb_error *err)
                            def->mesh, def->bc_group[k]);
         }
     h->prob.bc[h->cavity].kind = GB_BEM_BC_FREE; /* replaced by the condensation */
+    memcpy(h->prob.remote_stress, def->remote_stress, sizeof h->prob.remote_stress);
+    if (!h->mesh.unbounded && (def->remote_stress[0] != 0 || def->remote_stress[1] != 0 || def->remote_stress[2] != 0)) {
+        gb_host_free(h);
+        return gb_fail(err, GB_EINPUT, "%s: host.remote_stress: applies to an unbounded host only", def->mesh);
+    }
     if ((st = gb_bem_assemble(&h->mesh, &def->material, &h->sys, err)) ||
-        (st = gb_bem_condense(&h->mesh, &h->sys, &h->prob, h->cavity, NULL, &h->K, err))) {
+        (st = gb_host_condense(h, err))) {
         gb_host_free(h);
         return st;
     }
@@ -93,21 +103,24 @@ int gb_host_in_cavity(const gb_host *h, double x, double y)
     return x > xmin && x < xmax && y > ymin && y < ymax;
 }
 
-gb_status gb_host_move_group(gb_host *h, const char *group, double dx, double dy, gb_error *err)
+gb_status gb_host_solve(const gb_host *h, gb_bem_solution *sol, gb_error *err)
 {
-    int g = gb_bem_mesh_group(&h->mesh, group);
-    if (g < 0 || h->prob.bc[g].kind != GB_BEM_BC_DISPLACEMENT)
-        return gb_fail(err, GB_EINPUT, "host: '%s' is not a group with a displacement condition", group);
-    h->prob.bc[g].value[0] += dx;
-    h->prob.bc[g].value[1] += dy;
-    gb_bem_stiffness k;
-    memset(&k, 0, sizeof k);
-    gb_status st = gb_bem_condense(&h->mesh, &h->sys, &h->prob, h->cavity, NULL, &k, err);
-    if (st) return st;
-    memcpy(h->K.f0, k.f0, (size_t)h->m * sizeof(double)); /* K itself does not depend on the loads */
-    gb_bem_stiffness_free(&k);
-    gb_host_update_force(h);
-    return GB_OK;
+    memset(sol, 0, sizeof *sol);
+    return gb_bem_solve_group_displacement(&h->mesh, &h->sys, &h->prob, h->cavity, h->u, NULL, sol, err);
+}
+
+void gb_host_group_sum(const gb_host *h, const gb_bem_solution *sol, int g, double force[2], double disp[2])
+{
+    double len = 0;
+    force[0] = force[1] = disp[0] = disp[1] = 0;
+    for (int e = 0; e < h->mesh.n; e++)
+        if (h->mesh.group[e] == g) {
+            double L = h->mesh.length[e];
+            force[0] += sol->t[2 * e] * L, force[1] += sol->t[2 * e + 1] * L;
+            disp[0] += sol->u[2 * e] * L, disp[1] += sol->u[2 * e + 1] * L;
+            len += L;
+        }
+    if (len > 0) disp[0] /= len, disp[1] /= len;
 }
 
 gb_status gb_host_group_force(const gb_host *h, const char *group, double force[2], double disp[2], gb_error *err)
@@ -115,17 +128,8 @@ gb_status gb_host_group_force(const gb_host *h, const char *group, double force[
     int g = gb_bem_mesh_group(&h->mesh, group);
     if (g < 0) return gb_fail(err, GB_EINPUT, "host: no group '%s'", group);
     gb_bem_solution sol;
-    memset(&sol, 0, sizeof sol);
-    gb_status st = gb_bem_solve_group_displacement(&h->mesh, &h->sys, &h->prob, h->cavity, h->u, NULL, &sol, err);
-    if (st) return st;
-    force[0] = force[1] = 0;
-    for (int e = 0; e < h->mesh.n; e++)
-        if (h->mesh.group[e] == g) {
-            force[0] += sol.t[2 * e] * h->mesh.length[e];
-            force[1] += sol.t[2 * e + 1] * h->mesh.length[e];
-        }
-    disp[0] = h->prob.bc[g].value[0];
-    disp[1] = h->prob.bc[g].value[1];
+    gb_status st = gb_host_solve(h, &sol, err);
+    if (!st) gb_host_group_sum(h, &sol, g, force, disp);
     gb_bem_solution_free(&sol);
-    return GB_OK;
+    return st;
 }

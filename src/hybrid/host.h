@@ -8,28 +8,61 @@
 #include "gembem/bem.h"
 #include "gembem/scene.h"
 
+/* A loadable datum of the host: one value of a group's condition (displacement, traction,
+ * pressure, component-wise), or one remote stress component of an unbounded host. */
+typedef struct {
+    int group; /* mesh group, or -1: the remote stress */
+    int comp;  /* value[comp] of the group's condition, or remote_stress[comp] */
+} gb_host_load;
+
 typedef struct {
     gb_bem_mesh mesh;
     gb_bem_system sys;
-    gb_bem_problem prob;
+    gb_bem_problem prob;  /* the current boundary values and remote stress */
     gb_bem_stiffness K;  /* on the cavity group, in its element order */
     double *Ksym;        /* (K + K^t)/2, for the symmetric (CHOLMOD) solve */
     int cavity;          /* the cavity's group index */
     int m;               /* 2 x cavity elements */
     double *u;           /* element displacements, m */
     double *force;       /* K u + f0, m */
+    /* f0 is linear in the loads: f0 = f0_base + sum_j (value_j - load0_j) f0_unit_j, so a load step
+     * costs O(m n_loads) instead of a condensation. */
+    int n_loads;
+    gb_host_load *loads;
+    double *load0;       /* the values at creation */
+    double *f0_base;     /* f0 at creation, m */
+    double *f0_unit;     /* m per load: f0 for a unit value of that load alone */
+    /* Each group's force and mean displacement (4 per group) are linear too: their values for a
+     * unit displacement of each cavity DOF (m columns), for the loads at creation (1) and for a
+     * unit value of each load (n_loads); gb_host_group_resultant sums them, no solve per step. */
+    double *resultant_unit;
 } gb_host;
 
-/* Meshes, assembles and condenses the host; refuses a mesh or a condition it cannot use (GB_EINPUT). */
+/* Meshes, assembles and condenses the host, with the unit responses of f0 to every loadable value
+ * (one factorisation); refuses a mesh or a condition it cannot use (GB_EINPUT). */
 gb_status gb_host_create(const gb_host_def *def, gb_host **out, gb_error *err);
 void gb_host_free(gb_host *h);
 /* force = K u + f0 */
 void gb_host_update_force(gb_host *h);
-/* Moves a group with a displacement condition by (dx, dy) more and condenses again: K stays, f0
- * follows the new boundary values. */
-gb_status gb_host_move_group(gb_host *h, const char *group, double dx, double dy, gb_error *err);
-/* The force on a group (sum of traction x length over its elements) and its prescribed
- * displacement, for the current cavity displacements. */
+/* Condenses the host on its cavity (h->K) and the unit responses of f0 (src/hybrid/host_load.c). */
+gb_status gb_host_condense(gb_host *h, gb_error *err);
+/* f0 from the current loads (prob's values and remote stress), then the force. */
+void gb_host_update_f0(gb_host *h);
+/* Number of values of a group's condition that loading may change: 2 (displacement, traction,
+ * component-wise), 1 (pressure, normal displacement) or 0 (fixed, free, the cavity). */
+int gb_host_group_values(const gb_host *h, int group);
+/* Adds increments to a group's condition values (inc[0..n), n = gb_host_group_values), or to the
+ * remote stress of an unbounded host (sxx, syy, sxy), then updates f0 and the force. */
+gb_status gb_host_add_load(gb_host *h, const char *group, const double inc[2], gb_error *err);
+gb_status gb_host_add_remote(gb_host *h, const double remote_inc[3], gb_error *err);
+/* The host's whole boundary state for the current cavity displacements (one solve). */
+gb_status gb_host_solve(const gb_host *h, gb_bem_solution *sol, gb_error *err);
+/* A group's total force (sum of traction x length over its elements: what the outside puts on the
+ * body) and its mean displacement (length-weighted), from a solution of gb_host_solve. */
+void gb_host_group_sum(const gb_host *h, const gb_bem_solution *sol, int group, double force[2], double disp[2]);
+/* The same for the current cavity displacements and loads, from the unit responses: O(m + n_loads). */
+void gb_host_group_resultant(const gb_host *h, int group, double force[2], double disp[2]);
+/* The same by name, solving for it. */
 gb_status gb_host_group_force(const gb_host *h, const char *group, double force[2], double disp[2], gb_error *err);
 /* 1 if (x, y) lies in the cavity: not in the body, and within the cavity's bounding box. */
 int gb_host_in_cavity(const gb_host *h, double x, double y);

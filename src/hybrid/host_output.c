@@ -108,15 +108,29 @@ done:
     return st;
 }
 
+void gb_host_write_steps_header(FILE *f, const gb_scene *scene)
+{
+    fprintf(f, "step,group,condition,ux,uy,fx,fy%s\n", scene->host.mesh_opts.unbounded ? ",sxx,syy,sxy" : "");
+}
+
+static const char *condition_name(gb_bem_bc_kind k)
+{
+    static const char *const names[] = {"none", "free", "fixed", "displacement", "traction", "pressure",
+                                        "normal_displacement", "components"};
+    return (int)k >= 0 && (int)k <= GB_BEM_BC_COMPONENTS ? names[k] : "none";
+}
+
 gb_status gb_host_write_step(FILE *f, int step, const gb_sim *sim, gb_error *err)
 {
-    const gb_host_def *def = &sim->scene->host;
-    for (int k = 0; k < def->n_bcs; k++) {
-        if (def->bc[k].kind != GB_BEM_BC_DISPLACEMENT) continue;
+    const gb_host *h = sim->host;
+    for (int g = 0; g < h->mesh.n_groups; g++) {
         double force[2], disp[2];
-        gb_status st = gb_host_group_force(sim->host, def->bc_group[k], force, disp, err);
-        if (st) return st;
-        fprintf(f, "%d,%s,%.17g,%.17g,%.17g,%.17g\n", step, def->bc_group[k], disp[0], disp[1], force[0], force[1]);
+        gb_host_group_resultant(h, g, force, disp);
+        fprintf(f, "%d,%s,%s,%.17g,%.17g,%.17g,%.17g", step, h->mesh.group_name[g],
+                g == h->cavity ? "cavity" : condition_name(h->prob.bc[g].kind), disp[0], disp[1], force[0], force[1]);
+        if (h->mesh.unbounded)
+            fprintf(f, ",%.17g,%.17g,%.17g", h->prob.remote_stress[0], h->prob.remote_stress[1], h->prob.remote_stress[2]);
+        fputc('\n', f);
     }
     return fflush(f) == 0 ? GB_OK : gb_fail(err, GB_EIO, "host_steps.csv: write failed");
 }

@@ -144,8 +144,7 @@ gb_status gb_run_output_open(const char *dir, const gb_scene *scene, int overwri
             free(o);
             return gb_fail(err, GB_EIO, "%s: %s", path, strerror(errno));
         }
-        /* The load-displacement curve: the force the body's moved groups carry. */
-        fprintf(o->host, "step,group,ux,uy,fx,fy\n");
+        gb_host_write_steps_header(o->host, scene);
     }
     *out = o;
     return GB_OK;

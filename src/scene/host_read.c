@@ -1,6 +1,7 @@
 /* The `host:` section of a scene: an elastic body whose cavity holds the grains. */
 #include <string.h>
 
+#include "bem/scene_read.h"
 #include "scene/host_read.h"
 
 /* Meshes the host once to check, with the scene's line and column, that its groups are the ones
@@ -24,7 +25,7 @@ static gb_status check_groups(gb_ymap *m, struct fy_node *bc_node, const gb_host
         for (int k = 0; k < h->n_bcs; k++) found |= !strcmp(h->bc_group[k], mesh.group_name[g]);
         if (!found)
             st = gb_yaml_fail(m->doc, bc_node && fy_node_mapping_item_count(bc_node) ? bc_node : m->node, err,
-                              "host.boundary: no condition (fixed, free or displacement) for the group '%s'", mesh.group_name[g]);
+                              "host.boundary: no condition for the group '%s'", mesh.group_name[g]);
     }
     gb_bem_mesh_free(&mesh);
     return st;
@@ -78,31 +79,52 @@ gb_status gb_host_section_read(gb_ymap *top, gb_host_def *h, gb_error *err)
         return gb_yaml_fail(m.doc, mat.node, err, "host.material.plane: expected 'strain' or 'stress'");
     if ((st = gb_ymap_close(&mat, err))) return st;
 
-    /* boundary: {group: fixed | free, ...} for every group but the cavity */
+    /* boundary: {group: condition, ...} for every group but the cavity; a condition is the BEM
+     * module's (fixed, free, {displacement: [ux, uy]}, {traction: [tx, ty]}, {pressure: p},
+     * {normal_displacement: d}, {ux | tx: a, uy | ty: b}) or `displacement` ({displacement: [0, 0]}) */
     if ((st = gb_ymap_map(&m, "boundary", 0, &bcs, err))) return st;
     it = NULL;
     while (bcs.node && (p = fy_node_mapping_iterate(bcs.node, &it))) {
         size_t len = 0, vlen = 0;
         const char *key = fy_node_get_scalar(fy_node_pair_key(p), &len);
-        const char *val = fy_node_get_scalar(fy_node_pair_value(p), &vlen);
+        struct fy_node *vnode = fy_node_pair_value(p);
+        const char *val = fy_node_get_type(vnode) == FYNT_SCALAR ? fy_node_get_scalar(vnode, &vlen) : NULL;
         if (h->n_bcs == GB_HOST_MAX_BCS || !key || len == 0 || len >= GB_BEM_NAME_MAX)
             return gb_yaml_fail(m.doc, fy_node_pair_key(p), err, "host.boundary: expected at most %d group names",
                                 GB_HOST_MAX_BCS);
         gb_bem_bc *bc = &h->bc[h->n_bcs];
-        if (val && vlen == 5 && !strncmp(val, "fixed", 5)) bc->kind = GB_BEM_BC_FIXED;
-        else if (val && vlen == 4 && !strncmp(val, "free", 4)) bc->kind = GB_BEM_BC_FREE;
-        else if (val && vlen == 12 && !strncmp(val, "displacement", 12)) bc->kind = GB_BEM_BC_DISPLACEMENT;
-        else
-            return gb_yaml_fail(m.doc, fy_node_pair_value(p), err,
-                                "host.boundary.%.*s: expected fixed, free or displacement (moved by host_displacement "
-                                "stages, from zero)", (int)len, key);
         memcpy(h->bc_group[h->n_bcs], key, len);
         h->bc_group[h->n_bcs][len] = '\0';
+        char path[GB_BEM_NAME_MAX + 32];
+        snprintf(path, sizeof path, "host.boundary.%s", h->bc_group[h->n_bcs]);
+        int is_map = vnode && fy_node_get_type(vnode) == FYNT_MAPPING;
+        if (val && vlen == 12 && !strncmp(val, "displacement", 12)) {
+            memset(bc, 0, sizeof *bc);
+            bc->kind = GB_BEM_BC_DISPLACEMENT;
+        } else if (!is_map && !(val && ((vlen == 5 && !strncmp(val, "fixed", 5)) || (vlen == 4 && !strncmp(val, "free", 4))))) {
+            /* an empty value has no position of its own: name its key's */
+            return gb_yaml_fail(m.doc, vnode && !(val && vlen == 0) ? vnode : fy_node_pair_key(p), err,
+                                "%s: expected fixed, free, displacement (from zero, moved by stages), {displacement: "
+                                "[ux, uy]}, {traction: [tx, ty]}, {pressure: p}, {normal_displacement: d} or "
+                                "{ux | tx: a, uy | ty: b}", path);
+        } else if ((st = gb_bem_bc_read(m.doc, vnode, path, bc, err))) {
+            return st;
+        }
         h->n_bcs++;
         struct fy_node *v;
         gb_ymap_find(&bcs, h->bc_group[h->n_bcs - 1], 0, &v, err); /* mark as read */
     }
     if ((st = gb_ymap_close(&bcs, err))) return st;
+
+    /* an infinite plane with cavities, loaded at infinity */
+    struct fy_node *rs;
+    if ((st = gb_ymap_bool(&m, "unbounded", 0, &h->mesh_opts.unbounded, err)) ||
+        (st = gb_ymap_find(&m, "remote_stress", 0, &rs, err)) ||
+        (st = gb_ymap_vector(&m, "remote_stress", 0, 3, h->remote_stress, err)))
+        return st;
+    if (rs && !h->mesh_opts.unbounded)
+        return gb_yaml_fail(m.doc, rs, err, "host.remote_stress: applies to an unbounded host only (host.unbounded: "
+                                            "true, a mesh of cavities in an infinite plane)");
     if ((st = gb_ymap_close(&m, err))) return st;
     return check_groups(&m, bcs.node, h, err);
 }

@@ -115,6 +115,61 @@ static gb_status read_solver(gb_ymap *top, gb_solver_settings *sv, gb_error *err
     return gb_ymap_close(&m, err);
 }
 
+/* The increments per step of a host stage: `increments: {group: [a, b] | p, ...}` add to the values
+ * of each group's condition as host.boundary gives them (displacement or traction components, or
+ * one number for a pressure or normal displacement); host_load also takes `remote_stress: [dsxx,
+ * dsyy, dsxy]` (unbounded hosts). host_displacement moves 'displacement' groups only. */
+static gb_status read_host_increments(gb_ymap *m, const char *sub, const gb_host_def *host, gb_stage *sg,
+                                      gb_error *err)
+{
+    int disp_only = sg->kind == GB_STAGE_HOST_DISPLACEMENT;
+    gb_ymap inc;
+    struct fy_node *incn, *rs = NULL;
+    gb_status st;
+    if (!host->present) return gb_yaml_fail(m->doc, m->node, err, "%s: expected a scene with a host", sub);
+    if ((st = gb_ymap_find(m, "increments", disp_only ? GB_Y_REQUIRED : 0, &incn, err)) ||
+        (st = gb_ymap_map(m, "increments", disp_only ? GB_Y_REQUIRED : 0, &inc, err)))
+        return st;
+    if (!disp_only && ((st = gb_ymap_find(m, "remote_stress", 0, &rs, err)) ||
+                       (st = gb_ymap_vector(m, "remote_stress", 0, 3, sg->host_remote_increment, err))))
+        return st;
+    if (!incn && !rs)
+        return gb_yaml_fail(m->doc, m->node, err, "%s: expected increments per step: increments: {group: [a, b] | p} "
+                                                  "and/or remote_stress: [sxx, syy, sxy]", sub);
+    if (rs && !host->mesh_opts.unbounded)
+        return gb_yaml_fail(m->doc, rs, err, "%s.remote_stress: the host is bounded; a remote stress applies to an "
+                                             "unbounded host only (host.unbounded: true)", sub);
+    void *it = NULL;
+    struct fy_node_pair *pr;
+    while (inc.node && (pr = fy_node_mapping_iterate(inc.node, &it))) {
+        size_t gl = 0;
+        const char *gname = fy_node_get_scalar(fy_node_pair_key(pr), &gl);
+        int ok = -1;
+        for (int q = 0; gname && q < host->n_bcs; q++)
+            if (strlen(host->bc_group[q]) == gl && !strncmp(host->bc_group[q], gname, gl)) ok = q;
+        if (disp_only && (ok < 0 || host->bc[ok].kind != GB_BEM_BC_DISPLACEMENT))
+            return gb_yaml_fail(m->doc, fy_node_pair_key(pr), err, "%s.increments: expected groups of the host with "
+                                "'displacement' in host.boundary, found '%.*s'", sub, (int)gl, gname ? gname : "");
+        if (ok < 0)
+            return gb_yaml_fail(m->doc, fy_node_pair_key(pr), err, "%s.increments: host.boundary has no group '%.*s'",
+                                sub, (int)gl, gname ? gname : "");
+        if (gb_bem_bc_n_values(&host->bc[ok]) == 0)
+            return gb_yaml_fail(m->doc, fy_node_pair_key(pr), err,
+                                "%s.increments.%s: the group is %s in host.boundary and has no value to load; "
+                                "expected a group with a displacement, traction, pressure, normal_displacement or "
+                                "component-wise condition",
+                                sub, host->bc_group[ok], host->bc[ok].kind == GB_BEM_BC_FIXED ? "fixed" : "free");
+        int q = sg->n_host_groups++;
+        snprintf(sg->host_group[q], GB_BEM_NAME_MAX, "%s", host->bc_group[ok]);
+        if (gb_bem_bc_n_values(&host->bc[ok]) == 1)
+            st = gb_ymap_number(&inc, sg->host_group[q], GB_Y_REQUIRED, &sg->host_increment[q][0], err);
+        else
+            st = gb_ymap_vector(&inc, sg->host_group[q], GB_Y_REQUIRED, 2, sg->host_increment[q], err);
+        if (st) return st;
+    }
+    return gb_ymap_close(&inc, err);
+}
+
 static gb_status read_stage(const gb_yaml_doc *doc, struct fy_node *item, int k, const gb_host_def *host, gb_stage *sg,
                             gb_error *err)
 {
@@ -128,14 +183,14 @@ static gb_status read_stage(const gb_yaml_doc *doc, struct fy_node *item, int k,
     size_t len = 0;
     const char *kind = fy_node_get_scalar(fy_node_pair_key(p), &len);
     static const char *const kinds[] = {"isotropic", "strain", "shear_mean_stress", "biaxial_stress", "relax",
-                                        "host_displacement"};
+                                        "host_displacement", "host_load"};
     int kk = -1;
-    for (int q = 0; q < 6; q++)
+    for (int q = 0; q < 7; q++)
         if (kind && strlen(kinds[q]) == len && !strncmp(kinds[q], kind, len)) kk = q;
     if (kk < 0)
         return gb_yaml_fail(doc, fy_node_pair_key(p), err,
-                            "%s: unknown stage '%.*s'; expected isotropic, strain, shear_mean_stress, biaxial_stress, relax "
-                            "or host_displacement",
+                            "%s: unknown stage '%.*s'; expected isotropic, strain, shear_mean_stress, biaxial_stress, relax, "
+                            "host_displacement or host_load",
                             name, (int)len, kind ? kind : "");
     gb_ymap m;
     gb_status st;
@@ -166,32 +221,14 @@ static gb_status read_stage(const gb_yaml_doc *doc, struct fy_node *item, int k,
     case 4:
         sg->kind = GB_STAGE_RELAX;
         break;
-    case 5: {
-        /* increments: {group: [dx, dy], ...}: groups the host moves by displacement */
+    case 5:
         sg->kind = GB_STAGE_HOST_DISPLACEMENT;
-        gb_ymap inc;
-        if ((st = gb_ymap_map(&m, "increments", GB_Y_REQUIRED, &inc, err))) return st;
-        void *it = NULL;
-        struct fy_node_pair *pr;
-        while (!st && (pr = fy_node_mapping_iterate(inc.node, &it))) {
-            size_t gl = 0;
-            const char *gname = fy_node_get_scalar(fy_node_pair_key(pr), &gl);
-            int ok = -1;
-            for (int q = 0; gname && q < host->n_bcs; q++)
-                if (strlen(host->bc_group[q]) == gl && !strncmp(host->bc_group[q], gname, gl) &&
-                    host->bc[q].kind == GB_BEM_BC_DISPLACEMENT)
-                    ok = q;
-            if (ok < 0 || sg->n_host_groups == 4)
-                return gb_yaml_fail(doc, fy_node_pair_key(pr), err, "%s.increments: expected at most 4 groups of the "
-                                    "host with 'displacement' in host.boundary, found '%.*s'", sub, (int)gl,
-                                    gname ? gname : "");
-            int q = sg->n_host_groups++;
-            snprintf(sg->host_group[q], GB_BEM_NAME_MAX, "%s", host->bc_group[ok]);
-            st = gb_ymap_vector(&inc, sg->host_group[q], GB_Y_REQUIRED, 2, sg->host_increment[q], err);
-        }
-        if (!st) st = gb_ymap_close(&inc, err);
+        st = read_host_increments(&m, sub, host, sg, err);
         break;
-    }
+    case 6:
+        sg->kind = GB_STAGE_HOST_LOAD;
+        st = read_host_increments(&m, sub, host, sg, err);
+        break;
     default:
         sg->kind = GB_STAGE_BIAXIAL_STRESS;
         if (!(st = gb_ymap_number(&m, "s1", GB_Y_REQUIRED | GB_Y_POSITIVE, &sg->s1, err)))
@@ -199,7 +236,7 @@ static gb_status read_stage(const gb_yaml_doc *doc, struct fy_node *item, int k,
         break;
     }
     if (st) return st;
-    if (sg->kind == GB_STAGE_HOST_DISPLACEMENT && !host->present)
+    if ((sg->kind == GB_STAGE_HOST_DISPLACEMENT || sg->kind == GB_STAGE_HOST_LOAD) && !host->present)
         return gb_yaml_fail(doc, m.node, err, "%s: expected a scene with a host", sub);
     /* A strain increment of a whole side or more per step would turn the box inside out. */
     double worst = fmax(fabs(sg->de1), fmax(fabs(sg->de2), fabs(sg->d_shear)));
@@ -352,9 +389,10 @@ static gb_status load(const gb_yaml_doc *doc, gb_scene *s, gb_error *err)
             return gb_yaml_fail(doc, sv, err, "solver.method: a scene with a host needs 'global' (one system for "
                                               "grains and host)");
         for (int k = 0; k < s->n_stages; k++)
-            if (s->stages[k].kind != GB_STAGE_RELAX && s->stages[k].kind != GB_STAGE_HOST_DISPLACEMENT)
-                return gb_yaml_fail(doc, sv, err, "loading[%d]: a scene with a host has no walls; expected 'relax' "
-                                                  "or 'host_displacement'", k);
+            if (s->stages[k].kind != GB_STAGE_RELAX && s->stages[k].kind != GB_STAGE_HOST_DISPLACEMENT &&
+                s->stages[k].kind != GB_STAGE_HOST_LOAD)
+                return gb_yaml_fail(doc, sv, err, "loading[%d]: a scene with a host has no walls; expected 'relax', "
+                                                  "'host_displacement' or 'host_load'", k);
     }
     return gb_ymap_close(&top, err);
 }
