@@ -120,6 +120,7 @@ gb_status gb_sim_create(const gb_scene *scene, gb_sim **out, gb_error *err)
     sim->ref_width = scene->box.right - scene->box.left;
     sim->ref_height = scene->box.top - scene->box.bottom;
     sim->lm_mu = 1e-6;
+    sim->lm_best = INFINITY;
     sim->tan_phi_gg = tan(scene->grain_grain.friction_deg * PI / 180);
     sim->tan_phi_gw = tan(scene->grain_wall.friction_deg * PI / 180);
     sim->tan_phi_gb = tan(scene->grain_boundary.friction_deg * PI / 180);

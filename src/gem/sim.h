@@ -68,6 +68,8 @@ struct gb_sim {
     double lm_mu;        /* Levenberg-Marquardt damping of the global solver */
 #define LM_MEMORY 10
     double lm_history[LM_MEMORY]; /* merits before the last accepted moves */
+    double lm_best;               /* lowest merit of the load step (stall detection) */
+    long lm_since;                /* moves since it last dropped by LM_STALL_DROP */
     int lm_next;
     unsigned char *in_system; /* per grain: moved by the global system in this iteration */
     long iterations_total;
