@@ -243,8 +243,8 @@ gb_status gb_gem_apply_moves(gb_sim *sim, gb_error *err)
 
 /* Levenberg-Marquardt damping of the global solver: its range, and the trials per iteration. */
 static const double MU_MIN = 1e-8, MU_MAX = 1e4;
-enum { MAX_TRIALS = 6, LM_STALL = 100 };
-static const double LM_STALL_DROP = 1e-3;
+enum { MAX_TRIALS = 6, LM_STALL = 50 };
+static const double LM_STALL_FACTOR = 0.5;
 
 /* The merit of a configuration: squared fixing forces of the grains that the system moves (those
  * with two contacts or more before the move: the others move by the reference cases, whatever the
@@ -273,10 +273,12 @@ static gb_status global_move(gb_sim *sim, const gb_wall_control *wc, double wall
     for (int k = 0; k < LM_MEMORY; k++) bound = fmax(bound, sim->lm_history[k]);
     /* A cycle: a grain whose contact switches between sticking and sliding (the sliding contact has
      * no tangential stiffness in K) can alternate between two configurations whose merits both
-     * stay under the non-monotone bound, forever. When the lowest merit of the load step has not
-     * dropped by LM_STALL_DROP in LM_STALL moves, the acceptance turns monotone (the damping grows
-     * until a move lowers the merit) until a new lowest merit is reached. */
-    if (!(m0 >= sim->lm_best * (1 - LM_STALL_DROP))) sim->lm_since = 0;
+     * stay under the non-monotone bound, slowly or never converging (seen in the localisation
+     * study's cavity packings). When no move of the last LM_STALL has brought the merit below
+     * LM_STALL_FACTOR times the lowest merit of the load step so far, the acceptance turns monotone
+     * (the damping grows until a move lowers the merit) until one does. A Newton phase halves the
+     * merit in a few moves and never meets this. */
+    if (!(m0 >= sim->lm_best * LM_STALL_FACTOR)) sim->lm_since = 0;
     else sim->lm_since++;
     if (m0 < sim->lm_best) sim->lm_best = m0;
     if (sim->lm_since > LM_STALL) bound = m0;

@@ -69,7 +69,7 @@ struct gb_sim {
 #define LM_MEMORY 10
     double lm_history[LM_MEMORY]; /* merits before the last accepted moves */
     double lm_best;               /* lowest merit of the load step (stall detection) */
-    long lm_since;                /* moves since it last dropped by LM_STALL_DROP */
+    long lm_since;                /* moves since one brought it below LM_STALL_FACTOR x lm_best */
     int lm_next;
     unsigned char *in_system; /* per grain: moved by the global system in this iteration */
     long iterations_total;
