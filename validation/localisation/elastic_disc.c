@@ -24,7 +24,7 @@
  *       rollers: bottom and top tx = 0 with uy given, left ux = 0 (no confining pressure there)
  *   pressure_first=0|1 [1]: the pressure is applied first with the top held (steps_p steps), then
  *       the top moves; 0: both grow together
- *   steps=n [20] steps_p=n [0]   out=PREFIX (PREFIX_wall.csv at the last step, PREFIX_curve.csv)
+ *   steps=n [20] steps_p=n [0]   out=PREFIX (PREFIX_wall.csv: every step, PREFIX_curve.csv)
  *   check=1: the ctest (a disc of the host's own modulus under rollers makes the body homogeneous;
  *       a disc of modulus 1e-9 mu gives the empty cavity); exit 1 on a failed check. */
 #include <lapacke.h>
@@ -277,6 +277,10 @@ static int run(const opts *o)
     FILE *fc = fopen(path, "w");
     if (!fc) die(path, NULL);
     fprintf(fc, "step,pressure,top_uy,top_fx,top_fy,top_length,s_ref,max_concentration\n");
+    snprintf(path, sizeof path, "%s_wall.csv", o->out);
+    FILE *fw = fopen(path, "w");
+    if (!fw) die(path, NULL);
+    fprintf(fw, "step,element,x,y,angle_deg,ux,uy,hoop,normal,concentration\n");
     int last = o->steps + o->steps_p;
     for (int k = 0; k <= last; k++) {
         double uy, p;
@@ -285,22 +289,16 @@ static int run(const opts *o)
         solve(o, &M, uy, p, &r);
         fprintf(fc, "%d,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e\n", k, p, uy, r.top_f[0], r.top_f[1], r.top_len,
                 r.s_ref, r.max_conc);
-        if (k == last) {
-            snprintf(path, sizeof path, "%s_wall.csv", o->out);
-            FILE *fw = fopen(path, "w");
-            if (!fw) die(path, NULL);
-            fprintf(fw, "element,x,y,angle_deg,ux,uy,hoop,normal,concentration\n");
-            for (int q = 0; q < M.m / 2; q++) {
-                int e = r.elem[q];
-                double x = M.mesh.mid[2 * e], y = M.mesh.mid[2 * e + 1];
-                fprintf(fw, "%d,%.10e,%.10e,%.6f,%.10e,%.10e,%.10e,%.10e,%.10e\n", e, x, y, atan2(y, x) * 180 / PI,
-                        r.u[2 * q], r.u[2 * q + 1], r.hoop[q], r.nstress[q], r.s_ref > 0 ? r.hoop[q] / r.s_ref : 0);
-            }
-            fclose(fw);
+        for (int q = 0; q < M.m / 2; q++) {
+            int e = r.elem[q];
+            double x = M.mesh.mid[2 * e], y = M.mesh.mid[2 * e + 1];
+            fprintf(fw, "%d,%d,%.10e,%.10e,%.6f,%.10e,%.10e,%.10e,%.10e,%.10e\n", k, e, x, y, atan2(y, x) * 180 / PI,
+                    r.u[2 * q], r.u[2 * q + 1], r.hoop[q], r.nstress[q], r.s_ref > 0 ? r.hoop[q] / r.s_ref : 0);
         }
         result_free(&r);
     }
     fclose(fc);
+    fclose(fw);
     model_free(&M);
     return 0;
 }
