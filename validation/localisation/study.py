@@ -28,7 +28,7 @@ KT_KN = 0.7
 A_KN = 5e-5  # the accuracy a = A_KN x kn (cm): about 0.5 % of the mean contact force at the end
 A_FRICTIONLESS = 2e-4  # frictionless grains: with A_KN a load step stalls (two contacts, no friction)
 BASE = {"phi": 0.82, "friction": 30.0, "kn_g": 0.1}
-SWEEP = {"friction": [0.0, 15.0, 30.0], "phi": [0.78, 0.82, 0.85], "kn_g": [0.01, 0.1, 1.0]}
+SWEEP = {"friction": [0.0, 15.0, 30.0], "phi": [0.78, 0.82, 0.85], "kn_g": [0.01, 0.1, 1.0, 10.0]}
 Z_VOIGT = 4.0  # coordination number assumed for the equivalent disc
 
 
