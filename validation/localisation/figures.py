@@ -352,14 +352,16 @@ def fig_concentration(cases):
 
 def fig_load(cases):
     fig, ax = plt.subplots(figsize=(6.5, 4.5))
-    for n, lab, st in [("empty", "empty cavity (BEM)", "k-")] + [
+    discs = study.disc_moduli()
+    greys = plt.cm.Greys(np.linspace(0.35, 0.8, len(discs)))
+    for (n, lab, st), col in zip([("empty", "empty cavity (BEM)", "-")] + [
             ("disc_" + n, ("disc G_d = G" if n == "homogeneous" else f"Voigt disc G_d/G = {g / study.G:.3g}"), "--")
-            for n, g, _ in study.disc_moduli()]:
+            for n, g, _ in discs], [(0, 0, 0, 1)] + list(greys)):
         _, cv = reference(n)
-        ax.plot(-cv["top_uy"], -cv["top_fy"], st, lw=1, label=lab)
-    for c in cases:
-        if c.ok:
-            ax.plot(c.top_uy, c.top_fy, "-", lw=0.9, label=c.label() + ("" if c.converged else " (stopped)"))
+        ax.plot(-cv["top_uy"], -cv["top_fy"], st, color=col, lw=1.1, label=lab)
+    done = [c for c in cases if c.ok]
+    for c, col in zip(done, plt.cm.turbo(np.linspace(0.05, 0.95, len(done)))):
+        ax.plot(c.top_uy, c.top_fy, "-", color=col, lw=1.0, label=c.label() + ("" if c.converged else " (stopped)"))
     ax.set_xlabel("top displacement [cm]")
     ax.set_ylabel("force on the top [kgf per cm of depth]")
     ax.legend(fontsize=6)
