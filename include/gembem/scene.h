@@ -88,12 +88,36 @@ typedef struct {
     int rigid;                    /* the cavity does not deform: boundary particles held (a reference) */
 } gb_host_def;
 
+/* A hybrid run's host as a state file left it (`initial_state:` of a scene with a host): the
+ * cavity's displacements and boundary particles, the current values of every group's condition
+ * and the remote stress, checked against the scene's mesh and conditions when read. */
+typedef struct {
+    int present;
+    int n_cavity;        /* cavity elements, in the host's (mesh) order */
+    double *u;           /* their displacements, 2 per element */
+    double *xy;          /* their boundary particles' centres now, 2 per element */
+    gb_bem_bc bc[GB_HOST_MAX_BCS]; /* by the scene's host.bc_group index: the current values */
+    double remote_stress[3];
+} gb_host_state;
+
+/* The global solver's Levenberg-Marquardt damping as a state file left it, so that a restart
+ * follows the path of the run it continues. */
+#define GB_SOLVER_HISTORY 10
+typedef struct {
+    int present;
+    double mu;
+    double history[GB_SOLVER_HISTORY];
+    int next;
+} gb_solver_state;
+
 typedef struct {
     char path[512];          /* the scene file */
     char length_unit[32], force_unit[32];
     gb_material grain_grain, grain_wall;
     gb_material grain_boundary;  /* grains against boundary particles: kt = 0 unless given */
     gb_host_def host;            /* instead of a box */
+    gb_host_state host_state;    /* from initial_state: the host where the earlier run left it */
+    gb_solver_state solver_state; /* from initial_state */
     int n_grains;
     gb_grain *grains;
     int n_contacts;
@@ -107,7 +131,15 @@ typedef struct {
     int n_snapshot_steps;
     int *snapshot_steps;     /* and at these global step numbers */
     int contacts_every;      /* write contacts/contacts_NNNNNN.csv every k steps (and at snapshots) */
+    /* The per-step measures (src/measure): localisation.csv gets a row at every step; the files
+     * of fields/ are written at the steps that are multiples of measures_every (step 0 included;
+     * 0: never). Default GB_MEASURES_DEFAULT_EVERY below GB_MEASURES_DEFAULT_GRAINS grains, else 0. */
+    int measures_every;
+    int measures_every_given; /* the scene set it (else the default by size) */
 } gb_scene;
+
+#define GB_MEASURES_DEFAULT_GRAINS 5000
+#define GB_MEASURES_DEFAULT_EVERY 1
 
 /* Reads and validates a scene; on any error *out is left empty and err says file:line:column. */
 gb_status gb_scene_load(const char *path, gb_scene *out, gb_error *err);

@@ -1,6 +1,7 @@
 /* gembem bem SCENE.yaml -o OUTDIR: a pure elastostatic scene through the boundary element module.
  * Everything is read, meshed and solved before OUTDIR is created: bad input leaves no output. */
 #define _POSIX_C_SOURCE 200809L
+#include <dirent.h>
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -13,8 +14,9 @@
 
 static void usage(FILE *to)
 {
-    fprintf(to, "usage: gembem bem SCENE.yaml -o OUTDIR\n"
-                "Solves a 2D elastostatic scene by boundary elements and writes to OUTDIR:\n"
+    fprintf(to, "usage: gembem bem SCENE.yaml -o OUTDIR [--overwrite]\n"
+                "Solves a 2D elastostatic scene by boundary elements and writes to OUTDIR (refused if it\n"
+                "exists and is not empty, unless --overwrite: its files are then replaced):\n"
                 "  boundary.csv   displacement, traction and stress at each boundary element\n"
                 "  boundary.vtp   the boundary with displacement and traction (ParaView)\n"
                 "  interior.vtu   displacement and stress at the scene's interior points (ParaView)\n"
@@ -39,6 +41,25 @@ static gb_status copy_file(const char *from, const char *to, gb_error *err)
     int bad = ferror(a) || ferror(b);
     fclose(a);
     if (fclose(b) || bad) return gb_fail(err, GB_EIO, "%s: write failed", to);
+    return GB_OK;
+}
+
+/* OUTDIR may be new or empty; a non-empty one only with --overwrite (as for gembem run). */
+static gb_status check_outdir(const char *dir, int overwrite, gb_error *err)
+{
+    struct stat sb;
+    if (stat(dir, &sb) != 0) return GB_OK;
+    if (!S_ISDIR(sb.st_mode)) return gb_fail(err, GB_EINPUT, "%s exists and is not a directory", dir);
+    DIR *d = opendir(dir);
+    if (!d) return gb_fail(err, GB_EIO, "%s: %s", dir, strerror(errno));
+    struct dirent *e;
+    int empty = 1;
+    while (empty && (e = readdir(d)))
+        if (strcmp(e->d_name, ".") && strcmp(e->d_name, "..")) empty = 0;
+    closedir(d);
+    if (!empty && !overwrite)
+        return gb_fail(err, GB_EINPUT, "output directory %s exists and is not empty; choose another or pass "
+                                       "--overwrite", dir);
     return GB_OK;
 }
 
@@ -121,6 +142,7 @@ static gb_status write_all(const char *dir, run *r, gb_error *err)
 int gb_cli_bem(int argc, char **argv)
 {
     const char *scene = NULL, *out = NULL;
+    int overwrite = 0;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "-h") || !strcmp(argv[i], "--help")) {
             usage(stdout);
@@ -128,6 +150,8 @@ int gb_cli_bem(int argc, char **argv)
         }
         if (!strcmp(argv[i], "-o") && i + 1 < argc)
             out = argv[++i];
+        else if (!strcmp(argv[i], "--overwrite"))
+            overwrite = 1;
         else if (argv[i][0] != '-' && !scene)
             scene = argv[i];
         else {
@@ -143,7 +167,9 @@ int gb_cli_bem(int argc, char **argv)
     gb_error err = {0};
     run r;
     memset(&r, 0, sizeof r);
-    gb_status st = compute(scene, &r, &err);
+    /* the directory first: a refusal costs no solve */
+    gb_status st = check_outdir(out, overwrite, &err);
+    if (!st) st = compute(scene, &r, &err);
     if (!st && mkdir(out, 0777) != 0 && errno != EEXIST)
         st = gb_fail(&err, GB_EIO, "%s: cannot create the output directory: %s", out, strerror(errno));
     if (!st) st = write_all(out, &r, &err);

@@ -259,13 +259,36 @@ static double merit(const gb_sim *sim, const unsigned char *in_system, double wa
     return m;
 }
 
+/* Which grains the global system moves (sim->in_system): those with two contacts or more, and
+ * (GB_IN_SYSTEM_NO_ROTATION) a grain without body force whose single contact has a tangential
+ * spring. Such a grain's only zero mode is rolling over its neighbour, which its contact force
+ * cannot drive, so the system holds its rotation and moves it with its neighbours (its contact
+ * with kt in K even if it slides: the grain must unload it), where moved apart by the reference
+ * case c) it would trade its force back and forth with the system every iteration (a two-cycle
+ * that decays by a few per cent per iteration). With a body force it rolls: case c). */
+static void mark_system(gb_sim *sim)
+{
+    for (int i = 0; i < sim->n; i++) sim->in_system[i] = sim->nc[i] >= 2 ? GB_IN_SYSTEM : 0;
+    for (int k = 0; k < sim->pairs.n; k++) {
+        const gb_pair *p = &sim->pairs.p[k];
+        if (!(p->d > 0)) continue;
+        if (!(gb_sim_material(sim, p->j)->kt > 0)) continue;
+        int ends[2] = {p->i, p->j >= 0 ? p->j : -1};
+        for (int e = 0; e < 2; e++) {
+            int i = ends[e];
+            if (i >= 0 && sim->nc[i] == 1 && sim->body[2 * i] == 0 && sim->body[2 * i + 1] == 0)
+                sim->in_system[i] = GB_IN_SYSTEM_NO_ROTATION;
+        }
+    }
+}
+
 /* A move of the global solver: the damped Newton step is taken if it lowers the merit; if not,
  * the configuration is restored and the step retried with eight times the damping. Far from
  * equilibrium (a packing that rearranges) the steps shorten towards the reference iteration's, near
  * it they lengthen to Newton's. */
 static gb_status global_move(gb_sim *sim, const gb_wall_control *wc, double wall_residual, gb_error *err)
 {
-    for (int i = 0; i < sim->n; i++) sim->in_system[i] = sim->nc[i] >= 2;
+    mark_system(sim);
     /* Non-monotone acceptance (Grippo, Lampariello and Lucidi): a move may raise the merit above
      * the current one but not above the largest of the last few accepted, so that grains moved by
      * the reference cases (a grain rolling over a neighbour) cannot lock the damping. */

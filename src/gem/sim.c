@@ -78,6 +78,24 @@ static gb_status add_host(gb_sim *sim, gb_error *err)
         bp->r[k] = 0.5 * h->mesh.length[e];
         bp->nx[k] = h->mesh.normal[2 * e], bp->ny[k] = h->mesh.normal[2 * e + 1];
     }
+    /* A restart: the host where the earlier run left it. Created as that run's host was (f0's base
+     * and unit responses for the scene's values), then its values, cavity displacements and
+     * particles set, so that f0 and the force are the ones the run had. */
+    const gb_host_state *hs = &sim->scene->host_state;
+    if (hs->present) {
+        gb_host *hw = sim->host;
+        if (hs->n_cavity != m)
+            return gb_fail(err, GB_EINPUT, "%s: the state's host has %d cavity elements, the scene's %d",
+                           sim->scene->path, hs->n_cavity, m);
+        for (int k = 0; k < sim->scene->host.n_bcs; k++) {
+            int g = gb_bem_mesh_group(&hw->mesh, sim->scene->host.bc_group[k]);
+            hw->prob.bc[g].value[0] = hs->bc[k].value[0], hw->prob.bc[g].value[1] = hs->bc[k].value[1];
+        }
+        if (hw->mesh.unbounded) memcpy(hw->prob.remote_stress, hs->remote_stress, sizeof hw->prob.remote_stress);
+        memcpy(hw->u, hs->u, 2 * (size_t)m * sizeof(double));
+        for (int k = 0; k < m; k++) bp->x[k] = hs->xy[2 * k], bp->y[k] = hs->xy[2 * k + 1];
+        gb_host_update_f0(hw);
+    }
     for (int i = 0; i < sim->n; i++)
         if (!gb_host_in_cavity(h, sim->g[i].x, sim->g[i].y))
             return gb_fail(err, GB_EINPUT, "%s: grain %d at (%g, %g) lies outside the host's cavity '%s'",
@@ -120,7 +138,12 @@ gb_status gb_sim_create(const gb_scene *scene, gb_sim **out, gb_error *err)
     sim->ref_width = scene->box.right - scene->box.left;
     sim->ref_height = scene->box.top - scene->box.bottom;
     sim->lm_mu = 1e-6;
-    sim->lm_best = INFINITY;
+    sim->lm_best = INFINITY; /* reset at every load step (gb_gem_relax): a restart needs no more */
+    if (scene->solver_state.present) { /* a restart continues the damping of the run it continues */
+        sim->lm_mu = scene->solver_state.mu;
+        memcpy(sim->lm_history, scene->solver_state.history, sizeof sim->lm_history);
+        sim->lm_next = scene->solver_state.next;
+    }
     sim->tan_phi_gg = tan(scene->grain_grain.friction_deg * PI / 180);
     sim->tan_phi_gw = tan(scene->grain_wall.friction_deg * PI / 180);
     sim->tan_phi_gb = tan(scene->grain_boundary.friction_deg * PI / 180);
@@ -150,6 +173,9 @@ gb_status gb_sim_create(const gb_scene *scene, gb_sim **out, gb_error *err)
         gb_pair *p = find_pair(&sim->pairs, i, j);
         if (!p || !(p->d > 0)) {
             gb_sim_free(sim);
+            if (GB_IS_PARTICLE(ci->j))
+                return gb_fail(err, GB_EINPUT, "initial contact %d (grain %d, boundary particle p%d) does not overlap",
+                               c, ci->i, GB_PARTICLE_OF(ci->j));
             return gb_fail(err, GB_EINPUT, "initial contact %d (grains %d, %d) does not overlap", c, ci->i, ci->j);
         }
         /* Seen from the lower index the tangential force keeps its sign (K 25). */

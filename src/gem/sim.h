@@ -66,12 +66,15 @@ struct gb_sim {
     /* The state before a trial move of the global solver. */
     gb_sim_state trial;
     double lm_mu;        /* Levenberg-Marquardt damping of the global solver */
-#define LM_MEMORY 10
+#define LM_MEMORY GB_SOLVER_HISTORY
+/* sim->in_system: 0 moved by the reference cases, else by the global system, its rotation held or not */
+#define GB_IN_SYSTEM 1
+#define GB_IN_SYSTEM_NO_ROTATION 2
     double lm_history[LM_MEMORY]; /* merits before the last accepted moves */
     double lm_best;               /* lowest merit of the load step (stall detection) */
     long lm_since;                /* moves since one brought it below LM_STALL_FACTOR x lm_best */
     int lm_next;
-    unsigned char *in_system; /* per grain: moved by the global system in this iteration */
+    unsigned char *in_system; /* per grain: moved by the global system in this iteration (GB_IN_SYSTEM...) */
     long iterations_total;
     /* Energy accounts since the start of the run (absolute, force x length). */
     double work_walls;        /* done by the walls: quasi-static, from converged steps' forces */

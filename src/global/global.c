@@ -45,6 +45,7 @@ struct gb_global {
     double *S;                /* per grain: its block of K (s00 s01 s02 s11 s12 s22) */
     double *Sp;               /* per particle: its contact block (s00 s01 s11) */
     double *kt;               /* per pair: tangential stiffness used in K (0 for a sliding contact) */
+    unsigned char *stick;     /* per pair: a sliding contact that the step unloads: kt in K */
     int kt_cap;
     cholmod_common cc;
     cholmod_sparse *A;
@@ -120,7 +121,7 @@ void gb_global_free(gb_global *gl)
     free(gl->dof0), free(gl->adj_start), free(gl->adj), free(gl->adj_off), free(gl->collen), free(gl->colstart);
     free(gl->pos_ij), free(gl->pos_ji), free(gl->wall_in_grain), free(gl->grain_in_wall), free(gl->touch);
     free(gl->Ap), free(gl->Ai), free(gl->Ax), free(gl->rhs), free(gl->x), free(gl->held);
-    free(gl->S), free(gl->Sp), free(gl->kt);
+    free(gl->S), free(gl->Sp), free(gl->kt), free(gl->stick);
     free(gl);
 }
 
@@ -342,8 +343,12 @@ static gb_status tangents(gb_global *gl, const gb_sim *sim, gb_error *err)
 {
     if (sim->pairs.n > gl->kt_cap) {
         double *kt = realloc(gl->kt, (size_t)sim->pairs.cap * sizeof(double));
-        if (!kt) return gb_fail(err, GB_ENOMEM, "out of memory");
-        gl->kt = kt, gl->kt_cap = sim->pairs.cap;
+        if (kt) gl->kt = kt;
+        unsigned char *stick = realloc(gl->stick, (size_t)sim->pairs.cap);
+        if (stick) gl->stick = stick;
+        if (!kt || !stick) return gb_fail(err, GB_ENOMEM, "out of memory");
+        gl->kt_cap = sim->pairs.cap;
+        memset(gl->stick, 0, (size_t)sim->pairs.cap);
     }
     memset(gl->S, 0, 6 * (size_t)gl->n * sizeof(double));
     memset(gl->Sp, 0, 3 * (size_t)gl->np * sizeof(double));
@@ -353,7 +358,7 @@ static gb_status tangents(gb_global *gl, const gb_sim *sim, gb_error *err)
         if (!(p->d > 0)) continue;
         const gb_material *m = gb_sim_material(sim, p->j);
         double limit = p->pn * gb_sim_tan_phi(sim, p->j) + m->cohesion;
-        double kn = m->kn, kt = fabs(p->pt) >= limit * (1 - 1e-9) ? 0 : m->kt;
+        double kn = m->kn, kt = fabs(p->pt) >= limit * (1 - 1e-9) && !gl->stick[k] ? 0 : m->kt;
         gl->kt[k] = kt;
         double c = p->nx, s = p->ny;
         double s00 = kn * c * c + kt * s * s, s01 = (kn - kt) * c * s, s11 = kn * s * s + kt * c * c;
@@ -480,21 +485,18 @@ static void wall_residuals(gb_global *gl, const gb_sim *sim, const gb_wall_contr
     }
 }
 
-gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const gb_wall_control *wc, double mu, gb_error *err)
+/* Holds what the system does not move, sets the right-hand side -F, assembles with the damping mu
+ * and solves (analysing first on a new pattern), regularising a singular matrix. */
+static gb_status solve_system(gb_global *gl, const gb_sim *sim, const gb_wall_control *wc, double mu, int new_pattern,
+                              double t0, gb_error *err)
 {
     gb_status st;
-    double t0 = now();
-    int new_pattern = gl->pattern_of != sim->pairs.rebuilds;
-    if (new_pattern) {
-        if ((st = build_pattern(gl, &sim->pairs, err))) return st;
-        gl->pattern_of = sim->pairs.rebuilds;
-    }
     int n = gl->n, np = gl->np;
-    if ((st = tangents(gl, sim, err))) return st;
     for (int i = 0; i < n; i++) {
-        int few = sim->nc[i] < 2;
-        gl->held[3 * i] = gl->held[3 * i + 1] = (unsigned char)few;
-        gl->held[3 * i + 2] = (unsigned char)(few || !(gl->S[6 * i + 5] > 0)); /* no rotational stiffness */
+        int out = !sim->in_system[i];
+        gl->held[3 * i] = gl->held[3 * i + 1] = (unsigned char)out;
+        gl->held[3 * i + 2] = (unsigned char)(out || sim->in_system[i] == GB_IN_SYSTEM_NO_ROTATION ||
+                                              !(gl->S[6 * i + 5] > 0)); /* no rotational stiffness */
         for (int a = 0; a < 3; a++) gl->rhs[3 * i + a] = gl->held[3 * i + a] ? 0 : -sim->F[3 * i + a];
     }
     int rigid = sim->scene->host.rigid; /* a rigid cavity: its particles are held */
@@ -523,6 +525,49 @@ gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const gb_wall_control *wc,
         assemble(gl, sim, shift);
         gl->stats.assemble += now() - t0;
     }
+    return GB_OK;
+}
+
+gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const gb_wall_control *wc, double mu, gb_error *err)
+{
+    gb_status st;
+    double t0 = now();
+    int new_pattern = gl->pattern_of != sim->pairs.rebuilds;
+    if (new_pattern) {
+        if ((st = build_pattern(gl, &sim->pairs, err))) return st;
+        gl->pattern_of = sim->pairs.rebuilds;
+    }
+    int n = gl->n, np = gl->np;
+    if ((st = tangents(gl, sim, err))) return st; /* sizes gl->stick */
+    /* A grain with a single contact in the system keeps that contact's kt (see mark_system). */
+    for (int k = 0; k < sim->pairs.n; k++) {
+        const gb_pair *p = &sim->pairs.p[k];
+        gl->stick[k] = p->d > 0 && (sim->in_system[p->i] == GB_IN_SYSTEM_NO_ROTATION ||
+                                    (p->j >= 0 && sim->in_system[p->j] == GB_IN_SYSTEM_NO_ROTATION));
+    }
+    if ((st = tangents(gl, sim, err))) return st;
+    if ((st = solve_system(gl, sim, wc, mu, new_pattern, t0, err))) return st;
+    /* A sliding contact has no tangential stiffness in K (it slides on), but if the solution moves
+     * it back, it sticks again with its spring kt: Newton's step, blind to that, overshoots, and the
+     * contact flips between sliding and sticking from one iteration to the next. Such contacts get
+     * kt and the system is solved once more (an active-set correction). */
+    int unloaded = 0;
+    for (int k = 0; k < sim->pairs.n; k++) {
+        const gb_pair *p = &sim->pairs.p[k];
+        if (!(p->d > 0) || gl->kt[k] > 0 || !(gb_sim_material(sim, p->j)->kt > 0) || p->pt == 0) continue;
+        if (p->j < 0 && !GB_IS_PARTICLE(p->j)) continue; /* walls: moved by their own DOFs */
+        const double *a = &gl->x[3 * p->i];
+        double b[3] = {0, 0, 0};
+        if (p->j >= 0) b[0] = gl->x[3 * p->j], b[1] = gl->x[3 * p->j + 1], b[2] = gl->x[3 * p->j + 2];
+        else b[0] = gl->x[gl->dof0[n + GB_PARTICLE_OF(p->j)]], b[1] = gl->x[gl->dof0[n + GB_PARTICLE_OF(p->j)] + 1];
+        double du_t = -(a[0] - b[0]) * p->ny + (a[1] - b[1]) * p->nx + a[2] + b[2]; /* (K 25) */
+        if (du_t * p->pt < 0) gl->stick[k] = 1, unloaded++;
+    }
+    if (unloaded) {
+        t0 = now();
+        if ((st = tangents(gl, sim, err)) || (st = solve_system(gl, sim, wc, mu, 0, t0, err))) return st;
+        gl->stats.corrections++;
+    }
     /* The moves: the solution, scaled down as a whole if a grain or particle would move more than
      * max_move (a share of its radius), and the reference cases for the held grains. */
     const gb_solver_settings *sv = &sim->scene->solver;
@@ -535,7 +580,7 @@ gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const gb_wall_control *wc,
     double a = sv->global_alpha, scale = worst * a > sv->max_move ? sv->max_move / worst : a;
     for (int i = 0; i < n; i++) {
         double *d = &sim->dX[3 * i];
-        if (sim->nc[i] < 2) {
+        if (!sim->in_system[i]) {
             gb_gem_grain_move(sim, i, d);
             continue;
         }

@@ -16,13 +16,15 @@ typedef enum { GB_LINEAR_CHOLMOD = 0, GB_LINEAR_UMFPACK = 1 } gb_linear_kind;
 typedef struct {
     double assemble, analyse, factorise, solve;
     long analyses, factorisations, regularised;
+    long corrections; /* iterations solved twice: sliding contacts that the first solution unloads */
 } gb_global_stats;
 
 gb_status gb_global_create(gb_linear_kind kind, int n_grains, int n_particles, gb_global **out, gb_error *err);
 void gb_global_free(gb_global *gl);
 
-/* Fills sim->dX for every grain. Grains with fewer than two contacts move as in the reference
- * iteration (cases b, c) and are held in the system; a rotation without stiffness (kt = 0) is held;
+/* Fills sim->dX for every grain. Grains outside the system (sim->in_system 0: fewer than two
+ * contacts) move as in the reference iteration (cases b, c) and are held in the system; a rotation
+ * without stiffness (kt = 0) or marked GB_IN_SYSTEM_NO_ROTATION is held;
  * the rest solve K dX = -F together, with the walls under stress control as DOFs of the same system
  * (their residual: force minus target). The diagonal is scaled by 1 + mu (Levenberg-Marquardt:
  * mu -> 0 is Newton's step, a large mu a short step along each DOF's own stiffness, like the

@@ -15,6 +15,9 @@
 #include "io/file_util.h"
 #include "measure/step_measures.h"
 
+#define GB_STR_(x) #x
+#define GB_STR(x) GB_STR_(x)
+
 struct gb_run_output {
     char dir[900];
     const gb_scene *scene;
@@ -81,7 +84,13 @@ static gb_status write_info(const gb_run_output *o, const char *status, const ch
     fprintf(a.f, "# How this run directory was made.\ngembem_version: %s\ncommand: \"%s\"\nscene: \"%s\"\nstarted: %s\n",
             gb_version(), o->command, o->scene->path, o->started);
     const char *threads = getenv("OPENBLAS_NUM_THREADS");
-    fprintf(a.f, "openblas_threads: \"%s\"\nstatus: %s\n", threads ? threads : "default", status);
+    fprintf(a.f, "openblas_threads: \"%s\"\n", threads ? threads : "default");
+    const gb_scene *sc = o->scene;
+    fprintf(a.f, "measures_every: %d   # fields/ of the per-step measures (0: none)%s\n", sc->measures_every,
+            sc->measures_every_given ? ""
+            : sc->measures_every ? "; the default below " GB_STR(GB_MEASURES_DEFAULT_GRAINS) " grains"
+                                 : "; the default from " GB_STR(GB_MEASURES_DEFAULT_GRAINS) " grains up");
+    fprintf(a.f, "status: %s\n", status);
     if (message) {
         fprintf(a.f, "message: \"");
         for (const char *c = message; *c; c++) fputc(*c == '"' ? '\'' : *c, a.f);
@@ -209,7 +218,8 @@ gb_status gb_run_output_step(gb_run_output *o, const gb_sim *sim, const gb_step_
     char path[1024];
     if (o->host && (st = gb_host_write_step(o->host, r->step, sim, err))) return st;
     /* Strain field, D2min, localisation, sliding contacts, host around the cavity (src/measure). */
-    if ((st = gb_measure_write_step(o->dir, sim, r->step, err))) return st;
+    int fields = sc->measures_every > 0 && r->step % sc->measures_every == 0;
+    if ((st = gb_measure_write_step(o->dir, sim, r->step, fields, err))) return st;
     if ((sc->contacts_every > 0 && r->step % sc->contacts_every == 0) || snapshot_due(sc, r->step)) {
         snprintf(path, sizeof path, "%s/contacts", o->dir);
         if ((st = make_dirs(path, err))) return st;

@@ -50,6 +50,55 @@ gb_status gb_contacts_csv_write(const char *path, const gb_sim *sim, gb_error *e
     return st;
 }
 
+/* A group's condition in the scene's syntax (host.boundary), with its current values. */
+static void write_bc(FILE *f, const gb_bem_bc *bc)
+{
+    const double *v = bc->value;
+    switch (bc->kind) {
+    case GB_BEM_BC_FIXED: fprintf(f, "fixed"); break;
+    case GB_BEM_BC_DISPLACEMENT: fprintf(f, "{displacement: [%.17g, %.17g]}", v[0], v[1]); break;
+    case GB_BEM_BC_TRACTION: fprintf(f, "{traction: [%.17g, %.17g]}", v[0], v[1]); break;
+    case GB_BEM_BC_PRESSURE: fprintf(f, "{pressure: %.17g}", v[0]); break;
+    case GB_BEM_BC_NORMAL_DISPLACEMENT: fprintf(f, "{normal_displacement: %.17g}", v[0]); break;
+    case GB_BEM_BC_COMPONENTS:
+        fprintf(f, "{%s: %.17g, %s: %.17g}", bc->u_given & 1 ? "ux" : "tx", v[0], bc->u_given & 2 ? "uy" : "ty", v[1]);
+        break;
+    default: fprintf(f, "free"); break;
+    }
+}
+
+/* state_host.csv: per cavity element, in the host's order, its boundary particle's centre now and
+ * its displacement (the particle moves with it: centre = midpoint + displacement, to rounding). */
+static gb_status write_host_csv(const char *path, const gb_sim *sim, gb_error *err)
+{
+    const gb_host *h = sim->host;
+    gb_atomic_file a;
+    gb_status st = gb_atomic_open(&a, path, err);
+    if (st) return st;
+    fprintf(a.f, "element,x,y,ux,uy\n");
+    for (int k = 0; k < h->m / 2; k++)
+        fprintf(a.f, "%d,%.17g,%.17g,%.17g,%.17g\n", h->K.elem[k], sim->bp.x[k], sim->bp.y[k], h->u[2 * k],
+                h->u[2 * k + 1]);
+    return gb_atomic_commit(&a, err);
+}
+
+static void write_host_yaml(FILE *f, const gb_sim *sim)
+{
+    const gb_host *h = sim->host;
+    fprintf(f, "host:   # where the host was: checked against the scene's mesh and conditions when read\n"
+               "  elements: %d\n  cavity_elements: %d\n  particles: state_host.csv\n  boundary:%s\n",
+            h->mesh.n, h->m / 2, h->mesh.n_groups > 1 ? "" : " {}");
+    for (int g = 0; g < h->mesh.n_groups; g++) {
+        if (g == h->cavity) continue;
+        fprintf(f, "    %s: ", h->mesh.group_name[g]);
+        write_bc(f, &h->prob.bc[g]);
+        fprintf(f, "\n");
+    }
+    if (h->mesh.unbounded)
+        fprintf(f, "  remote_stress: [%.17g, %.17g, %.17g]\n", h->prob.remote_stress[0], h->prob.remote_stress[1],
+                h->prob.remote_stress[2]);
+}
+
 gb_status gb_state_write(const char *dir, const gb_sim *sim, gb_error *err)
 {
     char path[1024];
@@ -58,16 +107,25 @@ gb_status gb_state_write(const char *dir, const gb_sim *sim, gb_error *err)
     if ((st = gb_grains_csv_write(path, sim, err))) return st;
     snprintf(path, sizeof path, "%s/state_contacts.csv", dir);
     if ((st = gb_contacts_csv_write(path, sim, err))) return st;
+    snprintf(path, sizeof path, "%s/state_host.csv", dir);
+    if (sim->host && (st = write_host_csv(path, sim, err))) return st;
     snprintf(path, sizeof path, "%s/state.yaml", dir);
     gb_atomic_file a;
     if ((st = gb_atomic_open(&a, path, err))) return st;
     gb_box b = gb_sim_box(sim);
     fprintf(a.f,
-            "# gembem %s state: the box, grains and contact forces of the last converged step.\n"
+            "# gembem %s state: the box, grains and contact forces of the last converged step%s.\n"
             "# A scene starts from it with   initial_state: %s\n"
             "gembem_state: 1\n"
             "box: {left: %.17g, right: %.17g, bottom: %.17g, top: %.17g}\n"
             "grains: {file: state_grains.csv, contacts: state_contacts.csv}\n",
-            gb_version(), path, b.left, b.right, b.bottom, b.top);
+            gb_version(), sim->host ? ", and the host (the scene gives the same host: section)" : "", path, b.left,
+            b.right, b.bottom, b.top);
+    if (sim->host) write_host_yaml(a.f, sim);
+    if (sim->global) {
+        fprintf(a.f, "solver_state: {damping: %.17g, damping_next: %d, damping_history: [", sim->lm_mu, sim->lm_next);
+        for (int k = 0; k < LM_MEMORY; k++) fprintf(a.f, "%s%.17g", k ? ", " : "", sim->lm_history[k]);
+        fprintf(a.f, "]}\n");
+    }
     return gb_atomic_commit(&a, err);
 }

@@ -101,7 +101,7 @@ static gb_status ring(const gb_host *h, const gb_bem_solution *sol, gb_host_meas
     return GB_OK;
 }
 
-gb_status gb_host_measure(const gb_sim *sim, gb_host_measures *m, gb_error *err)
+gb_status gb_host_measure(const gb_sim *sim, int wall_only, gb_host_measures *m, gb_error *err)
 {
     memset(m, 0, sizeof *m);
     m->s_ref_kind = "none";
@@ -132,9 +132,11 @@ gb_status gb_host_measure(const gb_sim *sim, gb_host_measures *m, gb_error *err)
     gb_bem_problem empty = h->prob;
     empty.bc[h->cavity].kind = GB_BEM_BC_FREE;
     if ((st = gb_bem_solve_group_displacement(mesh, &h->sys, &h->prob, h->cavity, h->u, NULL, &sol, err)) ||
-        (st = gb_bem_solve(mesh, &h->sys, &empty, NULL, &sol0, err)) ||
-        (st = gb_bem_boundary_stress(mesh, &h->sys.material, &sol, bs, err)) ||
-        (st = gb_bem_boundary_stress(mesh, &h->sys.material, &sol0, bs0, err)))
+        (st = gb_bem_boundary_stress(mesh, &h->sys.material, &sol, bs, err)))
+        goto done;
+    if (wall_only) memset(bs0, 0, 3 * (size_t)n * sizeof *bs0);
+    else if ((st = gb_bem_solve(mesh, &h->sys, &empty, NULL, &sol0, err)) ||
+             (st = gb_bem_boundary_stress(mesh, &h->sys.material, &sol0, bs0, err)))
         goto done;
     double hmax = 0;
     for (int k = 0; k < nw; k++) {
@@ -148,7 +150,7 @@ gb_status gb_host_measure(const gb_sim *sim, gb_host_measures *m, gb_error *err)
     }
     reference_stress(h, &sol, m);
     m->max_concentration = m->s_ref > 0 ? hmax / m->s_ref : 0;
-    st = ring(h, &sol, m, err);
+    if (!wall_only) st = ring(h, &sol, m, err);
 done:
     free(bs), free(bs0);
     gb_bem_solution_free(&sol);

@@ -213,11 +213,12 @@ static gb_status write_row(const char *dir, int step, const zone *z, int n_slidi
     return GB_OK;
 }
 
-gb_status gb_measure_write_step(const char *dir, const gb_sim *sim, int step, gb_error *err)
+gb_status gb_measure_write_step(const char *dir, const gb_sim *sim, int step, int fields, gb_error *err)
 {
     char path[1200];
     snprintf(path, sizeof path, "%s/fields", dir);
-    if (mkdir(path, 0777) != 0 && errno != EEXIST) return gb_fail(err, GB_EIO, "%s: %s", path, strerror(errno));
+    if (fields && mkdir(path, 0777) != 0 && errno != EEXIST)
+        return gb_fail(err, GB_EIO, "%s: %s", path, strerror(errno));
     zone z;
     gb_host_measures hm;
     memset(&hm, 0, sizeof hm);
@@ -226,20 +227,21 @@ gb_status gb_measure_write_step(const char *dir, const gb_sim *sim, int step, gb
     gb_status st = sl ? zone_measure(sim, &z, err) : gb_fail(err, GB_ENOMEM, "out of memory");
     if (!sl) memset(&z, 0, sizeof z);
     if (!st) gb_measure_sliding(sim, sl, n_sliding);
-    if (!st && sim->host) st = gb_host_measure(sim, &hm, err);
-    if (!st) {
+    /* the row needs the host's wall only; the empty cavity and the ring are for the files */
+    if (!st && sim->host) st = gb_host_measure(sim, !fields, &hm, err);
+    if (!st && fields) {
         snprintf(path, sizeof path, "%s/fields/grains_%06d.csv", dir, step);
         st = write_grains(path, &z, err);
     }
-    if (!st && z.tri_ok) {
+    if (!st && fields && z.tri_ok) {
         snprintf(path, sizeof path, "%s/fields/triangles_%06d.vtu", dir, step);
         if (!(st = write_triangles(path, &z, err))) st = add_to_pvd(dir, step, err);
     }
-    if (!st) {
+    if (!st && fields) {
         snprintf(path, sizeof path, "%s/fields/sliding_%06d.csv", dir, step);
         st = write_sliding(path, sl, n_sliding, err);
     }
-    if (!st && sim->host) st = write_host(dir, step, &hm, err);
+    if (!st && fields && sim->host) st = write_host(dir, step, &hm, err);
     if (!st) st = write_row(dir, step, &z, n_sliding, sim->host ? &hm : NULL, err);
     free(sl);
     zone_free(&z);

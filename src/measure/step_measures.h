@@ -45,12 +45,14 @@ typedef struct {
  * remote stress of an unbounded host; else the largest mean traction |sum t L| / sum L carried
  * by a boundary group with a non-zero prescribed value (a displaced or loaded side); else, a body
  * loaded by its grains alone, the mean pressure of the grains on the cavity wall. */
-gb_status gb_host_measure(const gb_sim *sim, gb_host_measures *m, gb_error *err);
+/* With wall_only, only what localisation.csv's row needs: the hoop and normal stress on the wall,
+ * s_ref and the concentration (one solve); hoop_empty is zero and the ring empty. */
+gb_status gb_host_measure(const gb_sim *sim, int wall_only, gb_host_measures *m, gb_error *err);
 void gb_host_measures_free(gb_host_measures *m);
 
-/* The step's measures in the run directory `dir` (see README.md, "Measures"): one row of
- * localisation.csv (created at step 0) and the files of fields/ for this step. The step's
- * increment runs from the step's start (the simulation's saved state) to its end. */
-gb_status gb_measure_write_step(const char *dir, const gb_sim *sim, int step, gb_error *err);
+/* The step's measures in the run directory `dir` (see README.md, "Measures per step"): one row of
+ * localisation.csv (created at step 0) and, with `fields`, the files of fields/ for this step.
+ * The step's increment runs from the step's start (the simulation's saved state) to its end. */
+gb_status gb_measure_write_step(const char *dir, const gb_sim *sim, int step, int fields, gb_error *err);
 
 #endif

@@ -153,20 +153,35 @@ static gb_status read_contacts_csv(const char *path, gb_scene *s, gb_error *err)
         }
         double i, j = 0, pt;
         if ((st = gb_csv_number(&csv, ci, &i, err)) || (st = gb_csv_number(&csv, cp, &pt, err))) break;
-        int wall = gb_wall_from_name(csv.field[cj]);
-        if (wall < 0 && (st = gb_csv_number(&csv, cj, &j, err))) {
-            st = gb_csv_fail(&csv, cj, err, "a grain index or a wall name (left, right, bottom, top)");
+        int wall = gb_wall_from_name(csv.field[cj]), particle = -1;
+        /* a boundary particle of a host, p<e> (a hybrid run's state) */
+        if (s->host.present && csv.field[cj][0] == 'p' && csv.field[cj][1] >= '0' && csv.field[cj][1] <= '9') {
+            char *end;
+            long e = strtol(csv.field[cj] + 1, &end, 10);
+            if (*end || e > 100000000L) {
+                st = gb_csv_fail(&csv, cj, err, "a grain index or a boundary particle p<element>");
+                break;
+            }
+            particle = (int)e;
+        }
+        if (wall >= 0 && s->host.present) {
+            st = gb_csv_fail(&csv, cj, err, "a grain index or a boundary particle p<element> (a host has no walls)");
+            break;
+        }
+        if (wall < 0 && particle < 0 && (st = gb_csv_number(&csv, cj, &j, err))) {
+            st = gb_csv_fail(&csv, cj, err, s->host.present ? "a grain index or a boundary particle p<element>"
+                                                            : "a grain index or a wall name (left, right, bottom, top)");
             break;
         }
         if (i != floor(i) || i < 0 || i >= s->n_grains) {
             st = gb_csv_fail(&csv, ci, err, "a grain index of the grains file");
             break;
         }
-        if (wall < 0 && (j != floor(j) || j < 0 || j >= s->n_grains || j == i)) {
+        if (wall < 0 && particle < 0 && (j != floor(j) || j < 0 || j >= s->n_grains || j == i)) {
             st = gb_csv_fail(&csv, cj, err, "another grain's index of the grains file");
             break;
         }
-        gb_contact_init c = {(int)i, wall >= 0 ? -1 - wall : (int)j, pt};
+        gb_contact_init c = {(int)i, wall >= 0 ? -1 - wall : particle >= 0 ? -1 - GB_N_WALLS - particle : (int)j, pt};
         s->contacts[s->n_contacts++] = c;
     }
     gb_csv_close(&csv);

@@ -6,6 +6,7 @@
 #include "gembem/scene.h"
 #include "scene/grains_file.h"
 #include "scene/host_read.h"
+#include "scene/state_read.h"
 #include "scene/yaml_read.h"
 
 
@@ -22,6 +23,8 @@ void gb_scene_free(gb_scene *s)
     free(s->contacts);
     free(s->stages);
     free(s->snapshot_steps);
+    free(s->host_state.u);
+    free(s->host_state.xy);
     memset(s, 0, sizeof *s);
 }
 
@@ -276,6 +279,15 @@ static gb_status read_output(gb_ymap *top, gb_scene *s, gb_error *err)
     long contacts_every = 0;
     if ((st = gb_ymap_int(&m, "contacts_every", 0, 0, 100000000L, &contacts_every, err))) return st;
     s->contacts_every = (int)contacts_every;
+    /* fields/ of the per-step measures: every step for small scenes, off for large ones (about 600
+     * bytes per grain and step) unless the scene says */
+    struct fy_node *me;
+    long measures_every = s->n_grains < GB_MEASURES_DEFAULT_GRAINS ? GB_MEASURES_DEFAULT_EVERY : 0;
+    if ((st = gb_ymap_find(&m, "measures_every", 0, &me, err)) ||
+        (st = gb_ymap_int(&m, "measures_every", 0, 0, 100000000L, &measures_every, err)))
+        return st;
+    s->measures_every = (int)measures_every;
+    s->measures_every_given = me != NULL;
     if (list) {
         int total = gb_scene_total_steps(s);
         if (fy_node_get_type(list) != FYNT_SEQUENCE)
@@ -307,10 +319,14 @@ static gb_status read_initial_state(gb_ymap *top, gb_scene *s, gb_error *err)
     double version = 0;
     if (!(st = gb_ymap_open(&doc, fy_document_root(doc.fyd), "", &m, err)) &&
         !(st = gb_ymap_number(&m, "gembem_state", GB_Y_REQUIRED, &version, err)) &&
-        !(st = gb_box_read(&m, &s->box, err)) && !(st = gb_ymap_map(&m, "grains", GB_Y_REQUIRED, &g, err)) &&
-        !(st = gb_grains_section_read(&g, s, err)) && !(st = gb_ymap_close(&m, err)) && version != 1)
+        !(st = gb_box_read(&m, &s->box, err)) && !(st = gb_state_host_presence(&m, s, err)) &&
+        !(st = gb_ymap_map(&m, "grains", GB_Y_REQUIRED, &g, err)) &&
+        !(st = gb_grains_section_read(&g, s, err)) && !(st = gb_state_host_read(&m, s, err)) &&
+        !(st = gb_state_solver_read(&m, s, err)) && !(st = gb_ymap_close(&m, err)) && version != 1)
         st = gb_yaml_fail(&doc, m.node, err, "gembem_state: expected version 1");
-    if (!st) st = gb_grains_check(s, doc.path, err);
+    /* With a host the box only bounds the grains for reports (kept as the run had it); the
+     * simulation checks that every grain lies in the cavity. */
+    if (!st && !s->host.present) st = gb_grains_check(s, doc.path, err);
     gb_yaml_free(&doc);
     return st;
 }
@@ -348,11 +364,14 @@ static gb_status load(const gb_yaml_doc *doc, gb_scene *s, gb_error *err)
         (st = gb_ymap_find(&top, "grains", 0, &grains, err)))
         return st;
     if (state) {
-        struct fy_node *box;
+        struct fy_node *box, *host;
         gb_ymap_find(&top, "box", 0, &box, err);
+        if ((st = gb_ymap_find(&top, "host", 0, &host, err))) return st;
         if (grains || box)
             return gb_yaml_fail(doc, state, err, "initial_state: gives the grains and the box; do not also give "
                                                  "'grains' or 'box'");
+        /* a hybrid state: the scene gives the host, the state where it was */
+        if (host && (st = gb_host_section_read(&top, &s->host, err))) return st;
         if ((st = read_initial_state(&top, s, err))) return st;
     } else {
         gb_ymap g;

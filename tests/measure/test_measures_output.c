@@ -290,7 +290,7 @@ static void check_affine(const char *dir)
         double X = sim->saved.g[i].x, Y = sim->saved.g[i].y;
         sim->g[i].x = X + A[0] * X + A[1] * Y + b[0], sim->g[i].y = Y + A[2] * X + A[3] * Y + b[1];
     }
-    CHECK(gb_measure_write_step(dir, sim, 0, &err) == GB_OK);
+    CHECK(gb_measure_write_step(dir, sim, 0, 1, &err) == GB_OK);
     double e[3] = {-(A[0] + 0.5 * (A[0] * A[0] + A[2] * A[2])), -(A[3] + 0.5 * (A[1] * A[1] + A[3] * A[3])),
                    -0.5 * (A[1] + A[2] + A[0] * A[1] + A[2] * A[3])};
     double gamma = 2 * sqrt(0.25 * (e[0] - e[1]) * (e[0] - e[1]) + e[2] * e[2]);

@@ -1,0 +1,124 @@
+#!/usr/bin/env bash
+# A hybrid run restarts from its state.yaml (the host's cavity displacements and boundary
+# particles, every group's current values, the remote stress, the solver's damping):
+# 1. tests/hybrid/load_grains.yaml (27 grains, a confining pressure, then the top pushed) in one
+#    run, and as stage 1 (relax, pressure) + a restart for stage 2 (the top): the final grain
+#    positions and rotations of the grains held by two contacts or more, the host's cavity
+#    displacements and host_steps.csv's rows of stage 2 equal to 1e-9 of each column's largest
+#    value, the iterations per step within 2, the host's boundary values in state.yaml identical.
+#    Not bit for bit: the restart builds its pair list afresh, so sums run in another order, and
+#    the rounding steers the iteration slightly otherwise (an iteration more or less); the
+#    accuracy a = 1e-9 kgf against stiffnesses of 1e3-1e5 kgf/cm fixes the positions to about
+#    1e-12 cm. A grain left with one contact or none is in equilibrium wherever its path leaves it
+#    (it touches with no force), so its place is not compared.
+# 2. The same for tests/hybrid/load_grains_remote.yaml (an infinite plane, the remote stress
+#    grown in 3 steps: 2 + a restart for 1), with friction and kt on the boundary particles so
+#    that their contacts carry tangential forces through the restart. The cavity's rows in
+#    host_steps.csv are zero to rounding there (no net force on a cavity in an infinite plane,
+#    no mean displacement beyond its rigid one): they are compared with the scale of its element
+#    displacements (1e-4 cm; largest 6.4e-4) and of the grains' forces on it (1 kgf; up to 42).
+# 3. A state that does not fit the scene is refused (exit 2, file:line:column, no run directory):
+#    another element count, another kind of condition, a particle off its element, a state
+#    without a host, a scene without a host.
+set -u
+gembem=$1; root=$(cd "$(dirname "$0")/../.." && pwd)
+out=$(mktemp -d); fail=0; passed=0
+ok() { passed=$((passed + 1)); echo "ok   $1"; }
+bad() { fail=$((fail + 1)); echo "FAIL $1"; }
+
+# Per column of two CSV files: the largest |a - b| over the largest |a| (first file's header), or
+# over the column's floor if larger (floors "col:value,..."); exits 1 if any exceeds tol. Columns
+# that are words must be equal.
+cmp_csv() { # a b tol label [floors]
+  awk -F, -v tol="$3" -v label="$4" -v floors="${5:-}" '
+    FNR == 1 { for (c = 1; c <= NF; c++) h[c] = $c; next }
+    NR == FNR { for (c = 1; c <= NF; c++) a[FNR, c] = $c; n = NF; rows = FNR; next }
+    { seen = FNR
+      for (c = 1; c <= NF; c++) {
+        if ($c !~ /^[-+0-9.eE]+$/) { if ($c != a[FNR, c]) words++; continue }
+        d = $c - a[FNR, c]; if (d < 0) d = -d; if (d > dm[c]) dm[c] = d
+        v = a[FNR, c] + 0; if (v < 0) v = -v; if (v > vm[c]) vm[c] = v } }
+    END { nf = split(floors, fl, ","); for (k = 1; k <= nf; k++) { split(fl[k], kv, ":"); floor[kv[1]] = kv[2] + 0 }
+          for (c = 1; c <= n; c++) if (vm[c] < floor[h[c]]) vm[c] = floor[h[c]]
+          worst = 0; line = ""
+          for (c = 1; c <= n; c++) { r = (vm[c] > 0 ? dm[c] / vm[c] : dm[c]); if (r > worst) worst = r
+                                      line = line sprintf(" %s %.2g", h[c], r) }
+          printf "%s: relative differences per column:%s\n", label, line
+          exit (worst > tol || words > 0 || seen != rows) }' "$1" "$2"
+}
+
+# one scene, split after stage 1's first `split` steps into two runs
+restart_case() { # name scene sed-for-all sed-for-stage1 sed-for-stage2 one-go-first-row-of-stage2 [floors]
+  local name=$1 scene=$2 all=$3 s1=$4 s2=$5 first=$6 floors=${7:-} d=$out/$1
+  mkdir -p "$d"
+  sed -e "s|\.\./\.\./meshes|$root/meshes|" -e "$all" "$scene" > "$d/one.yaml"
+  sed -e "$s1" "$d/one.yaml" > "$d/s1.yaml"
+  sed -e '/^grains:/,/^solver:/{/^solver:/!d}' -e 's|^solver:|initial_state: stage1/state.yaml\nsolver:|' -e "$s2" \
+      "$d/one.yaml" > "$d/s2.yaml"
+  "$gembem" run "$d/one.yaml" -o "$d/one" --quiet || { bad "$name: the one-go run failed"; return; }
+  "$gembem" run "$d/s1.yaml" -o "$d/stage1" --quiet || { bad "$name: stage 1 failed"; return; }
+  "$gembem" run "$d/s2.yaml" -o "$d/stage2" --quiet || { bad "$name: the restart failed"; return; }
+  # the grains held by two contacts or more in the one-go run (grain ids are 0-based rows)
+  awk -F, 'NR > 1 { c[$1]++; c[$2]++ } END { for (k in c) if (c[k] >= 2 && k ~ /^[0-9]+$/) print k }' \
+    "$d/one/state_contacts.csv" > "$d/held"
+  for f in one stage2; do
+    awk -F, 'NR == FNR { held[$1] = 1; next } FNR == 1 || held[FNR - 2]' "$d/held" "$d/$f/state_grains.csv" > "$d/g_$f"
+  done
+  cmp_csv "$d/g_one" "$d/g_stage2" 1e-9 "$name grains ($(wc -l < "$d/held") held by two contacts or more)" \
+    && ok "$name: final grains equal (1e-9)" || bad "$name: final grains differ"
+  cmp_csv "$d/one/state_host.csv" "$d/stage2/state_host.csv" 1e-9 "$name host" \
+    && ok "$name: host cavity displacements equal (1e-9)" || bad "$name: host cavity displacements differ"
+  # host_steps.csv: the one-go rows from step `first` on against the restart's, step numbers aside
+  awk -F, -v f="$first" 'NR == 1 || $1 >= f' "$d/one/host_steps.csv" | cut -d, -f2- > "$d/h1"
+  awk -F, 'NR == 1 || $1 >= 0' "$d/stage2/host_steps.csv" | cut -d, -f2- > "$d/h2"
+  cmp_csv "$d/h1" "$d/h2" 1e-9 "$name host_steps" "$floors" && ok "$name: host_steps.csv of stage 2 equal (1e-9)" \
+    || bad "$name: host_steps.csv of stage 2 differs"
+  local i1 i2
+  i1=$(awk -F, -v f="$first" 'NR > 1 && $1 > f { printf "%s ", $10 }' "$d/one/steps.csv")
+  i2=$(awk -F, 'NR > 1 && $1 > 0 { printf "%s ", $10 }' "$d/stage2/steps.csv")
+  paste -d' ' <(echo "$i1" | tr ' ' '\n' | sed '/^$/d') <(echo "$i2" | tr ' ' '\n' | sed '/^$/d') |
+    awk '{ d = $1 - $2; if (d < 0) d = -d; if (d > 2) bad = 1 } END { exit bad }' \
+    && [ "$(echo "$i1" | wc -w)" = "$(echo "$i2" | wc -w)" ] \
+    && ok "$name: iterations per step within 2 ([$i1] against [$i2])" || bad "$name: iterations [$i1] against [$i2]"
+  diff <(sed -n '/^host:/,/^solver_state/{/^solver_state/!p}' "$d/one/state.yaml") \
+       <(sed -n '/^host:/,/^solver_state/{/^solver_state/!p}' "$d/stage2/state.yaml") \
+    >/dev/null && ok "$name: the host's values in state.yaml identical" || bad "$name: the host's values in state.yaml differ"
+}
+
+# 1. A confining pressure (stage 2 of 3: the relax, pressure steps in stage 1; the push in stage 2).
+restart_case pressure "$root/tests/hybrid/load_grains.yaml" '' '/increments: {top:/d' \
+  '/relax:/d; /increments: {left:/d' 3
+# 2. An infinite plane: host_load of 3 steps split into 2 and 1; tangential forces on particles.
+restart_case remote "$root/tests/hybrid/load_grains_remote.yaml" \
+  's/grain_boundary: {kn: 1000, kt: 0, friction_deg: 0}/grain_boundary: {kn: 1000, kt: 500, friction_deg: 20}/' \
+  's/host_load: {steps: 3,/host_load: {steps: 2,/' '/relax:/d; s/host_load: {steps: 3,/host_load: {steps: 1,/' 3 \
+  ux:1e-4,uy:1e-4,fx:1,fy:1
+awk -F, 'NR > 1 && $2 ~ /^p/ && $4 != 0 { n++ } END { exit !(n > 0) }' "$out/remote/stage1/state_contacts.csv" \
+  && ok "remote: the state carries tangential forces on boundary particles" || bad "remote: no tangential force on a particle"
+
+# 3. States that do not fit. Each: a scene edit or a state edit, the expected message.
+d=$out/pressure
+refuse() { # label scene expected-message-regex
+  rm -rf "$d/refused"
+  msg=$("$gembem" run "$2" -o "$d/refused" 2>&1 >/dev/null); code=$?
+  if [ $code -eq 2 ] && [[ $msg =~ $3 ]] && [ ! -e "$d/refused" ]; then ok "$1: refused: $msg"
+  else bad "$1: exit $code, '$msg', expected /$3/"; fi
+}
+sed 's/cavity: 24}/cavity: 25}/' "$d/s2.yaml" > "$d/r_elements.yaml"
+refuse "another mesh" "$d/r_elements.yaml" \
+  "stage1/state.yaml:[0-9]+:[0-9]+: host.elements: the state's host has 44 elements, the scene's mesh .* has 45"
+sed 's/left: {pressure: 0}/left: {traction: [0, 0]}/' "$d/s2.yaml" > "$d/r_kind.yaml"
+refuse "another condition" "$d/r_kind.yaml" \
+  "stage1/state.yaml:[0-9]+:[0-9]+: host.boundary.left: the state's condition is pressure, the scene's traction"
+cp -r "$d/stage1" "$d/moved"; sed -i '3s/^\([0-9]*\),\([^,]*\),/\1,1.5,/' "$d/moved/state_host.csv"
+sed 's|stage1/state.yaml|moved/state.yaml|' "$d/s2.yaml" > "$d/r_moved.yaml"
+refuse "a particle off its element" "$d/r_moved.yaml" "moved/state_host.csv:3:[0-9]+: .*particle's centre on the element's midpoint"
+cp -r "$d/stage1" "$d/nohost"; sed -i '/^host:/,/^solver_state/{/^solver_state/!d}' "$d/nohost/state.yaml"
+sed 's|stage1/state.yaml|nohost/state.yaml|' "$d/s2.yaml" > "$d/r_nohost.yaml"
+refuse "a state without a host" "$d/r_nohost.yaml" "nohost/state.yaml:[0-9]+:[0-9]+: the state has no host"
+sed '/^host:/,/^  cavity: cavity/d' "$d/s2.yaml" > "$d/r_noscenehost.yaml"
+refuse "a scene without a host" "$d/r_noscenehost.yaml" "stage1/state.yaml:[0-9]+:[0-9]+: host: the state comes from a run with a host"
+
+[ $fail -eq 0 ] && rm -rf "$out" || echo "outputs kept in $out"
+echo "$passed passed, $fail failed"
+[ $fail -eq 0 ]

@@ -1,0 +1,68 @@
+/* Load steps on a jammed packing (300 discs relaxed frictionless by gb_jam, then friction 25 deg):
+ * four steps of +5 % isotropic stress with each solver.
+ *  - gb_jam's packing is in equilibrium: gembem's own fixing forces are below gb_jam's tolerance;
+ *  - every solver converges to a = 100 dyn, the global solver in at most 60 iterations per step
+ *    (a grain with a single contact once traded its force back and forth with the system: a
+ *    two-cycle that took thousands of iterations, see mark_system in src/gem/relax.c);
+ *  - the three solvers end at the same box (1e-5 relative: friction makes the answer depend
+ *    slightly on the path, the sizes agree to the springs' deformation);
+ *    and the walls carry the target stress.
+ *   test_jammed_steps SCENE.yaml */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "check.h"
+#include "gem/sim.h"
+
+static const char *const NAMES[3] = {"reference", "global CHOLMOD", "global UMFPACK"};
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) return fprintf(stderr, "usage: %s SCENE.yaml\n", argv[0]), 2;
+    gb_box end[3];
+    for (int solver = 0; solver < 3; solver++) {
+        gb_error err = {0};
+        gb_scene sc;
+        gb_sim *sim = NULL;
+        CHECK(gb_scene_load(argv[1], &sc, &err) == GB_OK);
+        sc.solver.method = solver ? GB_METHOD_GLOBAL : GB_METHOD_REFERENCE;
+        sc.solver.linear = solver == 2 ? GB_LINEAR_UMFPACK : GB_LINEAR_CHOLMOD;
+        CHECK(gb_sim_create(&sc, &sim, &err) == GB_OK);
+        if (!sim) return fprintf(stderr, "%s\n", err.msg), 1;
+        gb_gem_forces(sim);
+        double worst = 0;
+        for (int k = 0; k < 3 * sim->n; k++) worst = fmax(worst, fabs(sim->F[k]));
+        CHECK(worst <= 1.0 * 1.01); /* gb_jam --tol 1 (per disc |F|; components are smaller) */
+        double s1, s2;
+        gb_gem_stress(sim, &s1, &s2);
+        double s0 = 0.5 * (s1 + s2);
+        long most = 0;
+        for (int k = 1; k <= 4; k++) {
+            gb_wall_control wc = {GB_WALLS_STRESS, s0 * (1 + 0.05 * k), s0 * (1 + 0.05 * k), 0};
+            long it = 0;
+            double mf, wr;
+            gb_status st = gb_gem_relax(sim, &wc, solver ? 500 : 100000, &it, &mf, &wr, &err);
+            CHECK(st == GB_OK);
+            if (st) fprintf(stderr, "%s step %d: %s (largest force %g)\n", NAMES[solver], k, err.msg, mf);
+            most = it > most ? it : most;
+            gb_gem_forces(sim);
+            gb_gem_stress(sim, &s1, &s2);
+            double W = sim->box.right - sim->box.left;
+            CHECK_NEAR(s1, wc.s1, 2 * sc.solver.accuracy / W);
+            CHECK_NEAR(s2, wc.s2, 2 * sc.solver.accuracy / W);
+        }
+        printf("%-15s: at most %ld iterations per step, box %.9f x %.9f\n", NAMES[solver], most,
+               sim->box.right - sim->box.left, sim->box.top - sim->box.bottom);
+        if (solver) CHECK(most <= 60);
+        end[solver] = sim->box;
+        gb_sim_free(sim);
+        gb_scene_free(&sc);
+    }
+    for (int solver = 1; solver < 3; solver++) {
+        double W = end[0].right - end[0].left, H = end[0].top - end[0].bottom;
+        CHECK_NEAR(end[solver].right - end[solver].left, W, 1e-5 * W);
+        CHECK_NEAR(end[solver].top - end[solver].bottom, H, 1e-5 * H);
+    }
+    TEST_END();
+}
