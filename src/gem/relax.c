@@ -243,7 +243,8 @@ gb_status gb_gem_apply_moves(gb_sim *sim, gb_error *err)
 
 /* Levenberg-Marquardt damping of the global solver: its range, and the trials per iteration. */
 static const double MU_MIN = 1e-8, MU_MAX = 1e4;
-enum { MAX_TRIALS = 6 };
+enum { MAX_TRIALS = 6, LM_STALL = 50 };
+static const double LM_STALL_FACTOR = 0.5;
 
 /* The merit of a configuration: squared fixing forces of the grains that the system moves (those
  * with two contacts or more before the move: the others move by the reference cases, whatever the
@@ -293,6 +294,17 @@ static gb_status global_move(gb_sim *sim, const gb_wall_control *wc, double wall
      * the reference cases (a grain rolling over a neighbour) cannot lock the damping. */
     double m0 = merit(sim, sim->in_system, wall_residual), bound = m0;
     for (int k = 0; k < LM_MEMORY; k++) bound = fmax(bound, sim->lm_history[k]);
+    /* A cycle: a grain whose contact switches between sticking and sliding (the sliding contact has
+     * no tangential stiffness in K) can alternate between two configurations whose merits both
+     * stay under the non-monotone bound, slowly or never converging (seen in the localisation
+     * study's cavity packings). When no move of the last LM_STALL has brought the merit below
+     * LM_STALL_FACTOR times the lowest merit of the load step so far, the acceptance turns monotone
+     * (the damping grows until a move lowers the merit) until one does. A Newton phase halves the
+     * merit in a few moves and never meets this. */
+    if (!(m0 >= sim->lm_best * LM_STALL_FACTOR)) sim->lm_since = 0;
+    else sim->lm_since++;
+    if (m0 < sim->lm_best) sim->lm_best = m0;
+    if (sim->lm_since > LM_STALL) bound = m0;
     gb_status st = gb_sim_state_save(sim, &sim->trial, err);
     if (st) return st;
     for (int trial = 0;; trial++) {
@@ -360,6 +372,7 @@ gb_status gb_gem_relax(gb_sim *sim, const gb_wall_control *wc, long cap, long *i
                        double *wall_residual, gb_error *err)
 {
     gb_status st = GB_OK;
+    sim->lm_best = INFINITY, sim->lm_since = 0; /* the stall detection of global_move, per load step */
     for (long it = 0; it <= cap; it++) {
         if (gb_gem_iterate(sim, wc, max_force, wall_residual, err, &st)) {
             *iterations += it;

@@ -138,6 +138,7 @@ gb_status gb_sim_create(const gb_scene *scene, gb_sim **out, gb_error *err)
     sim->ref_width = scene->box.right - scene->box.left;
     sim->ref_height = scene->box.top - scene->box.bottom;
     sim->lm_mu = 1e-6;
+    sim->lm_best = INFINITY; /* reset at every load step (gb_gem_relax): a restart needs no more */
     if (scene->solver_state.present) { /* a restart continues the damping of the run it continues */
         sim->lm_mu = scene->solver_state.mu;
         memcpy(sim->lm_history, scene->solver_state.history, sizeof sim->lm_history);

@@ -71,6 +71,8 @@ struct gb_sim {
 #define GB_IN_SYSTEM 1
 #define GB_IN_SYSTEM_NO_ROTATION 2
     double lm_history[LM_MEMORY]; /* merits before the last accepted moves */
+    double lm_best;               /* lowest merit of the load step (stall detection) */
+    long lm_since;                /* moves since one brought it below LM_STALL_FACTOR x lm_best */
     int lm_next;
     unsigned char *in_system; /* per grain: moved by the global system in this iteration (GB_IN_SYSTEM...) */
     long iterations_total;
