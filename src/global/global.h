@@ -17,6 +17,7 @@ typedef struct {
     double assemble, analyse, factorise, solve;
     long analyses, factorisations, regularised;
     long corrections; /* iterations solved twice: sliding contacts that the first solution unloads */
+    long pcg_steps;   /* conjugate-gradient steps of the corrections (CHOLMOD) */
 } gb_global_stats;
 
 gb_status gb_global_create(gb_linear_kind kind, int n_grains, int n_particles, gb_global **out, gb_error *err);
