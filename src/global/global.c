@@ -617,8 +617,9 @@ gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const gb_wall_control *wc,
     /* A sliding contact has no tangential stiffness in K (it slides on), but if the solution moves
      * it back, it sticks again with its spring kt: Newton's step, blind to that, overshoots, and the
      * contact flips between sliding and sticking from one iteration to the next. Such contacts get
-     * kt and the system is solved once more (an active-set correction; with CHOLMOD by conjugate
- * gradients on the first factor, see pcg_previous_factor). */
+     * kt and the system is solved once more (an active-set correction; with CHOLMOD, if they are few,
+ * by conjugate gradients on the first factor, see pcg_previous_factor: CG needs about one step
+ * per contact changed, and at 1e5 grains a correction changes dozens). */
     int unloaded = 0;
     for (int k = 0; k < sim->pairs.n; k++) {
         const gb_pair *p = &sim->pairs.p[k];
@@ -633,7 +634,7 @@ gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const gb_wall_control *wc,
     }
     if (unloaded) {
         t0 = now();
-        if ((st = tangents(gl, sim, err)) || (st = solve_system(gl, sim, wc, mu, 0, 1, t0, err))) return st;
+        if ((st = tangents(gl, sim, err)) || (st = solve_system(gl, sim, wc, mu, 0, unloaded <= PCG_MAX / 2, t0, err))) return st;
         gl->stats.corrections++;
     }
     /* The moves: the solution, scaled down as a whole if a grain or particle would move more than
