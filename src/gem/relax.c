@@ -260,10 +260,11 @@ static double merit(const gb_sim *sim, const unsigned char *in_system, double wa
 }
 
 /* Which grains the global system moves (sim->in_system): those with two contacts or more, and
- * (GB_IN_SYSTEM_NO_ROTATION) a grain without body force whose single contact has a tangential
- * spring. Such a grain's only zero mode is rolling over its neighbour, which its contact force
+ * (GB_IN_SYSTEM_NO_ROTATION) a grain without body force with a single contact. Its only zero mode
+ * is rolling over its neighbour (with kt) or sliding along it (without), which its contact force
  * cannot drive, so the system holds its rotation and moves it with its neighbours (its contact
- * with kt in K even if it slides: the grain must unload it), where moved apart by the reference
+ * with kt in K even if it slides: the grain must unload it; a frictionless one with a tangent
+ * stiffness of its own, see tangents() in src/global/global.c), where moved apart by the reference
  * case c) it would trade its force back and forth with the system every iteration (a two-cycle
  * that decays by a few per cent per iteration). With a body force it rolls: case c). */
 static void mark_system(gb_sim *sim)
@@ -272,7 +273,6 @@ static void mark_system(gb_sim *sim)
     for (int k = 0; k < sim->pairs.n; k++) {
         const gb_pair *p = &sim->pairs.p[k];
         if (!(p->d > 0)) continue;
-        if (!(gb_sim_material(sim, p->j)->kt > 0)) continue;
         int ends[2] = {p->i, p->j >= 0 ? p->j : -1};
         for (int e = 0; e < 2; e++) {
             int i = ends[e];

@@ -20,6 +20,9 @@ enum { NW = 3, W_X = 0, W_Y = 1, W_MEAN = 2 };
  * nothing) positive definite; if the factorisation still meets a zero pivot it grows tenfold. */
 static const double REGULARISE = 1e-10;
 
+/* The tangent stiffness, as a share of kn, of a frictionless single contact in the system. */
+static const double SINGLE_CONTACT_KT = 1e-2;
+
 /* The system is a graph of nodes: grains (3 DOFs: x, y, r w), boundary particles (2 DOFs) and the
  * wall DOFs (1 each), in that order. Column block v of the matrix holds, for each node u adjacent
  * to v (itself included, in increasing order), the rows of u's DOFs; every column of v has the
@@ -359,6 +362,10 @@ static gb_status tangents(gb_global *gl, const gb_sim *sim, gb_error *err)
         const gb_material *m = gb_sim_material(sim, p->j);
         double limit = p->pn * gb_sim_tan_phi(sim, p->j) + m->cohesion;
         double kn = m->kn, kt = fabs(p->pt) >= limit * (1 - 1e-9) && !gl->stick[k] ? 0 : m->kt;
+        /* The single contact of a grain in the system without a tangential spring: a tangent
+         * stiffness of its own along t keeps the grain's block regular. Its force has no
+         * tangential part, so the solution does not slide it: only K, not the forces, sees it. */
+        if (gl->stick[k] && !(kt > 0)) kt = SINGLE_CONTACT_KT * kn;
         gl->kt[k] = kt;
         double c = p->nx, s = p->ny;
         double s00 = kn * c * c + kt * s * s, s01 = (kn - kt) * c * s, s11 = kn * s * s + kt * c * c;
