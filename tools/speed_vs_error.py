@@ -368,7 +368,7 @@ def cavity_section():
         "",
         "**As placed** (the paper's scene): with no body force the grains separate until every overlap",
         "is gone, and a grain with no contact is in equilibrium wherever it stops, so its final place",
-        f"depends on the path of the iteration (at a = {hi:g} UMFPACK and CHOLMOD end up to {apart:.2f} cm apart):",
+        f"depends on the path of the iteration (at a = {hi:g} UMFPACK and CHOLMOD end up to {apart:.1e} cm apart):",
         "no run is a reference for the positions. The well-defined measure is how far",
         "the result is from a state without overlaps: the largest overlap left (with the largest fixing",
         "force, below a by construction).",
@@ -401,19 +401,18 @@ def cavity_section():
         "",
         f"What to pick: CHOLMOD with a = 1e-3 kgf ({chol[1e-3]['secs']:.3f} s, {ratio:.0f} times faster than UMFPACK),",
         f"unless grain positions must be closer than about {sym_pos:.0e} cm or the cavity forces than",
-        f"{sym_force:.0e} of the largest, where the symmetrised host stops CHOLMOD whatever a; then UMFPACK,",
+        f"{sym_force:.0e} of the largest: both evaluate the forces with the exact host, but CHOLMOD's Newton steps,",
+        "with the symmetrised host, take the frictional contacts along another path to a slightly different",
+        "equilibrium, whatever a; then UMFPACK,",
         f"whose position error is about {slope:.1e} cm per kgf of a (a = 1e-4 kgf for {slope * 1e-4:.1e} cm), every",
         f"decade of a costing {per_decade:.0f} more iterations (about {100 * per_decade / conf[1e-3]['iters']:.0f} % more time).",
         "",
     ] + textwrap.wrap(
-        f"The iterations grow by {per_decade:.0f} per decade of a: the convergence is linear, not Newton's "
-        f"quadratic one. At a = {hi:g} the largest force left is on grain {w['worst']}, which has "
-        f"{w['worst_contacts']} contact{'s' if w['worst_contacts'] != 1 else ''}: a grain with fewer than two "
-        "contacts is not moved by the Newton step (it is held in the system) but by the reference iteration's "
-        "cases, and the force left there decays only geometrically (measured, not proven: the largest force "
-        "left sits on that grain"
-        + ("; and CHOLMOD and UMFPACK, two different Newton systems, take the same iterations at every a"
-           if same_iters else "") + "). "
+        f"The iterations grow by {per_decade:.0f} per decade of a: the convergence is linear (each iteration "
+        f"divides the largest force by about {10 ** (1 / per_decade):.1f}), not Newton's quadratic one. At "
+        f"a = {hi:g} the largest force left is on grain {w['worst']}, which has {w['worst_contacts']} "
+        f"contact{'s' if w['worst_contacts'] != 1 else ''}"
+        + ("; CHOLMOD and UMFPACK take the same iterations at every a" if same_iters else "") + ". "
         f"Frictionless, the same scene takes {nofric[0]} iterations at a = {lo:g} and {nofric[1]} at {hi:g} "
         f"({(nofric[1] - nofric[0]) / decades:.1f} per decade). With so few iterations per decade the time hardly "
         "depends on a: the linear solver, not a, sets the cost here.", 100) + [
