@@ -436,23 +436,15 @@ JAM_TIMEOUT = 200  # wall seconds: a reference run slower than this (about 3 min
 
 
 def jammed_packing():
-    """The packing of tools/bench_gem.sh for 10 000 discs, cached in runs/speed_vs_error/jammed1e4/.
-    Returns (the box line, the mean of gb_jam's final wall stresses s_x, s_y [dyn/cm])."""
+    """The packing of tools/bench_gem.sh for 10 000 discs (tools/jammed_packing.sh), cached in
+    runs/speed_vs_error/jammed1e4/. Returns (the box line, the mean of gb_jam's final wall stresses
+    s_x, s_y [dyn/cm], gb_jam's summary)."""
     d = JAM_DIR
-    os.makedirs(d, exist_ok=True)
-    fire, box, log = (os.path.join(d, f) for f in ("fire.csv", "fire.box", "fire.log"))
-    if not all(os.path.exists(f) and os.path.getsize(f) for f in (fire, box, log)):
-        subprocess.run([os.path.join(BUILD, "gb_packgen"), "--n", "10000", "--diameters", "0.6,0.9,1.2",
-                        "--seed", "1", "--out", os.path.join(d, "grains.csv")], check=True,
-                       stdout=subprocess.DEVNULL)
-        m = re.search(r"^box: \{left: ([^,]*), right: ([^,]*), bottom: ([^,]*), top: ([^}]*)\}$",
-                      open(os.path.join(d, "grains.box.yaml")).read(), re.M)
-        with open(box, "w") as fb, open(log, "w") as fl:
-            subprocess.run([os.path.join(BUILD, "gb_jam"), os.path.join(d, "grains.csv"), "--box",
-                            ",".join(m.groups()), "--porosity", "0.15", "--kn", "1e8", "--tol", "10",
-                            "--out", fire], check=True, stdout=fb, stderr=fl)
-    m = re.search(r"wall stresses s_x ([-0-9.e+]+) s_y ([-0-9.e+]+)", open(log).read())
-    return open(box).read().strip(), (float(m.group(1)) + float(m.group(2))) / 2, open(log).read().strip()
+    subprocess.run([os.path.join(ROOT, "tools", "jammed_packing.sh"), BUILD, d, "10000", "1", "10"], check=True,
+                   env=dict(os.environ, KEEP="1"))
+    box, log = (open(os.path.join(d, f)).read().strip() for f in ("jammed.box", "jammed.log"))
+    m = re.search(r"wall stresses s_x ([-0-9.e+]+) s_y ([-0-9.e+]+)", log)
+    return box, (float(m.group(1)) + float(m.group(2))) / 2, log
 
 
 def jammed_scene(box, stress, method, linear, a):
@@ -462,7 +454,7 @@ def jammed_scene(box, stress, method, linear, a):
         materials:
           grain_grain: {{kn: 1.0e8, kt: 7.0e7, friction_deg: 25}}
           grain_wall:  {{kn: 1.0e8, kt: 7.0e7, friction_deg: 0}}
-        grains: {{file: {os.path.join(JAM_DIR, "fire.csv")}}}
+        grains: {{file: {os.path.join(JAM_DIR, "jammed.csv")}}}
         {box}
         solver: {{method: {method}, linear: {linear}, accuracy: {a:g}, max_iterations: 2000000}}
         loading:

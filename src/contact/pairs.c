@@ -51,18 +51,11 @@ double gb_pair_update(gb_pair *p, const gb_world *w, const double *dX, const dou
 {
     int was_contact = p->d > 0;
     /* (K 25): tangential relative displacement in the previous tangent t = (-ny, nx). */
-    const double *a = &dX[3 * p->i];
-    double bx, by, brot = 0;
-    if (p->j >= 0) {
-        const double *b = &dX[3 * p->j];
-        bx = b[0], by = b[1], brot = b[2];
-    } else if (GB_IS_PARTICLE(p->j)) {
-        const double *b = &w->bp->dx[2 * GB_PARTICLE_OF(p->j)];
-        bx = b[0], by = b[1];
-    } else {
-        bx = wall_dx[2 * (-1 - p->j)], by = wall_dx[2 * (-1 - p->j) + 1];
-    }
-    double du_t = -(a[0] - bx) * p->ny + (a[1] - by) * p->nx + a[2] + brot;
+    double b[3] = {0, 0, 0};
+    if (p->j >= 0) memcpy(b, &dX[3 * p->j], sizeof b);
+    else if (GB_IS_PARTICLE(p->j)) memcpy(b, &w->bp->dx[2 * GB_PARTICLE_OF(p->j)], 2 * sizeof(double));
+    else memcpy(b, &wall_dx[2 * (-1 - p->j)], 2 * sizeof(double));
+    double du_t = gb_pair_du_t(p, &dX[3 * p->i], b);
     gb_pair_geometry(p, w);
     double pt0 = p->pt, diss = 0;
     if (!(p->d > 0)) {

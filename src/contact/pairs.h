@@ -69,6 +69,13 @@ int gb_pairs_stale(const gb_pair_list *L, const gb_world *w);
  * its flat side) does not touch it: its overlap is set negative. */
 void gb_pair_geometry(gb_pair *p, const gb_world *w);
 
+/* (K 25): the tangential relative displacement of a pair, in its tangent t = (-ny, nx), for moves
+ * a = (dx, dy, r dw) of grain i and b of its other end (a wall or a particle: b[2] = 0). */
+static inline double gb_pair_du_t(const gb_pair *p, const double a[3], const double b[3])
+{
+    return -(a[0] - b[0]) * p->ny + (a[1] - b[1]) * p->nx + a[2] + b[2];
+}
+
 /* Contact forces after a move (K 6, 13): the normal force follows the overlap, pn = kn d (a new
  * contact starts at kn d, see METHOD.md section 3); the tangential force is incremental,
  * pt += kt du_t with du_t from (K 25) in the tangent of the previous configuration; a contact

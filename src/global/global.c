@@ -48,7 +48,8 @@ struct gb_global {
     double *S;                /* per grain: its block of K (s00 s01 s02 s11 s12 s22) */
     double *Sp;               /* per particle: its contact block (s00 s01 s11) */
     double *kt;               /* per pair: tangential stiffness used in K (0 for a sliding contact) */
-    unsigned char *stick;     /* per pair: a sliding contact that the step unloads: kt in K */
+    unsigned char *stick;     /* per pair: kt in K even if it slides (a single contact in the system, or a
+                                 sliding contact that the first solution unloads) */
     int kt_cap;
     cholmod_common cc;
     cholmod_sparse *A;
@@ -342,17 +343,20 @@ static double wall_lever(const gb_sim *sim, int w, int wall)
 /* The tangent stiffness of every contact and the diagonal blocks of grains and particles. Unlike
  * the reference iteration, which keeps kt in S (K 8), a contact at its Coulomb limit (K 13) gets no
  * tangential stiffness: it slides, and Newton's method converges when its tangent is the true one. */
-static gb_status tangents(gb_global *gl, const gb_sim *sim, gb_error *err)
+static gb_status pair_buffers(gb_global *gl, const gb_pair_list *P, gb_error *err)
 {
-    if (sim->pairs.n > gl->kt_cap) {
-        double *kt = realloc(gl->kt, (size_t)sim->pairs.cap * sizeof(double));
-        if (kt) gl->kt = kt;
-        unsigned char *stick = realloc(gl->stick, (size_t)sim->pairs.cap);
-        if (stick) gl->stick = stick;
-        if (!kt || !stick) return gb_fail(err, GB_ENOMEM, "out of memory");
-        gl->kt_cap = sim->pairs.cap;
-        memset(gl->stick, 0, (size_t)sim->pairs.cap);
-    }
+    if (P->n <= gl->kt_cap) return GB_OK;
+    double *kt = realloc(gl->kt, (size_t)P->cap * sizeof(double));
+    if (kt) gl->kt = kt;
+    unsigned char *stick = realloc(gl->stick, (size_t)P->cap);
+    if (stick) gl->stick = stick;
+    if (!kt || !stick) return gb_fail(err, GB_ENOMEM, "out of memory");
+    gl->kt_cap = P->cap;
+    return GB_OK;
+}
+
+static void tangents(gb_global *gl, const gb_sim *sim)
+{
     memset(gl->S, 0, 6 * (size_t)gl->n * sizeof(double));
     memset(gl->Sp, 0, 3 * (size_t)gl->np * sizeof(double));
     for (int k = 0; k < sim->pairs.n; k++) {
@@ -379,7 +383,6 @@ static gb_status tangents(gb_global *gl, const gb_sim *sim, gb_error *err)
             Sp[0] += s00, Sp[1] += s01, Sp[2] += s11;
         }
     }
-    return GB_OK;
 }
 
 /* K = sum over contacts of [T T']^t S_c [T T'] (K 1-8, 25) over grains, boundary particles (the
@@ -561,9 +564,10 @@ done:
 /* Holds what the system does not move, sets the right-hand side -F, assembles with the damping mu
  * and solves (analysing first on a new pattern), regularising a singular matrix. */
 static gb_status solve_system(gb_global *gl, const gb_sim *sim, const gb_wall_control *wc, double mu, int new_pattern,
-                              int reuse_factor, double t0, gb_error *err)
+                              int reuse_factor, gb_error *err)
 {
     gb_status st;
+    double t0 = now();
     int n = gl->n, np = gl->np;
     for (int i = 0; i < n; i++) {
         int out = !sim->in_system[i];
@@ -612,36 +616,37 @@ gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const gb_wall_control *wc,
         gl->pattern_of = sim->pairs.rebuilds;
     }
     int n = gl->n, np = gl->np;
-    if ((st = tangents(gl, sim, err))) return st; /* sizes gl->stick */
+    if ((st = pair_buffers(gl, &sim->pairs, err))) return st;
     /* A grain with a single contact in the system keeps that contact's kt (see mark_system). */
     for (int k = 0; k < sim->pairs.n; k++) {
         const gb_pair *p = &sim->pairs.p[k];
         gl->stick[k] = p->d > 0 && (sim->in_system[p->i] == GB_IN_SYSTEM_NO_ROTATION ||
                                     (p->j >= 0 && sim->in_system[p->j] == GB_IN_SYSTEM_NO_ROTATION));
     }
-    if ((st = tangents(gl, sim, err))) return st;
-    if ((st = solve_system(gl, sim, wc, mu, new_pattern, 0, t0, err))) return st;
+    tangents(gl, sim);
+    gl->stats.assemble += now() - t0;
+    if ((st = solve_system(gl, sim, wc, mu, new_pattern, 0, err))) return st;
     /* A sliding contact has no tangential stiffness in K (it slides on), but if the solution moves
      * it back, it sticks again with its spring kt: Newton's step, blind to that, overshoots, and the
      * contact flips between sliding and sticking from one iteration to the next. Such contacts get
-     * kt and the system is solved once more (an active-set correction; with CHOLMOD, if they are few,
- * by conjugate gradients on the first factor, see pcg_previous_factor: CG needs about one step
- * per contact changed, and at 1e5 grains a correction changes dozens). */
+     * kt and the system is solved once more (an active-set correction; with CHOLMOD, if they are
+     * few, by conjugate gradients on the first factor, see pcg_previous_factor: CG needs about one
+     * step per contact changed, and at 1e5 grains a correction changes dozens). */
     int unloaded = 0;
     for (int k = 0; k < sim->pairs.n; k++) {
         const gb_pair *p = &sim->pairs.p[k];
         if (!(p->d > 0) || gl->kt[k] > 0 || !(gb_sim_material(sim, p->j)->kt > 0) || p->pt == 0) continue;
         if (p->j < 0 && !GB_IS_PARTICLE(p->j)) continue; /* walls: moved by their own DOFs */
-        const double *a = &gl->x[3 * p->i];
         double b[3] = {0, 0, 0};
-        if (p->j >= 0) b[0] = gl->x[3 * p->j], b[1] = gl->x[3 * p->j + 1], b[2] = gl->x[3 * p->j + 2];
-        else b[0] = gl->x[gl->dof0[n + GB_PARTICLE_OF(p->j)]], b[1] = gl->x[gl->dof0[n + GB_PARTICLE_OF(p->j)] + 1];
-        double du_t = -(a[0] - b[0]) * p->ny + (a[1] - b[1]) * p->nx + a[2] + b[2]; /* (K 25) */
-        if (du_t * p->pt < 0) gl->stick[k] = 1, unloaded++;
+        if (p->j >= 0) memcpy(b, &gl->x[3 * p->j], sizeof b);
+        else memcpy(b, &gl->x[gl->dof0[n + GB_PARTICLE_OF(p->j)]], 2 * sizeof(double));
+        if (gb_pair_du_t(p, &gl->x[3 * p->i], b) * p->pt < 0) gl->stick[k] = 1, unloaded++;
     }
     if (unloaded) {
         t0 = now();
-        if ((st = tangents(gl, sim, err)) || (st = solve_system(gl, sim, wc, mu, 0, unloaded <= PCG_MAX / 2, t0, err))) return st;
+        tangents(gl, sim);
+        gl->stats.assemble += now() - t0;
+        if ((st = solve_system(gl, sim, wc, mu, 0, unloaded <= PCG_MAX / 2, err))) return st;
         gl->stats.corrections++;
     }
     /* The moves: the solution, scaled down as a whole if a grain or particle would move more than
