@@ -235,11 +235,17 @@ int main(int argc, char **argv)
         worst = forces(&J, wall, &contacts, &walls);
         if (!isfinite(worst)) return fprintf(stderr, "gb_jam: the forces became non-finite at iteration %ld\n", it), 3;
     }
-    FILE *o = fopen(out, "w");
-    if (!o) return fprintf(stderr, "gb_jam: cannot write %s\n", out), 4;
-    fprintf(o, "x,y,r\n");
-    for (int i = 0; i < n; i++) fprintf(o, "%.17g,%.17g,%.17g\n", J.x[i], J.y[i], J.r[i]);
-    if (fclose(o)) return fprintf(stderr, "gb_jam: cannot write %s\n", out), 4;
+    /* Written beside and renamed: a failed write leaves no half file under the final name. */
+    char tmp[4096];
+    if (snprintf(tmp, sizeof tmp, "%s.part", out) >= (int)sizeof tmp) return fprintf(stderr, "gb_jam: path too long\n"), 2;
+    FILE *o = fopen(tmp, "w");
+    if (!o) return fprintf(stderr, "gb_jam: cannot write %s\n", tmp), 4;
+    int bad = fprintf(o, "x,y,r\n") < 0;
+    for (int i = 0; i < n && !bad; i++) bad = fprintf(o, "%.17g,%.17g,%.17g\n", J.x[i], J.y[i], J.r[i]) < 0;
+    if (fclose(o) || bad || rename(tmp, out)) {
+        remove(tmp);
+        return fprintf(stderr, "gb_jam: cannot write %s\n", out), 4;
+    }
     double W = J.right - J.left, H = J.top - J.bottom;
     printf("box: {left: %.17g, right: %.17g, bottom: %.17g, top: %.17g}\n", J.left, J.right, J.bottom, J.top);
     fprintf(stderr, "gb_jam: %d discs, porosity %.4f, %s after %ld FIRE iterations (%ld list rebuilds): largest "
