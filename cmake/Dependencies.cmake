@@ -13,6 +13,9 @@ find_library(UMFPACK_LIBRARY umfpack REQUIRED)
 add_library(gb_suitesparse INTERFACE)
 target_include_directories(gb_suitesparse INTERFACE ${SUITESPARSE_INCLUDE_DIR})
 target_link_libraries(gb_suitesparse INTERFACE ${UMFPACK_LIBRARY} ${CHOLMOD_LIBRARY})
+# CHOLMOD runs OpenMP loops (libgomp); src/global/global.c serialises them (see cholmod_serial).
+find_package(OpenMP REQUIRED COMPONENTS C)
+target_link_libraries(gb_suitesparse INTERFACE OpenMP::OpenMP_C)
 
 # gmsh: gmshc.h and -lgmsh, no pkg-config.
 find_path(GMSH_INCLUDE_DIR gmshc.h REQUIRED)

@@ -5,6 +5,7 @@
 
 #include <cholmod.h>
 #include <math.h>
+#include <omp.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
@@ -50,6 +51,8 @@ struct gb_global {
     double *kt;               /* per pair: tangential stiffness used in K (0 for a sliding contact) */
     unsigned char *stick;     /* per pair: kt in K even if it slides (a single contact in the system, or a
                                  sliding contact that the first solution unloads) */
+    unsigned char *unloading; /* per pair: a sliding contact that a solution unloaded: kt in K until one
+                                 loads it again (reset with the pattern) */
     int kt_cap;
     cholmod_common cc;
     cholmod_sparse *A;
@@ -125,7 +128,7 @@ void gb_global_free(gb_global *gl)
     free(gl->dof0), free(gl->adj_start), free(gl->adj), free(gl->adj_off), free(gl->collen), free(gl->colstart);
     free(gl->pos_ij), free(gl->pos_ji), free(gl->wall_in_grain), free(gl->grain_in_wall), free(gl->touch);
     free(gl->Ap), free(gl->Ai), free(gl->Ax), free(gl->rhs), free(gl->x), free(gl->held);
-    free(gl->S), free(gl->Sp), free(gl->kt), free(gl->stick);
+    free(gl->S), free(gl->Sp), free(gl->kt), free(gl->stick), free(gl->unloading);
     free(gl);
 }
 
@@ -283,6 +286,20 @@ static gb_status analyse(gb_global *gl, gb_error *err)
     return GB_OK;
 }
 
+/* CHOLMOD 3 (SuiteSparse 5.12, Debian 12) runs the assembly loops of its supernodal factorisation
+ * in OpenMP regions of a compiled-in 4 threads (CHOLMOD_OMP_NUM_THREADS), whatever the cores and
+ * OMP_NUM_THREADS: on this 2-core machine its threads spent most of a factorisation in futex
+ * waits (94 factorisations of the 1e4-disc benchmark: 9.3 s, 2.8 s serialised). The dense work is
+ * BLAS, threaded by OPENBLAS_NUM_THREADS; the regions are made inactive (max-active-levels 0) for
+ * the factorisation and the caller's setting restored. */
+static void cholmod_serial_factorize(gb_global *gl)
+{
+    int levels = omp_get_max_active_levels();
+    omp_set_max_active_levels(0);
+    cholmod_factorize(gl->A, gl->L, &gl->cc);
+    omp_set_max_active_levels(levels);
+}
+
 /* Factorises and solves K x = rhs; returns 1 if K was not positive definite (CHOLMOD) or
  * singular (UMFPACK), so that the caller can regularise further. */
 static int factor_solve(gb_global *gl, gb_error *err, gb_status *st)
@@ -292,7 +309,7 @@ static int factor_solve(gb_global *gl, gb_error *err, gb_status *st)
     double t0 = now();
     if (gl->kind == GB_LINEAR_CHOLMOD) {
         memcpy(gl->A->x, gl->Ax, (size_t)gl->nnz * sizeof(double));
-        cholmod_factorize(gl->A, gl->L, &gl->cc);
+        cholmod_serial_factorize(gl);
         gl->stats.factorisations++;
         gl->stats.factorise += now() - t0;
         if (gl->cc.status == CHOLMOD_NOT_POSDEF) return 1;
@@ -350,7 +367,10 @@ static gb_status pair_buffers(gb_global *gl, const gb_pair_list *P, gb_error *er
     if (kt) gl->kt = kt;
     unsigned char *stick = realloc(gl->stick, (size_t)P->cap);
     if (stick) gl->stick = stick;
-    if (!kt || !stick) return gb_fail(err, GB_ENOMEM, "out of memory");
+    unsigned char *unloading = realloc(gl->unloading, (size_t)P->cap);
+    if (unloading) gl->unloading = unloading;
+    if (!kt || !stick || !unloading) return gb_fail(err, GB_ENOMEM, "out of memory");
+    memset(gl->unloading + gl->kt_cap, 0, (size_t)(P->cap - gl->kt_cap));
     gl->kt_cap = P->cap;
     return GB_OK;
 }
@@ -589,7 +609,10 @@ static gb_status solve_system(gb_global *gl, const gb_sim *sim, const gb_wall_co
     gl->stats.assemble += now() - t0;
     /* UMFPACK's symbolic analysis reads the values too: analyse the assembled matrix. */
     if (new_pattern && (st = analyse(gl, err))) return st;
-    if (reuse_factor && gl->kind == GB_LINEAR_CHOLMOD && gl->L && pcg_previous_factor(gl)) return GB_OK;
+    if (reuse_factor && gl->kind == GB_LINEAR_CHOLMOD && gl->L && pcg_previous_factor(gl)) {
+        gl->stats.pcg_solves++;
+        return GB_OK;
+    }
     for (;;) {
         int singular = factor_solve(gl, err, &st);
         if (st) return st;
@@ -610,6 +633,7 @@ gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const gb_wall_control *wc,
 {
     gb_status st;
     double t0 = now();
+    gl->stats.moves++;
     int new_pattern = gl->pattern_of != sim->pairs.rebuilds;
     if (new_pattern) {
         if ((st = build_pattern(gl, &sim->pairs, err))) return st;
@@ -617,10 +641,11 @@ gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const gb_wall_control *wc,
     }
     int n = gl->n, np = gl->np;
     if ((st = pair_buffers(gl, &sim->pairs, err))) return st;
+    if (new_pattern) memset(gl->unloading, 0, (size_t)sim->pairs.n);
     /* A grain with a single contact in the system keeps that contact's kt (see mark_system). */
     for (int k = 0; k < sim->pairs.n; k++) {
         const gb_pair *p = &sim->pairs.p[k];
-        gl->stick[k] = p->d > 0 && (sim->in_system[p->i] == GB_IN_SYSTEM_NO_ROTATION ||
+        gl->stick[k] = p->d > 0 && (gl->unloading[k] || sim->in_system[p->i] == GB_IN_SYSTEM_NO_ROTATION ||
                                     (p->j >= 0 && sim->in_system[p->j] == GB_IN_SYSTEM_NO_ROTATION));
     }
     tangents(gl, sim);
@@ -629,24 +654,33 @@ gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const gb_wall_control *wc,
     /* A sliding contact has no tangential stiffness in K (it slides on), but if the solution moves
      * it back, it sticks again with its spring kt: Newton's step, blind to that, overshoots, and the
      * contact flips between sliding and sticking from one iteration to the next. Such contacts get
-     * kt and the system is solved once more (an active-set correction; with CHOLMOD, if they are
-     * few, by conjugate gradients on the first factor, see pcg_previous_factor: CG needs about one
-     * step per contact changed, and at 1e5 grains a correction changes dozens). */
+     * kt (an active set): if they are few, at once, the system solved once more by conjugate
+     * gradients on the first factor (CHOLMOD, see pcg_previous_factor: CG needs about one step per
+     * contact changed); if they are many (dozens at 1e5 grains), from the next iteration on, which
+     * costs fewer factorisations than a second one now (1e5 jammed discs: 67 instead of 97 for a
+     * load step, 43 s instead of 61 s; 1e4: even). They keep kt until a solution loads them again
+     * in their sliding direction. */
     int unloaded = 0;
     for (int k = 0; k < sim->pairs.n; k++) {
         const gb_pair *p = &sim->pairs.p[k];
-        if (!(p->d > 0) || gl->kt[k] > 0 || !(gb_sim_material(sim, p->j)->kt > 0) || p->pt == 0) continue;
+        if (!(p->d > 0) || !(gb_sim_material(sim, p->j)->kt > 0) || p->pt == 0) continue;
         if (p->j < 0 && !GB_IS_PARTICLE(p->j)) continue; /* walls: moved by their own DOFs */
+        if (gl->kt[k] > 0 && !gl->unloading[k]) continue;
         double b[3] = {0, 0, 0};
         if (p->j >= 0) memcpy(b, &gl->x[3 * p->j], sizeof b);
         else memcpy(b, &gl->x[gl->dof0[n + GB_PARTICLE_OF(p->j)]], 2 * sizeof(double));
-        if (gb_pair_du_t(p, &gl->x[3 * p->i], b) * p->pt < 0) gl->stick[k] = 1, unloaded++;
+        double load = gb_pair_du_t(p, &gl->x[3 * p->i], b) * p->pt;
+        if (gl->unloading[k]) {
+            if (load > 0) gl->unloading[k] = 0;
+            continue;
+        }
+        if (load < 0) gl->stick[k] = 1, gl->unloading[k] = 1, unloaded++;
     }
-    if (unloaded) {
+    if (unloaded && unloaded <= PCG_MAX / 2) {
         t0 = now();
         tangents(gl, sim);
         gl->stats.assemble += now() - t0;
-        if ((st = solve_system(gl, sim, wc, mu, 0, unloaded <= PCG_MAX / 2, err))) return st;
+        if ((st = solve_system(gl, sim, wc, mu, 0, 1, err))) return st;
         gl->stats.corrections++;
     }
     /* The moves: the solution, scaled down as a whole if a grain or particle would move more than

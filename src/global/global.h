@@ -17,7 +17,9 @@ typedef struct {
     double assemble, analyse, factorise, solve;
     long analyses, factorisations, regularised;
     long corrections; /* iterations solved twice: sliding contacts that the first solution unloads */
-    long pcg_steps;   /* conjugate-gradient steps of the corrections (CHOLMOD) */
+    long moves;       /* calls of gb_global_moves: iterations plus moves retried with more damping */
+    long pcg_solves;  /* systems solved by conjugate gradients on an earlier factor (CHOLMOD) */
+    long pcg_steps;   /* their conjugate-gradient steps */
 } gb_global_stats;
 
 gb_status gb_global_create(gb_linear_kind kind, int n_grains, int n_particles, gb_global **out, gb_error *err);

@@ -68,8 +68,9 @@ int main(int argc, char **argv)
     if (sim->global) {
         const gb_global_stats *g = gb_global_statistics(sim->global);
         fprintf(stderr, "  %s %d: whole run: assembly %.2f s, %ld analyses %.2f s, %ld factorisations %.2f s, solves %.2f s, "
-                "%ld corrections (%ld CG steps), %ld regularised\n", method, sim->n, g->assemble, g->analyses, g->analyse, g->factorisations,
-                g->factorise, g->solve, g->corrections, g->pcg_steps, g->regularised);
+                "%ld moves, %ld corrections, %ld systems by CG (%ld steps), %ld regularised\n", method, sim->n, g->assemble, g->analyses,
+                g->analyse, g->factorisations, g->factorise, g->solve, g->moves, g->corrections, g->pcg_solves, g->pcg_steps,
+                g->regularised);
     }
     gb_sim_free(sim);
     gb_scene_free(&sc);
