@@ -641,7 +641,7 @@ gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const gb_wall_control *wc,
     }
     int n = gl->n, np = gl->np;
     if ((st = pair_buffers(gl, &sim->pairs, err))) return st;
-    if (new_pattern) memset(gl->unloading, 0, (size_t)sim->pairs.n);
+    if (new_pattern && sim->pairs.n) memset(gl->unloading, 0, (size_t)sim->pairs.n);
     /* A grain with a single contact in the system keeps that contact's kt (see mark_system). */
     for (int k = 0; k < sim->pairs.n; k++) {
         const gb_pair *p = &sim->pairs.p[k];
