@@ -17,13 +17,13 @@ export OPENBLAS_NUM_THREADS=${OPENBLAS_NUM_THREADS:-1} OMP_NUM_THREADS=${OMP_NUM
 mkdir -p "$out"
 echo "machine: $(nproc --all) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); $(date -u +%Y-%m-%d)"
 echo "threads: OPENBLAS_NUM_THREADS=$OPENBLAS_NUM_THREADS, OMP_NUM_THREADS=$OMP_NUM_THREADS; load average $(cut -d' ' -f1-3 /proc/loadavg)"
-printf "| solver | N | contacts | preparation iterations (s) | stress s_r [dyn/cm] | iterations per load step | s per iteration | ns per contact-iteration | load steps s |\n"
-printf "|---|---|---|---|---|---|---|---|---|\n"
+printf "| solver | N | contacts | preparation iterations (s) | stress s_r [dyn/cm] | accuracy a [dyn] | iterations per load step | s per iteration | ns per contact-iteration | load steps s | peak memory [MB] |\n"
+printf "|---|---|---|---|---|---|---|---|---|---|---|\n"
 for n in $sizes; do
   d=$out/n$n
   KEEP=1 "$root/tools/jammed_packing.sh" "$build" "$d" "$n" 1 10
   echo "n = $n: $(cat "$d/jammed.log")" >&2
   for s in ${SOLVERS:-reference cholmod umfpack}; do
-    "$build/bench_jammed" "$d/scene.yaml" "$steps" "$s" 100
+    "$build/bench_jammed" "$d/scene.yaml" "$steps" "$s" 100 "${ACCURACY:-target}"
   done
 done

@@ -2,6 +2,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "core/clock.h"
 #include "gem/sim.h"
 
 /* A 3x3 contact stiffness counts as singular below this fraction of the product of its diagonal
@@ -218,10 +219,12 @@ gb_status gb_gem_apply_moves(gb_sim *sim, gb_error *err)
     if (!(b->right > b->left) || !(b->top > b->bottom))
         return gb_fail(err, GB_ENUMERIC, "the box turned inside out (width %g, height %g): the load step is too "
                        "large for these springs", b->right - b->left, b->top - b->bottom);
+    double t0 = gb_clock_seconds();
     if (gb_pairs_stale(&sim->pairs, &sim->world)) {
         gb_status st = gb_pairs_rebuild(&sim->pairs, &sim->world, err);
         if (st) return st;
     }
+    sim->detect_seconds += gb_clock_seconds() - t0;
     gb_pair *P = sim->pairs.p;
     double diss = 0, wall_after[GB_N_WALLS] = {0, 0, 0, 0};
     for (int k = 0; k < sim->pairs.n; k++) {

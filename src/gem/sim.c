@@ -1,21 +1,14 @@
 /* A granular simulation: set-up from a scene, the loading program, and read access to its state. */
-#define _POSIX_C_SOURCE 199309L
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
+#include "core/clock.h"
 #include "gem/sim.h"
 
 static const double PI = 3.14159265358979323846;
 
-static double now_seconds(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
 
 void gb_sim_free(gb_sim *sim)
 {
@@ -399,7 +392,7 @@ gb_status gb_sim_run(gb_sim *sim, gb_step_fn on_step, void *user, gb_error *err)
         gb_gem_forces(sim);
         gb_gem_stress(sim, &start[0], &start[1]);
         for (int k = 1; k <= sg->steps && !st; k++) {
-            double t0 = now_seconds(), max_force = 0, residual = 0;
+            double t0 = gb_clock_seconds(), max_force = 0, residual = 0;
             long iters = 0;
             step++;
             st = load_step(sim, sg, k, start, &iters, &max_force, &residual, err);
@@ -426,7 +419,7 @@ gb_status gb_sim_run(gb_sim *sim, gb_step_fn on_step, void *user, gb_error *err)
             rep.iterations = iters;
             fill_report(sim, &rep);
             add_step_work(sim);
-            rep.seconds = now_seconds() - t0;
+            rep.seconds = gb_clock_seconds() - t0;
             /* The output sees the step's start in the saved state; then it becomes the start of the next. */
             if (on_step) st = on_step(user, sim, &rep, err);
             if (!st) save_state(sim, err, &st);

@@ -76,6 +76,7 @@ struct gb_sim {
     int lm_next;
     unsigned char *in_system; /* per grain: moved by the global system in this iteration (GB_IN_SYSTEM...) */
     long iterations_total;
+    double detect_seconds;    /* spent on contact detection: the pair list's staleness and rebuilds */
     /* Energy accounts since the start of the run (absolute, force x length). */
     double work_walls;        /* done by the walls: quasi-static, from converged steps' forces */
     double work_walls_iter;   /* done by the walls as the iterations move them */

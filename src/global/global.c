@@ -1,6 +1,5 @@
 /* Assembly of the contact stiffness of grains, walls and boundary particles (with the host's
  * condensed stiffness), and its sparse solution. */
-#define _POSIX_C_SOURCE 199309L
 #include "global/global.h"
 
 #include <cholmod.h>
@@ -8,9 +7,9 @@
 #include <omp.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 #include <umfpack.h>
 
+#include "core/clock.h"
 #include "gem/sim.h"
 
 /* Wall DOFs: x axis (left and right walls inward), y axis (bottom and top inward), and the
@@ -62,12 +61,6 @@ struct gb_global {
     gb_global_stats stats;
 };
 
-static double now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
 
 static int node_dofs(const gb_global *gl, int v) { return v < gl->n ? 3 : v < gl->n + gl->np ? 2 : 1; }
 
@@ -266,7 +259,7 @@ static inline void add(gb_global *gl, int col, int b, int q, int a, double v)
 }
 static gb_status analyse(gb_global *gl, gb_error *err)
 {
-    double t0 = now();
+    double t0 = gb_clock_seconds();
     free_factors(gl);
     int n3 = gl->ndof;
     if (gl->kind == GB_LINEAR_CHOLMOD) {
@@ -282,7 +275,7 @@ static gb_status analyse(gb_global *gl, gb_error *err)
         if (st != UMFPACK_OK) return gb_fail(err, GB_ENUMERIC, "UMFPACK symbolic analysis failed (status %d)", st);
     }
     gl->stats.analyses++;
-    gl->stats.analyse += now() - t0;
+    gl->stats.analyse += gb_clock_seconds() - t0;
     return GB_OK;
 }
 
@@ -306,18 +299,18 @@ static int factor_solve(gb_global *gl, gb_error *err, gb_status *st)
 {
     int n3 = gl->ndof;
     *st = GB_OK;
-    double t0 = now();
+    double t0 = gb_clock_seconds();
     if (gl->kind == GB_LINEAR_CHOLMOD) {
         memcpy(gl->A->x, gl->Ax, (size_t)gl->nnz * sizeof(double));
         cholmod_serial_factorize(gl);
         gl->stats.factorisations++;
-        gl->stats.factorise += now() - t0;
+        gl->stats.factorise += gb_clock_seconds() - t0;
         if (gl->cc.status == CHOLMOD_NOT_POSDEF) return 1;
         if (gl->cc.status != CHOLMOD_OK) {
             *st = gb_fail(err, GB_ENUMERIC, "CHOLMOD factorisation failed (status %d)", gl->cc.status);
             return 0;
         }
-        t0 = now();
+        t0 = gb_clock_seconds();
         cholmod_dense B = {(size_t)n3, 1, (size_t)n3, (size_t)n3, gl->rhs, NULL, CHOLMOD_REAL, CHOLMOD_DOUBLE};
         cholmod_dense *X = cholmod_solve(CHOLMOD_A, gl->L, &B, &gl->cc);
         if (!X) {
@@ -330,20 +323,20 @@ static int factor_solve(gb_global *gl, gb_error *err, gb_status *st)
         if (gl->numeric) umfpack_di_free_numeric(&gl->numeric);
         int s = umfpack_di_numeric(gl->Ap, gl->Ai, gl->Ax, gl->symbolic, &gl->numeric, gl->control, gl->info);
         gl->stats.factorisations++;
-        gl->stats.factorise += now() - t0;
+        gl->stats.factorise += gb_clock_seconds() - t0;
         if (s == UMFPACK_WARNING_singular_matrix) return 1;
         if (s != UMFPACK_OK) {
             *st = gb_fail(err, GB_ENUMERIC, "UMFPACK factorisation failed (status %d)", s);
             return 0;
         }
-        t0 = now();
+        t0 = gb_clock_seconds();
         s = umfpack_di_solve(UMFPACK_A, gl->Ap, gl->Ai, gl->Ax, gl->x, gl->rhs, gl->numeric, gl->control, gl->info);
         if (s != UMFPACK_OK) {
             *st = gb_fail(err, GB_ENUMERIC, "UMFPACK solve failed (status %d)", s);
             return 0;
         }
     }
-    gl->stats.solve += now() - t0;
+    gl->stats.solve += gb_clock_seconds() - t0;
     return 0;
 }
 
@@ -548,7 +541,7 @@ static int pcg_previous_factor(gb_global *gl)
     double *r = malloc(n3 * sizeof(double)), *z = malloc(n3 * sizeof(double)), *p = malloc(n3 * sizeof(double)),
            *Ap = malloc(n3 * sizeof(double));
     int ok = 0;
-    double t0 = now();
+    double t0 = gb_clock_seconds();
     if (!r || !z || !p || !Ap || !factor_apply(gl, gl->rhs, gl->x)) goto done;
     double bb = 0, rz = 0;
     matvec(gl, gl->x, Ap);
@@ -577,7 +570,7 @@ static int pcg_previous_factor(gb_global *gl)
     }
 done:
     free(r), free(z), free(p), free(Ap);
-    gl->stats.solve += now() - t0;
+    gl->stats.solve += gb_clock_seconds() - t0;
     return ok;
 }
 
@@ -587,7 +580,7 @@ static gb_status solve_system(gb_global *gl, const gb_sim *sim, const gb_wall_co
                               int reuse_factor, gb_error *err)
 {
     gb_status st;
-    double t0 = now();
+    double t0 = gb_clock_seconds();
     int n = gl->n, np = gl->np;
     for (int i = 0; i < n; i++) {
         int out = !sim->in_system[i];
@@ -606,7 +599,7 @@ static gb_status solve_system(gb_global *gl, const gb_sim *sim, const gb_wall_co
     wall_residuals(gl, sim, wc);
     double shift = fmax(mu, REGULARISE), cap = fmax(1e3 * shift, 1e-3);
     assemble(gl, sim, shift);
-    gl->stats.assemble += now() - t0;
+    gl->stats.assemble += gb_clock_seconds() - t0;
     /* UMFPACK's symbolic analysis reads the values too: analyse the assembled matrix. */
     if (new_pattern && (st = analyse(gl, err))) return st;
     if (reuse_factor && gl->kind == GB_LINEAR_CHOLMOD && gl->L && pcg_previous_factor(gl)) {
@@ -622,9 +615,9 @@ static gb_status solve_system(gb_global *gl, const gb_sim *sim, const gb_wall_co
                                              "of %g", shift);
         shift *= 10;
         gl->stats.regularised++;
-        t0 = now();
+        t0 = gb_clock_seconds();
         assemble(gl, sim, shift);
-        gl->stats.assemble += now() - t0;
+        gl->stats.assemble += gb_clock_seconds() - t0;
     }
     return GB_OK;
 }
@@ -632,7 +625,7 @@ static gb_status solve_system(gb_global *gl, const gb_sim *sim, const gb_wall_co
 gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const gb_wall_control *wc, double mu, gb_error *err)
 {
     gb_status st;
-    double t0 = now();
+    double t0 = gb_clock_seconds();
     gl->stats.moves++;
     int new_pattern = gl->pattern_of != sim->pairs.rebuilds;
     if (new_pattern) {
@@ -649,7 +642,7 @@ gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const gb_wall_control *wc,
                                     (p->j >= 0 && sim->in_system[p->j] == GB_IN_SYSTEM_NO_ROTATION));
     }
     tangents(gl, sim);
-    gl->stats.assemble += now() - t0;
+    gl->stats.assemble += gb_clock_seconds() - t0;
     if ((st = solve_system(gl, sim, wc, mu, new_pattern, 0, err))) return st;
     /* A sliding contact has no tangential stiffness in K (it slides on), but if the solution moves
      * it back, it sticks again with its spring kt: Newton's step, blind to that, overshoots, and the
@@ -677,9 +670,9 @@ gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const gb_wall_control *wc,
         if (load < 0) gl->stick[k] = 1, gl->unloading[k] = 1, unloaded++;
     }
     if (unloaded && unloaded <= PCG_MAX / 2) {
-        t0 = now();
+        t0 = gb_clock_seconds();
         tangents(gl, sim);
-        gl->stats.assemble += now() - t0;
+        gl->stats.assemble += gb_clock_seconds() - t0;
         if ((st = solve_system(gl, sim, wc, mu, 0, 1, err))) return st;
         gl->stats.corrections++;
     }
