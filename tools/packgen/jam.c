@@ -8,7 +8,11 @@
  * inertial descent of the contact energy sum kn d^2 / 2, reaches it in a number of iterations that
  * grows like the packing's side, where a Jacobi-like iteration (the reference GEM) needs its square.
  *
- *   gb_jam IN.csv --box L,R,B,T --porosity P --kn K --tol F --out OUT.csv [--max-iter N]
+ *   gb_jam IN.csv --box L,R,B,T --porosity P --kn K --tol F --out OUT.csv [--max-iter N] [--wall-kn KW]
+ *
+ * --wall-kn: the walls' stiffness (default kn). With 2 kn the packing can be mirrored across its
+ * walls (tools/mirrored_packing.sh): a disc pressing a wall by d then presses its mirror image by
+ * 2 d with the same force 2 kn d, so the copies together are in equilibrium as well.
  *
  * IN.csv: x,y,r (gb_packgen's file). Prints the new box as a scene line and a summary on stderr.
  * Exit status: 0 converged, 3 not converged (OUT.csv written all the same, as the last state),
@@ -23,7 +27,7 @@
 typedef struct {
     int n;
     double *x, *y, *r, *vx, *vy, *fx, *fy, *m;
-    double left, right, bottom, top, kn;
+    double left, right, bottom, top, kn, kn_wall;
     /* Verlet list on a cell grid: pairs closer than their radii plus the skin */
     double skin, *x0, *y0;
     int *pi, *pj, npairs, cap;
@@ -97,10 +101,11 @@ static double forces(jam *J, double wall[4], int *contacts, int *walls)
     }
     for (int i = 0; i < n; i++) {
         double d;
-        if ((d = J->left + J->r[i] - J->x[i]) > 0) J->fx[i] += J->kn * d, wall[0] += J->kn * d, (*walls)++;
-        if ((d = J->x[i] + J->r[i] - J->right) > 0) J->fx[i] -= J->kn * d, wall[1] += J->kn * d, (*walls)++;
-        if ((d = J->bottom + J->r[i] - J->y[i]) > 0) J->fy[i] += J->kn * d, wall[2] += J->kn * d, (*walls)++;
-        if ((d = J->y[i] + J->r[i] - J->top) > 0) J->fy[i] -= J->kn * d, wall[3] += J->kn * d, (*walls)++;
+        double kw = J->kn_wall;
+        if ((d = J->left + J->r[i] - J->x[i]) > 0) J->fx[i] += kw * d, wall[0] += kw * d, (*walls)++;
+        if ((d = J->x[i] + J->r[i] - J->right) > 0) J->fx[i] -= kw * d, wall[1] += kw * d, (*walls)++;
+        if ((d = J->bottom + J->r[i] - J->y[i]) > 0) J->fy[i] += kw * d, wall[2] += kw * d, (*walls)++;
+        if ((d = J->y[i] + J->r[i] - J->top) > 0) J->fy[i] -= kw * d, wall[3] += kw * d, (*walls)++;
     }
     double worst = 0;
     for (int i = 0; i < n; i++) worst = fmax(worst, hypot(J->fx[i], J->fy[i]));
@@ -115,7 +120,7 @@ static int parse4(const char *s, double v[4])
 int main(int argc, char **argv)
 {
     const char *in = NULL, *out = NULL;
-    double box[4] = {0}, porosity = -1, kn = -1, tol = -1;
+    double box[4] = {0}, porosity = -1, kn = -1, tol = -1, kn_wall = 0;
     long max_iter = 10000000;
     int have_box = 0;
     for (int a = 1; a < argc; a++) {
@@ -126,14 +131,16 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[a], "--tol") && v) tol = atof(v), a++;
         else if (!strcmp(argv[a], "--out") && v) out = v, a++;
         else if (!strcmp(argv[a], "--max-iter") && v) max_iter = atol(v), a++;
+        else if (!strcmp(argv[a], "--wall-kn") && v) kn_wall = atof(v), a++;
         else if (argv[a][0] != '-' && !in) in = argv[a];
         else {
             fprintf(stderr, "gb_jam: unexpected argument '%s'\nusage: gb_jam IN.csv --box L,R,B,T --porosity P --kn K "
-                            "--tol F --out OUT.csv [--max-iter N]\n", argv[a]);
+                            "--tol F --out OUT.csv [--max-iter N] [--wall-kn K]\n", argv[a]);
             return 2;
         }
     }
     if (!in || !out || !have_box || !(porosity > 0 && porosity < 1) || !(kn > 0) || !(tol > 0) || max_iter < 1 ||
+        kn_wall < 0 ||
         !(box[1] > box[0]) || !(box[3] > box[2])) {
         fprintf(stderr, "gb_jam: expected IN.csv, --box L,R,B,T (R > L, T > B), --porosity in (0, 1), --kn > 0, "
                         "--tol > 0 and --out\n");
@@ -181,6 +188,7 @@ int main(int argc, char **argv)
     for (int i = 0; i < n; i++) J.x[i] = cx + s * (J.x[i] - cx), J.y[i] = cy + s * (J.y[i] - cy);
 
     J.kn = kn;
+    J.kn_wall = kn_wall > 0 ? kn_wall : kn;
     J.vx = calloc((size_t)n, sizeof(double)), J.vy = calloc((size_t)n, sizeof(double));
     J.fx = xmalloc((size_t)n * sizeof(double)), J.fy = xmalloc((size_t)n * sizeof(double));
     J.m = xmalloc((size_t)n * sizeof(double));

@@ -1,0 +1,64 @@
+/* Benchmark of the equilibrium of a random packing under its own weight (not a test; the scaling
+ * table of the README, tools/bench_scaling.sh).
+ *   bench_settle SCENE.yaml reference|cholmod|umfpack [CAP (1000000)] [ACCURACY]
+ * ACCURACY: a in force units, or "target" for 1e-6 kn r_mean (default: the scene's).
+ * The scene holds a deposit (gb_packgen: every disc resting on others, no force yet) and a body
+ * force; the walls stay fixed and the chosen solver brings the grains to equilibrium. Prints one
+ * Markdown row: solver, grains, contacts at the end, iterations, seconds, seconds per iteration,
+ * peak resident memory, and the time split: contact detection, assembly, analysis, factorisation,
+ * solves, the rest (forces, contact update, moves). Exit status 3 if not converged. */
+#define _POSIX_C_SOURCE 199309L
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/resource.h>
+#include "bench_clock.h"
+
+#include "gem/sim.h"
+
+int main(int argc, char **argv)
+{
+    if (argc < 3) return fprintf(stderr, "usage: %s SCENE.yaml reference|cholmod|umfpack [CAP] [ACCURACY]\n", argv[0]), 2;
+    const char *method = argv[2];
+    long cap = argc > 3 ? atol(argv[3]) : 1000000;
+    gb_error err = {0};
+    gb_scene sc;
+    gb_sim *sim;
+    if (gb_scene_load(argv[1], &sc, &err)) return fprintf(stderr, "%s\n", err.msg), 1;
+    if (argc > 4 && !strcmp(argv[4], "target")) {
+        double r = 0;
+        for (int i = 0; i < sc.n_grains; i++) r += sc.grains[i].r;
+        sc.solver.accuracy = 1e-6 * sc.grain_grain.kn * r / (sc.n_grains ? sc.n_grains : 1);
+    } else if (argc > 4) {
+        sc.solver.accuracy = atof(argv[4]);
+    }
+    sc.solver.method = strcmp(method, "reference") ? GB_METHOD_GLOBAL : GB_METHOD_REFERENCE;
+    sc.solver.linear = strcmp(method, "umfpack") ? GB_LINEAR_CHOLMOD : GB_LINEAR_UMFPACK;
+    double t0 = bench_now();
+    if (gb_sim_create(&sc, &sim, &err)) return fprintf(stderr, "%s\n", err.msg), 1;
+    double t_create = bench_now() - t0;
+    gb_wall_control wc = {GB_WALLS_FIXED, 0, 0, 0};
+    long it = 0;
+    double mf, wr;
+    t0 = bench_now();
+    gb_status st = gb_gem_relax(sim, &wc, cap, &it, &mf, &wr, &err);
+    double t = bench_now() - t0;
+    struct rusage ru;
+    getrusage(RUSAGE_SELF, &ru);
+    int contacts = gb_sim_contacts(sim, NULL, 0);
+    printf("| %s | %d | %d | %.3g | %s%ld | %.1f | %.3e | %.0f |", method, sim->n, contacts, sc.solver.accuracy,
+           st ? "not converged: " : "", it, t, t / (it ? it : 1), ru.ru_maxrss / 1024.0);
+    double detect = sim->detect_seconds;
+    if (sim->global) {
+        const gb_global_stats *g = gb_global_statistics(sim->global);
+        printf(" %.2f | %.2f | %.2f | %.2f (%ld) | %.2f | %.2f |\n", detect, g->assemble, g->analyse, g->factorise,
+               g->factorisations, g->solve, t - detect - g->assemble - g->analyse - g->factorise - g->solve);
+    } else {
+        printf(" %.2f | | | | | %.2f |\n", detect, t - detect);
+    }
+    fprintf(stderr, "  %s %d: set-up (pair list) %.2f s, largest fixing force %.3g, status %d\n", method, sim->n, t_create,
+            mf, (int)st);
+    gb_sim_free(sim);
+    gb_scene_free(&sc);
+    return st ? 3 : 0;
+}
