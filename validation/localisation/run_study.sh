@@ -26,8 +26,12 @@ start=$(date +%s)
 if [ "${1:-}" = "--one" ]; then # one granular case: --one NAME [...] (the rest of study.py's line)
     dir=$OUT/$2
     mkdir -p "$dir"
-    # shellcheck disable=SC2046
-    $PY $HERE/pack_cavity.py $($PY $HERE/study.py pack "$2") > "$dir/grains.csv" 2>/dev/null || exit 1
+    args=$($PY $HERE/study.py pack "$2")
+    if [ ! -s "$dir/grains.csv" ] || [ "$(cat "$dir/grains.args" 2>/dev/null)" != "$args" ]; then # (seeded: the same args, the same grains)
+        # shellcheck disable=SC2086
+        $PY $HERE/pack_cavity.py $args > "$dir/grains.csv" 2>/dev/null || exit 1
+        echo "$args" > "$dir/grains.args"
+    fi
     if $PY $HERE/study.py extended | grep "^$2 " > /dev/null; then # an extended case: continued past its stalls
         $PY $HERE/run_continued.py "$2" "$dir" "$ROOT/meshes/square_cavity_sides.geo" "$ROOT/$GEMBEM"
         exit 0
