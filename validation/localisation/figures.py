@@ -12,6 +12,7 @@
   sweep.md              the table of the README (peak index, load at localisation, concentration)
 
 Usage: validation/localisation/figures.py [RUNS_DIR]   (from anywhere; PNGs next to this file)
+       validation/localisation/figures.py --episodes NAME ...   the band episodes of extended cases
 """
 import csv
 import math
@@ -31,7 +32,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 import study  # noqa: E402
 
-RUNS = sys.argv[1] if len(sys.argv) > 1 else os.path.join(HERE, "..", "..", "runs", "localisation")
+RUNS = (sys.argv[1] if len(sys.argv) > 1 and not sys.argv[1].startswith("--")
+        else os.path.join(HERE, "..", "..", "runs", "localisation"))
 THRESHOLD = 0.5  # the localisation index of one step that marks "localised" in the table
 WTHRESHOLD = 0.4  # the same for the windowed index
 
@@ -517,7 +519,7 @@ class ExtCase:
 STRIP = 0.5  # cm: the width of the straight strip of the band measure
 
 
-def strip_share(tri, gamma, ok, area, width=STRIP, step=0.05):
+def strip_share(tri, gamma, ok, area, width=STRIP, step=0.05, offset=False):
     """The band measure: the largest share of sum(gamma area) in a straight strip `width` cm wide
     across the zone (any direction, 5 degree steps; triangles by their centroids), with the
     strip's share of the area and the direction of the strip's axis (degrees from +x). A uniform
@@ -528,9 +530,9 @@ def strip_share(tri, gamma, ok, area, width=STRIP, step=0.05):
     wg, wa = np.where(ok, gamma * area, 0), np.where(ok, area, 0)
     tot, tota = wg.sum(), wa.sum()
     if tot <= 0:
-        return 0.0, 0.0, 0.0
+        return (0.0, 0.0, 0.0, 0.0) if offset else (0.0, 0.0, 0.0)
     m = int(round(width / step))
-    best = (0.0, 0.0, 0.0)
+    best = (0.0, 0.0, 0.0, 0.0)
     for ang in range(0, 180, 5):
         th = math.radians(ang)
         pr = -cx * math.sin(th) + cy * math.cos(th)  # distance across a strip along direction ang
@@ -541,8 +543,8 @@ def strip_share(tri, gamma, ok, area, width=STRIP, step=0.05):
         ca = np.convolve(ha, np.ones(m), "valid")
         j = int(np.argmax(cg))
         if cg[j] / tot > best[0]:
-            best = (cg[j] / tot, ca[j] / tota, float(ang))
-    return best
+            best = (cg[j] / tot, ca[j] / tota, float(ang), edges[j] + width / 2)
+    return best if offset else best[:3]
 
 
 def grain_strain(case, k0, k1):
@@ -792,7 +794,49 @@ def sweep_nonaffine(cases):
             "grains non-affine share (rms, um) |\n|---|---|---|---|---|---|---|\n" + "\n".join(out) + "\n")
 
 
+EPISODE = 0.45  # band measure of a window that counts as a band
+
+
+def band_episodes(c):
+    """The spans of travel over which the band measure of the 0.1 cm windows stays >= EPISODE:
+    (travel at the end of the first and of the last such window, its peak, the strip direction)."""
+    ks, tr, wi, ov, ss, sa = ext_windows(c)
+    out, j = [], 0
+    while j < len(ss):
+        if ss[j] >= EPISODE:
+            e = j
+            while e + 1 < len(ss) and ss[e + 1] >= EPISODE:
+                e += 1
+            p = j + int(np.argmax(ss[j:e + 1]))
+            offs = []  # where the strip lies: its axis' signed distance from the cavity's centre at rest
+            for q in range(j, e + 1):
+                k = int(ks[q])
+                tri, g, ok, area, _ = accumulated_strain(c, c.start_of_window(k, EXT_WINDOW), k)
+                offs.append(strip_share(tri, g, ok, area, offset=True)[3])
+            out.append((tr[j], tr[e], ss[p], sa[p], sa[j:e + 1], offs))
+            j = e + 1
+        else:
+            j += 1
+    return out
+
+
+def print_episodes(names):
+    """figures.py --episodes NAME ...: the band episodes of extended cases (no figure drawn)."""
+    for n, cfg in study.extended():
+        if n not in names:
+            continue
+        c = ExtCase(n, cfg)
+        for t0, t1, peak, ang, angs, offs in band_episodes(c):
+            print(f"{n}: band measure >= {EPISODE} from the window ending at {t0:.2f} cm to the one ending at "
+                  f"{t1:.2f} cm (windows {EXT_WINDOW:g} cm wide, ends every {EXT_EVERY:g} cm); peak {peak:.2f} "
+                  f"along {ang:.0f} deg; directions {sorted(set(int(a) for a in angs))}; strip axis "
+                  f"{min(offs):.2f} to {max(offs):.2f} cm from the centre")
+
+
 def main():
+    if len(sys.argv) > 1 and sys.argv[1] == "--episodes":
+        print_episodes(sys.argv[2:])
+        return
     cases = [Case(*c) for c in study.cases()]
     fig_strain_maps(cases)
     fig_strain_maps_sweep(cases)
