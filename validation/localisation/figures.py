@@ -12,6 +12,7 @@
   sweep.md              the table of the README (peak index, load at localisation, concentration)
 
 Usage: validation/localisation/figures.py [RUNS_DIR]   (from anywhere; PNGs next to this file)
+       validation/localisation/figures.py --episodes NAME ...   the band episodes of extended cases
 """
 import csv
 import math
@@ -31,7 +32,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 import study  # noqa: E402
 
-RUNS = sys.argv[1] if len(sys.argv) > 1 else os.path.join(HERE, "..", "..", "runs", "localisation")
+RUNS = (sys.argv[1] if len(sys.argv) > 1 and not sys.argv[1].startswith("--")
+        else os.path.join(HERE, "..", "..", "runs", "localisation"))
 THRESHOLD = 0.5  # the localisation index of one step that marks "localised" in the table
 WTHRESHOLD = 0.4  # the same for the windowed index
 
@@ -92,8 +94,16 @@ class Case:
         return s[m], self.top_uy[s[m]], self.loc["localisation_index"][m]
 
 
+def field_path(case, kind, step):
+    """fields/KIND_STEP.csv of a case's run (an extended case: of the segment holding the step)."""
+    if hasattr(case, "segment_of"):
+        run, local = case.segment_of(step)
+        return os.path.join(run, "fields", f"{kind}_{local:06d}.csv")
+    return os.path.join(case.run, "fields", f"{kind}_{step:06d}.csv")
+
+
 def grains_at(case, step):
-    return read_csv(os.path.join(case.run, "fields", f"grains_{step:06d}.csv"))
+    return read_csv(field_path(case, "grains", step))
 
 
 def accumulated_strain(case, k0, k1):
@@ -144,8 +154,7 @@ def index_of(gamma, area):
 
 
 def host_ring(case, step):
-    p = os.path.join(case.run, "fields", f"host_ring_{step:06d}.csv")
-    h = read_csv(p)
+    h = read_csv(field_path(case, "host_ring", step))
     g = 2 * np.sqrt((0.5 * (h["exx"] - h["eyy"]))**2 + h["exy"]**2)
     return h["x"], h["y"], g
 
@@ -165,7 +174,7 @@ def host_field(case):
     j = text.index("</DataArray>", i)
     pts = np.array(text[text.index(">", text.index("<DataArray", i)) + 1:j].split(), float).reshape(-1, 3)
     sxx, syy, sxy = array("sxx"), array("syy"), array("sxy")
-    nu = study.NU
+    nu = getattr(case, "nu", study.NU)
     tr = sxx + syy
     exx, eyy, exy = (sxx - nu * tr) / (2 * study.G), (syy - nu * tr) / (2 * study.G), sxy / (2 * study.G)
     g = 2 * np.sqrt((0.5 * (exx - eyy))**2 + exy**2)
@@ -416,7 +425,418 @@ def table(cases):
                 "force on the top at the last step [kgf/cm] | / empty cavity's |\n|---|---|---|---|\n" + "\n".join(refs) + "\n")
 
 
+
+# ---------------------------------------------------------------------------------------------
+# Extended cases (study.py EXTENDED, run by run_continued.py in segments)
+
+EXT_WINDOW = 0.1   # cm of the top's travel over which the windowed index accumulates the strain
+EXT_EVERY = 0.02   # cm of travel between windows' ends
+TOP_SHARE = 0.1    # the most strained share of the grains compared between successive windows
+
+
+class ExtCase:
+    """An extended case: its segments stitched into one numbering of steps (segment 0's own; a
+    later segment's step j > 0 is the step first + j, its step 0 the previous segment's last)."""
+
+    def __init__(self, name, c):
+        self.name, self.c = name, c
+        self.nu = c["nu"]
+        self.ok = False
+        at = os.path.join(RUNS, name, "attempt.txt")
+        if os.path.exists(at):
+            self.dir = os.path.join(RUNS, name, open(at).read().strip())
+            self.refine = int(self.dir[-1:])  # attemptK: K = the step divisor (run_continued.py ATTEMPTS)
+        else:  # a run of the first run_continued.py (one attempt, its segments in NAME/)
+            self.dir, self.refine = os.path.join(RUNS, name), 1
+        sp = os.path.join(self.dir, "segments.csv")
+        if not os.path.exists(sp):
+            return
+        seg = read_csv(sp)
+        self.segments = []
+        for k in range(len(seg["segment"])):
+            run = os.path.join(self.dir, f"seg{int(seg['segment'][k]):02d}")
+            if int(seg["steps"][k]) > 0 or k == 0:
+                self.segments.append((run, int(seg["first_step"][k]), int(seg["steps"][k])))
+        self.seg = seg
+        self.status = open(os.path.join(self.dir, "status.txt")).read().strip()
+        self.converged = "exit 0" in self.status
+        self.radii = read_csv(os.path.join(self.dir, "grains.csv"))["r"]
+        self.first_top = study.STEPS_P + 2
+        # travel, top force, localisation rows per global step
+        trav, force, rows = [], [], {}
+        for q, (run, first, n) in enumerate(self.segments):
+            hs = read_csv(os.path.join(run, "host_steps.csv"))
+            top = hs["group"] == "top"
+            st = hs["step"][top].astype(int)
+            shear = c["load"] == "shear"
+            u = np.abs(hs["ux"][top] if shear else hs["uy"][top])
+            f = np.abs(hs["fx"][top] if shear else hs["fy"][top])
+            lo = read_csv(os.path.join(run, "localisation.csv"))
+            for j in range(len(st)):
+                if q > 0 and st[j] == 0:
+                    continue
+                trav.append(u[j]), force.append(f[j])
+            for key, v in lo.items():
+                rows.setdefault(key, []).extend(list(v if q == 0 else v[lo["step"] > 0]))
+        self.top_uy, self.top_fy = np.array(trav), np.array(force)
+        self.loc = {k: np.array(v) for k, v in rows.items()}
+        self.loc["step"] = np.arange(len(self.loc["step"]))
+        self.last = len(self.top_uy) - 1
+        self.run = self.segments[-1][0]
+        self.ok = self.last >= self.first_top
+
+    def segment_of(self, k):
+        for run, first, n in reversed(self.segments):
+            if k >= first:
+                return run, k - first
+        raise ValueError(k)
+
+    def label(self):
+        c = self.c
+        return (f"{self.name}: {c['load']}, {c['n']} grains, kn/G {c['kn_g']:g} cm, nu {c['nu']:g}, "
+                f"P {c['P']:g}" + (f", steps / {self.refine}" if self.refine > 1 else ""))
+
+    def loading(self):
+        s = self.loc["step"]
+        m = s >= self.first_top
+        return s[m], self.top_uy[s[m]], self.loc["localisation_index"][m]
+
+    def start_of_window(self, k, width):
+        """The step whose start is `width` cm of travel before the end of step k."""
+        t0 = self.top_uy[k] - width
+        j = int(np.searchsorted(self.top_uy, t0 + 1e-9))  # first step ending beyond t0
+        return max(self.first_top, j)
+
+    def window_ends(self, width=EXT_WINDOW, every=EXT_EVERY):
+        out, nxt = [], width
+        for k in range(self.first_top, self.last + 1):
+            if self.top_uy[k] >= nxt - 1e-9:
+                out.append(k)
+                nxt = self.top_uy[k] + every
+        return out
+
+
+STRIP = 0.5  # cm: the width of the straight strip of the band measure
+
+
+def strip_share(tri, gamma, ok, area, width=STRIP, step=0.05, offset=False):
+    """The band measure: the largest share of sum(gamma area) in a straight strip `width` cm wide
+    across the zone (any direction, 5 degree steps; triangles by their centroids), with the
+    strip's share of the area and the direction of the strip's axis (degrees from +x). A uniform
+    field gives the area share (about 0.13 for a strip through the centre); a band crossing the
+    zone several times that."""
+    t = tri.triangles
+    cx, cy = tri.x[t].mean(1), tri.y[t].mean(1)
+    wg, wa = np.where(ok, gamma * area, 0), np.where(ok, area, 0)
+    tot, tota = wg.sum(), wa.sum()
+    if tot <= 0:
+        return (0.0, 0.0, 0.0, 0.0) if offset else (0.0, 0.0, 0.0)
+    m = int(round(width / step))
+    best = (0.0, 0.0, 0.0, 0.0)
+    for ang in range(0, 180, 5):
+        th = math.radians(ang)
+        pr = -cx * math.sin(th) + cy * math.cos(th)  # distance across a strip along direction ang
+        edges = np.arange(pr.min() - 1e-9, pr.max() + step, step)
+        hg, _ = np.histogram(pr, edges, weights=wg)
+        ha, _ = np.histogram(pr, edges, weights=wa)
+        cg = np.convolve(hg, np.ones(m), "valid")
+        ca = np.convolve(ha, np.ones(m), "valid")
+        j = int(np.argmax(cg))
+        if cg[j] / tot > best[0]:
+            best = (cg[j] / tot, ca[j] / tota, float(ang), edges[j] + width / 2)
+    return best if offset else best[:3]
+
+
+def grain_strain(case, k0, k1):
+    """Per grain: the area-weighted mean of the accumulated shear strain of its triangles."""
+    tri, gamma, ok, area, b = accumulated_strain(case, k0, k1)
+    n = len(case.radii)
+    num, den = np.zeros(n), np.zeros(n)
+    w = np.where(ok, area, 0)
+    for v in range(3):
+        np.add.at(num, tri.triangles[:, v], np.where(ok, gamma, 0) * w)
+        np.add.at(den, tri.triangles[:, v], w)
+    return np.where(den > 0, num / np.maximum(den, 1e-300), 0), den > 0
+
+
+def ext_windows(c):
+    """Per window end (every EXT_EVERY cm): the step, the travel, the windowed index, and the share
+    of the most strained TOP_SHARE of the grains of this window that were among those of the
+    window just before it (ending where this one starts; 0.1 if unrelated)."""
+    if hasattr(c, "_w"):
+        return c._w
+    ks, tr, wi, ov, ss, sa = [], [], [], [], [], []
+    for k in c.window_ends():
+        k0 = c.start_of_window(k, EXT_WINDOW)
+        tri, g, ok, area, _ = accumulated_strain(c, k0, k)
+        ks.append(k), tr.append(c.top_uy[k])
+        wi.append(index_of(np.where(ok, g, 0), np.where(ok, area, 0)))
+        sh, _, ang = strip_share(tri, g, ok, area)
+        ss.append(sh), sa.append(ang)
+        prev = k0 - 1
+        if prev >= c.first_top and c.top_uy[prev] - c.top_uy[c.first_top - 1] >= EXT_WINDOW - 1e-9:
+            ga, oka = grain_strain(c, k0, k)
+            gb, okb = grain_strain(c, c.start_of_window(prev, EXT_WINDOW), prev)
+            m = oka & okb
+            nt = max(1, int(round(TOP_SHARE * m.sum())))
+            idx = np.nonzero(m)[0]
+            ta = set(idx[np.argsort(-ga[m])[:nt]])
+            tb = set(idx[np.argsort(-gb[m])[:nt]])
+            ov.append(len(ta & tb) / nt)
+        else:
+            ov.append(np.nan)
+    c._w = tuple(np.array(v) for v in (ks, tr, wi, ov, ss, sa))
+    return c._w
+
+
+def wall_nonaffine(run):
+    """The cavity wall's displacement at the run's last step (host_particles.csv) less its best
+    affine fit u = c + B x (x: the element midpoints at rest): rms residual over rms of u - mean(u)."""
+    h = read_csv(os.path.join(run, "host_particles.csv"))
+    X = np.stack([np.ones_like(h["x"]), h["x"], h["y"]], 1)
+    res = 0.0
+    dev = 0.0
+    for u in (h["ux"], h["uy"]):
+        coef, *_ = np.linalg.lstsq(X, u, rcond=None)
+        res += np.sum((u - X @ coef)**2)
+        dev += np.sum((u - u.mean())**2)
+    return math.sqrt(res / dev), math.sqrt(res / len(h["x"]))
+
+
+def wall_text(run):
+    share, rms = wall_nonaffine(run)
+    return f"{share:.3f} ({rms * 1e4:.0f})"
+
+
+def grains_nonaffine(c):
+    """The same for the grains' displacement since the top started to move (step first_top's start
+    to the last step), positions at the start: how far the zone's motion is from affine."""
+    a, b = grains_at(c, c.first_top), grains_at(c, c.last)
+    X = np.stack([np.ones_like(a["x0"]), a["x0"], a["y0"]], 1)
+    res = dev = 0.0
+    for u in (b["x"] - a["x0"], b["y"] - a["y0"]):
+        coef, *_ = np.linalg.lstsq(X, u, rcond=None)
+        res += np.sum((u - X @ coef)**2)
+        dev += np.sum((u - u.mean())**2)
+    return f"{math.sqrt(res / dev):.3f} ({math.sqrt(res / len(a['x0'])) * 1e4:.0f})"
+
+
+def shrink_png(path):
+    """A PNG of many small maps in 256 colours (the figures' files stay below 400 KB)."""
+    from PIL import Image
+    Image.open(path).convert("RGB").quantize(256).save(path, optimize=True)
+
+
+def ext_cases():
+    return [ExtCase(n, c) for n, c in study.extended()]
+
+
+def fig_ext_index(ecs):
+    done = [c for c in ecs if c.ok]
+    if not done:
+        return
+    fig, axes = plt.subplots(3, 1, figsize=(8, 9.5), sharex=True)
+    cols = plt.cm.tab20(np.arange(len(done)) % 20)
+    for c, col in zip(done, cols):
+        ks, tr, wi, ov, ss, sa = ext_windows(c)
+        lab = c.name + ("" if c.converged else f" (stopped at {c.top_uy[c.last]:.2f} cm)")
+        axes[0].plot(tr, wi, "-", color=col, lw=1.1, label=lab)
+        axes[1].plot(tr, ss, "-", color=col, lw=1.0, label=lab)
+        axes[2].plot(tr, ov, "-", color=col, lw=1.0, label=lab)
+    axes[0].axhline(0.5, color="0.4", lw=0.7, ls="--")
+    axes[0].axhline(0.1, color="0.5", lw=0.6, ls=":")
+    axes[2].axhline(TOP_SHARE, color="0.5", lw=0.6, ls=":")
+    axes[0].set_ylabel(f"index of the strain over the last\n{EXT_WINDOW:g} cm of the top's travel")
+    axes[1].set_ylabel(f"share of that strain in the best\nstraight strip {STRIP:g} cm wide")
+    axes[1].axhline(0.13, color="0.5", lw=0.6, ls=":")
+    axes[2].set_ylabel(f"share of the most strained {TOP_SHARE:.0%} of the grains\n"
+                       "that were so in the window before")
+    axes[2].set_xlabel("top's travel [cm] (biaxial: down; shear: sideways)")
+    axes[0].legend(fontsize=7, ncol=2)
+    axes[0].set_title("Extended cases: windowed localisation index (top), band measure (middle; dotted: a uniform "
+                      f"field's), persistence of the most strained grains between successive {EXT_WINDOW:g} cm "
+                      f"windows (bottom; dotted: no memory)", fontsize=7)
+    fig.tight_layout()
+    fig.savefig(os.path.join(HERE, "extended_index.png"), dpi=110)
+    plt.close(fig)
+    shrink_png(os.path.join(HERE, "extended_index.png"))
+
+
+def fig_ext_maps(ecs):
+    """Per case: the strain of five successive-in-time windows spread over the travel, and the
+    strain accumulated over the whole loading."""
+    done = [c for c in ecs if c.ok]
+    if not done:
+        return
+    ncol = 6
+    fig, axes = plt.subplots(len(done), ncol, figsize=(2.0 * ncol + 0.4, 2.2 * len(done)))
+    axes = np.atleast_2d(axes)
+    for row, c in zip(axes, done):
+        ends = c.window_ends()
+        pick = [ends[int(round(q))] for q in np.linspace(0, len(ends) - 1, ncol - 1)] if ends else []
+        panels = [(c.start_of_window(k, EXT_WINDOW), k) for k in pick] + [(c.first_top, c.last)]
+        for ax, (k0, k1) in zip(row, panels):
+            _, g, _, _, _ = accumulated_strain(c, k0, k1)
+            vg = np.percentile(g[g > 0], 98) if np.any(g > 0) else 1
+            tri, gamma, ok, area, b = accumulated_strain(c, k0, k1)
+            ax.tripcolor(tri, facecolors=np.where(ok, gamma, 0), cmap="inferno", vmin=0, vmax=vg)
+            ax.add_patch(Circle((0, 0), 2.5, fill=False, color="tab:blue", lw=0.6))
+            ax.set_aspect("equal"), ax.set_xlim(-3.2, 3.2), ax.set_ylim(-3.6, 2.8)
+            ax.set_xticks([]), ax.set_yticks([])
+            li = index_of(np.where(ok, gamma, 0), np.where(ok, area, 0))
+            whole = (k0, k1) == (c.first_top, c.last)
+            ax.set_title(("whole loading" if whole else f"{c.top_uy[k0 - 1]:.2f}-{c.top_uy[k1]:.2f} cm")
+                         + f": {li:.2f}", fontsize=7)
+        row[0].set_ylabel(c.name, fontsize=7)
+        for ax in row[len(panels):]:
+            ax.axis("off")
+    fig.suptitle(f"Extended cases: grains' shear strain over {EXT_WINDOW:g} cm windows of the top's travel and over "
+                 "the whole loading (own scale per panel: 98th percentile); title: travel, index", fontsize=8)
+    fig.tight_layout(rect=(0, 0, 1, 0.98))
+    fig.savefig(os.path.join(HERE, "extended_maps.png"), dpi=70)
+    plt.close(fig)
+    shrink_png(os.path.join(HERE, "extended_maps.png"))
+
+
+def fig_ext_windows(c, ncol=7, most=14):
+    """One case: the strain of successive windows of EXT_WINDOW cm over the whole travel (all of
+    them if at most `most`, else `most` spread evenly), each on its own colour scale."""
+    ends = c.window_ends(EXT_WINDOW, EXT_WINDOW)
+    if not ends:
+        return
+    if len(ends) > most:
+        ends = [ends[int(round(q))] for q in np.linspace(0, len(ends) - 1, most)]
+    rows = math.ceil(len(ends) / ncol)
+    fig, axes = plt.subplots(rows, ncol, figsize=(1.9 * ncol, 2.0 * rows + 0.4))
+    axes = np.atleast_1d(axes).ravel()
+    for ax in axes[len(ends):]:
+        ax.axis("off")
+    for ax, k in zip(axes, ends):
+        k0 = c.start_of_window(k, EXT_WINDOW)
+        tri, gamma, ok, area, b = accumulated_strain(c, k0, k)
+        g = gamma[ok]
+        vg = np.percentile(g[g > 0], 98) if np.any(g > 0) else 1
+        ax.tripcolor(tri, facecolors=np.where(ok, gamma, 0), cmap="inferno", vmin=0, vmax=vg)
+        ax.add_patch(Circle((0, 0), 2.5, fill=False, color="tab:blue", lw=0.6))
+        ax.set_aspect("equal"), ax.set_xlim(-3.6, 3.6), ax.set_ylim(-3.6, 3.0)
+        ax.set_xticks([]), ax.set_yticks([])
+        li = index_of(np.where(ok, gamma, 0), np.where(ok, area, 0))
+        ax.set_title(f"{c.top_uy[k0 - 1]:.2f}-{c.top_uy[k]:.2f} cm: {li:.2f}", fontsize=7)
+    fig.suptitle(f"{c.label()}: grains' shear strain over successive {EXT_WINDOW:g} cm windows of the top's travel "
+                 "(own scale per panel, 98th percentile; title: travel, index)", fontsize=7)
+    fig.tight_layout(rect=(0, 0, 1, 0.96))
+    fig.savefig(os.path.join(HERE, f"extended_windows_{c.name}.png"), dpi=75)
+    plt.close(fig)
+    shrink_png(os.path.join(HERE, f"extended_windows_{c.name}.png"))
+
+
+def ext_table(ecs):
+    lines = ["| case | loading, grains, kn/G [cm], nu, P [kgf/cm^2] | travel reached / asked [cm] | segments "
+             "(stalls), seconds | windowed index: peak (travel) | windows >= 0.5 | median windowed index, "
+             "second half of the travel | band measure: median, second half (peak, travel, strip direction) | "
+             "persistence of the top 10 % (median) | index of the whole loading | band measure of the whole "
+             "loading (direction) | wall non-affine share (rms, um) | grains non-affine share (rms, um) |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for c in ecs:
+        p = c.c
+        desc = f"{p['load']}, {p['n']}, {p['kn_g']:g}, {p['nu']:g}, {p['P']:g}"
+        if not c.ok:
+            lines.append(f"| {c.name} | {desc} | no output | | | | | | | | | | |")
+            continue
+        ks, tr, wi, ov, ss, sa = ext_windows(c)
+        tri, g, ok, area, _ = accumulated_strain(c, c.first_top, c.last)
+        whole = index_of(np.where(ok, g, 0), np.where(ok, area, 0))
+        wss, _, wang = strip_share(tri, g, ok, area)
+        sec = tr >= tr[-1] / 2
+        half = wi[sec]
+        js = int(np.argmax(ss))
+        segs = len(c.seg["segment"])
+        stalls = int(np.sum(c.seg["exit"] == 3))
+        secs = float(np.sum(c.seg["seconds"]))
+        j = int(np.argmax(wi)) if len(wi) else 0
+        lines.append(f"| {c.name} | {desc} | {c.top_uy[c.last]:.2f} / {p['du'] * p['steps']:g} | {segs} ({stalls}), "
+                     f"{secs:.0f} | {wi.max():.2f} ({tr[j]:.2f}) | {int(np.sum(wi >= 0.5))} of {len(wi)} | "
+                     f"{np.median(half):.2f} | {np.median(ss[sec]):.2f} ({ss[js]:.2f}, {tr[js]:.2f}, {sa[js]:.0f}) | "
+                     f"{np.nanmedian(ov):.2f} | {whole:.2f} | {wss:.2f} ({wang:.0f}) | {wall_text(c.run)} | "
+                     f"{grains_nonaffine(c)} |")
+    # the sweep's attempts, for comparison
+    with open(os.path.join(HERE, "extended.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+def sweep_nonaffine(cases):
+    """The wall's and the grains' non-affine shares of the sweep's cases, and the empty cavity's wall
+    at the same travel (reference/empty_wall.csv)."""
+    out = []
+    w = read_csv(os.path.join(RUNS, "reference", "empty_wall.csv"))
+    _, cv = reference("empty")
+    for c in cases:
+        if not c.ok:
+            continue
+        k = int(np.argmin(np.abs(-cv["top_uy"] - c.top_uy[c.last])))
+        m = w["step"] == k
+        X = np.stack([np.ones(m.sum()), w["x"][m], w["y"][m]], 1)
+        res = dev = 0.0
+        for u in (w["ux"][m], w["uy"][m]):
+            coef, *_ = np.linalg.lstsq(X, u, rcond=None)
+            res += np.sum((u - X @ coef)**2)
+            dev += np.sum((u - u.mean())**2)
+        tri, g, ok, area, _ = accumulated_strain(c, c.first_top, c.last)
+        wss, _, wang = strip_share(tri, g, ok, area)
+        wins = [strip_share(*accumulated_strain(c, k - c.window + 1, k)[:4])[0]
+                for k in range(c.first_top + c.window - 1, c.last + 1, c.refine)]
+        out.append(f"| {c.label()} | {c.top_uy[c.last]:.2f} | {wss:.2f} ({wang:.0f}) | "
+                   f"{np.median(wins) if wins else 0:.2f} ({max(wins) if wins else 0:.2f}) | "
+                   f"{wall_text(c.run)} | {math.sqrt(res / dev):.3f} ({math.sqrt(res / m.sum()) * 1e4:.0f}) | "
+                   f"{grains_nonaffine(c)} |")
+    return ("| case | top [cm] | band measure of the whole loading (strip direction, deg) | band measure over "
+            "0.1 cm windows: median (peak) | wall non-affine share (rms, um) | empty cavity's wall, same travel | "
+            "grains non-affine share (rms, um) |\n|---|---|---|---|---|---|---|\n" + "\n".join(out) + "\n")
+
+
+EPISODE = 0.45  # band measure of a window that counts as a band
+
+
+def band_episodes(c):
+    """The spans of travel over which the band measure of the 0.1 cm windows stays >= EPISODE:
+    (travel at the end of the first and of the last such window, its peak, the strip direction)."""
+    ks, tr, wi, ov, ss, sa = ext_windows(c)
+    out, j = [], 0
+    while j < len(ss):
+        if ss[j] >= EPISODE:
+            e = j
+            while e + 1 < len(ss) and ss[e + 1] >= EPISODE:
+                e += 1
+            p = j + int(np.argmax(ss[j:e + 1]))
+            offs = []  # where the strip lies: its axis' signed distance from the cavity's centre at rest
+            for q in range(j, e + 1):
+                k = int(ks[q])
+                tri, g, ok, area, _ = accumulated_strain(c, c.start_of_window(k, EXT_WINDOW), k)
+                offs.append(strip_share(tri, g, ok, area, offset=True)[3])
+            out.append((tr[j], tr[e], ss[p], sa[p], sa[j:e + 1], offs))
+            j = e + 1
+        else:
+            j += 1
+    return out
+
+
+def print_episodes(names):
+    """figures.py --episodes NAME ...: the band episodes of extended cases (no figure drawn)."""
+    for n, cfg in study.extended():
+        if n not in names:
+            continue
+        c = ExtCase(n, cfg)
+        for t0, t1, peak, ang, angs, offs in band_episodes(c):
+            print(f"{n}: band measure >= {EPISODE} from the window ending at {t0:.2f} cm to the one ending at "
+                  f"{t1:.2f} cm (windows {EXT_WINDOW:g} cm wide, ends every {EXT_EVERY:g} cm); peak {peak:.2f} "
+                  f"along {ang:.0f} deg; directions {sorted(set(int(a) for a in angs))}; strip axis "
+                  f"{min(offs):.2f} to {max(offs):.2f} cm from the centre")
+
+
 def main():
+    if len(sys.argv) > 1 and sys.argv[1] == "--episodes":
+        print_episodes(sys.argv[2:])
+        return
     cases = [Case(*c) for c in study.cases()]
     fig_strain_maps(cases)
     fig_strain_maps_sweep(cases)
@@ -424,7 +844,17 @@ def main():
     fig_concentration(cases)
     fig_load(cases)
     table(cases)
+    with open(os.path.join(HERE, "sweep.md"), "a") as f:
+        f.write("\n" + sweep_nonaffine(cases))
     print(open(os.path.join(HERE, "sweep.md")).read())
+    ecs = ext_cases()
+    fig_ext_index(ecs)
+    fig_ext_maps(ecs)
+    for c in ecs:
+        if c.ok and c.name in study.EXT_WINDOW_MAPS:
+            fig_ext_windows(c)
+    ext_table(ecs)
+    print(open(os.path.join(HERE, "extended.md")).read())
 
 
 if __name__ == "__main__":

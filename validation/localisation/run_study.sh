@@ -1,9 +1,12 @@
 #!/bin/sh
 # The localisation study: packs the grains, runs every granular case of the sweep and the two
 # reference fillings (empty cavity, elastic discs), then draws the figures.
-#   validation/localisation/run_study.sh [CASE ...]      (from the repository root; default: all)
+#   validation/localisation/run_study.sh [CASE ...]      (from the repository root; default: the
+#                                                         8 cases of the sweep)
+#   validation/localisation/run_study.sh extended        the extended cases (study.py extended)
 # Runs go to runs/localisation/NAME/run (git-ignored); a run that stops (exit 3: a step did not
-# converge) is kept and reported, and tried again with the top's steps halved (NAME/run_refine2). Needs build/ (cmake --build build). Environment: JOBS (default 1)
+# converge) is kept and reported, and tried again with the top's steps halved (NAME/run_refine2);
+# an extended case is run by run_continued.py instead (NAME/segNN: continued past its stalls). Needs build/ (cmake --build build). Environment: JOBS (default 1)
 # runs that many cases at once.
 set -u
 cd "$(dirname "$0")/../.."
@@ -20,10 +23,19 @@ mkdir -p "$OUT"
 start=$(date +%s)
 
 
-if [ "${1:-}" = "--one" ]; then # one granular case: --one NAME PHI FRICTION KN
+if [ "${1:-}" = "--one" ]; then # one granular case: --one NAME [...] (the rest of study.py's line)
     dir=$OUT/$2
     mkdir -p "$dir"
-    $PY $HERE/pack_cavity.py --n 250 --phi "$3" --seed 1 > "$dir/grains.csv" 2>/dev/null || exit 1
+    args=$($PY $HERE/study.py pack "$2")
+    if [ ! -s "$dir/grains.csv" ] || [ "$(cat "$dir/grains.args" 2>/dev/null)" != "$args" ]; then # (seeded: the same args, the same grains)
+        # shellcheck disable=SC2086
+        $PY $HERE/pack_cavity.py $args > "$dir/grains.csv" 2>/dev/null || exit 1
+        echo "$args" > "$dir/grains.args"
+    fi
+    if $PY $HERE/study.py extended | grep "^$2 " > /dev/null; then # an extended case: continued past its stalls
+        $PY $HERE/run_continued.py "$2" "$dir" "$ROOT/meshes/square_cavity_sides.geo" "$ROOT/$GEMBEM"
+        exit 0
+    fi
     $PY $HERE/study.py scene "$2" "$dir" "$ROOT/meshes/square_cavity_sides.geo"
     t0=$(date +%s)
     $GEMBEM run "$dir/scene.yaml" -o "$dir/run" --overwrite --quiet > "$dir/gembem.log" 2>&1
@@ -42,8 +54,11 @@ if [ "${1:-}" = "--one" ]; then # one granular case: --one NAME PHI FRICTION KN
 fi
 
 $PY $HERE/study.py cases > "$OUT/cases.txt"
-if [ $# -gt 0 ]; then # only the cases named
-    for c in "$@"; do grep "^$c " "$OUT/cases.txt"; done > "$OUT/cases_run.txt"
+$PY $HERE/study.py extended >> "$OUT/cases.txt"
+if [ "${1:-}" = "extended" ]; then
+    $PY $HERE/study.py extended > "$OUT/cases_run.txt"
+elif [ $# -gt 0 ]; then # only the cases named
+    for c in "$@"; do grep "^$c " "$OUT/cases.txt" || echo "unknown case $c" >&2; done > "$OUT/cases_run.txt"
 else
     cp "$OUT/cases.txt" "$OUT/cases_run.txt"
 fi

@@ -11,7 +11,12 @@ boundary particles, kt = 0.7 kn between grains (none against the particles, fric
 The sweep varies one parameter at a time around the base case (phi 0.82, 30 deg, kn/G = 0.1 cm):
 grain friction 0 / 15 / 30 deg, solid fraction 0.78 / 0.82 / 0.85, kn/G 0.01 / 0.1 / 1 cm.
 
+The extended cases (EXTENDED, below) leave the sweep to look for a persistent shear band: more
+travel, more grains, simple shear of the body, a nearly incompressible host, a low confinement.
+
 Usage: study.py cases                 one line per case: name phi friction kn
+       study.py extended              one line per extended case: name load n kn_g nu P
+       study.py pack NAME             pack_cavity.py's arguments for the case
        study.py scene NAME DIR MESH [R] writes DIR/scene.yaml (R > 1: DIR/scene_refineR.yaml, the
                                       top's steps R times smaller); the grains file: DIR/grains.csv
        study.py disc_moduli           one line per reference disc: name shear_modulus poisson
@@ -79,27 +84,106 @@ materials:
   grain_boundary: {{kn: {kn:g}, kt: 0, friction_deg: 0}}
 host:
   mesh: {mesh}
-  elements: {{bottom: 16, right: 16, top: 16, left: 16, cavity: 64}}
-  material: {{shear_modulus: {G:g}, poisson: {NU:g}, plane: strain}}
-  boundary: {{bottom: fixed, top: displacement, left: {{pressure: 0}}, right: {{pressure: 0}}}}
+  elements: {{bottom: 16, right: 16, top: 16, left: 16, cavity: {cavity}}}
+  material: {{shear_modulus: {G:g}, poisson: {nu:g}, plane: strain}}
+  boundary: {{bottom: fixed, top: {top_bc}, left: {{pressure: 0}}, right: {{pressure: 0}}}}
   cavity: cavity
 grains:
-  file: grains.csv           # pack_cavity.py --n {n} --phi {phi} --seed {seed}
-solver: {{method: global, linear: cholmod, accuracy: {a:g}, max_iterations: 3000}}
+  file: grains.csv           # pack_cavity.py {pack}
+solver: {{method: global, linear: cholmod, accuracy: {a:g}, max_iterations: {max_it}}}
 loading:
   - relax: {{steps: 1}}
-  - host_load: {{steps: {steps_p}, increments: {{left: {dp:g}, right: {dp:g}}}}}
-  - host_load: {{steps: {steps}, increments: {{top: [0, {duy:g}]}}}}
+  - host_load: {{steps: {steps_p}, increments: {{left: {dp:g}, right: {dp:g}{top_p}}}}}
+  - host_load: {{steps: {steps}, increments: {{top: [{dux:g}, {duy:g}]}}}}
 """
+
+
+# Extended cases (the second part of the study): one at a time away from the sweep, to look for a
+# persistent shear band. Keys not given take the base case's / the sweep's values:
+#   n grains (r0 follows from phi and n), cavity elements, friction, phi, kn_g, nu (host), P
+#   (confinement), load "biaxial" (top pushed down, ux = 0) or "shear" (top: {ux, ty}: the
+#   confinement P also on the top as a normal traction, then the top moved sideways by DU per step
+#   with its normal traction held), STEPS_X steps of DU (cm) of the top's travel.
+EXT_DEFAULTS = {"n": N_GRAINS, "cavity": 64, "friction": BASE["friction"], "phi": BASE["phi"], "kn_g": 0.01,
+                "nu": NU, "P": P, "load": "biaxial", "steps": 300, "du": 0.01, "max_it": 3000}
+EXTENDED = [
+    # 1. the kn/G = 0.01 cm case of the sweep, 3 cm of travel
+    ("x_k0.01_3cm", {}),
+    # 2. four times the grains (r0 halved), boundary particles halved too (128 cavity elements)
+    ("x_n1000_k0.01", {"n": 1000, "cavity": 128, "steps": 200}),
+    # 3. simple shear of the body: top moved sideways under a normal traction P
+    ("x_shear_k0.01", {"load": "shear", "steps": 200}),
+    ("x_shear_k1", {"load": "shear", "kn_g": 1.0, "steps": 200}),
+    # 4. a nearly incompressible host, a low confinement
+    ("x_nu0.45_k0.01", {"nu": 0.45, "steps": 200}),
+    ("x_p10_k0.01", {"P": 10.0, "steps": 200}),
+    # grains much stiffer than the host, in simple shear
+    ("x_shear_k10", {"load": "shear", "kn_g": 10.0, "steps": 200}),
+    # 1000 and 2000 grains (the band of x_n1000_k0.01): stiffer contacts, nu 0.45, simple shear
+    ("x_n1000_k0.1", {"n": 1000, "cavity": 128, "kn_g": 0.1, "steps": 200}),
+    ("x_n1000_nu0.45_k0.01", {"n": 1000, "cavity": 128, "nu": 0.45, "steps": 200}),
+    ("x_n1000_shear_k0.01", {"n": 1000, "cavity": 128, "load": "shear", "steps": 200}),
+    ("x_n2000_k0.01", {"n": 2000, "cavity": 256, "steps": 200}),
+]
+
+
+A_EXT = 0.475  # kgf: the extended cases' accuracy, the base case's (0.5 % of its mean contact force at the
+# end, 104 kgf) whatever kn (5e-5 kn would be 10 times stricter at kn/G = 0.01 cm); times sqrt(250 / n)
+# (a grain's contact forces go with its diameter); never below 5e-5 kn
+
+
+def ext_accuracy(c):
+    return max(A_KN * c["kn_g"] * G, A_EXT * math.sqrt(N_GRAINS / c["n"]))
+
+
+# the extended cases drawn window by window (figures.py: extended_windows_NAME.png)
+EXT_WINDOW_MAPS = ["x_n1000_k0.01", "x_n2000_k0.01", "x_n1000_shear_k0.01", "x_k0.01_3cm"]
+
+
+def ext(name):
+    for n, over in EXTENDED:
+        if n == name:
+            c = dict(EXT_DEFAULTS)
+            c.update(over)
+            return c
+    return None
+
+
+def extended():
+    """(name, case dict) of the extended cases."""
+    return [(n, ext(n)) for n, _ in EXTENDED]
+
+
+def pack_args(name):
+    c = ext(name)
+    if c is not None:
+        return f"--n {c['n']} --phi {c['phi']} --seed {SEED} --elements {c['cavity']}"
+    for n, phi, friction, kn in cases():
+        if n == name:
+            return f"--n {N_GRAINS} --phi {phi} --seed {SEED}"
+    raise SystemExit(f"unknown case {name}")
 
 
 def scene(name, mesh, refine=1):
     """The case's scene; refine > 1: the top's steps `refine` times smaller (a second attempt)."""
+    c = ext(name)
+    if c is not None:
+        kn = c["kn_g"] * G
+        shear = c["load"] == "shear"
+        dp = c["P"] / STEPS_P
+        return SCENE.format(name=name, kn=kn, kt=KT_KN * kn, friction=c["friction"], mesh=mesh, G=G, nu=c["nu"],
+                            cavity=c["cavity"], top_bc="{ux: 0, ty: 0}" if shear else "displacement",
+                            pack=pack_args(name), a=ext_accuracy(c),
+                            max_it=c["max_it"], steps_p=STEPS_P, dp=dp,
+                            top_p=f", top: [0, {-dp:g}]" if shear else "", steps=c["steps"] * refine,
+                            dux=c["du"] / refine if shear else 0, duy=0 if shear else -c["du"] / refine)
     for n, phi, friction, kn in cases():
         if n == name:
-            return SCENE.format(name=name, kn=kn, kt=KT_KN * kn, friction=friction, mesh=mesh, G=G, NU=NU,
-                                n=N_GRAINS, phi=phi, seed=SEED, a=kn * (A_FRICTIONLESS if friction == 0 else A_KN),
-                                steps_p=STEPS_P, dp=P / STEPS_P, steps=STEPS * refine, duy=DUY / refine)
+            return SCENE.format(name=name, kn=kn, kt=KT_KN * kn, friction=friction, mesh=mesh, G=G, nu=NU,
+                                cavity=64, top_bc="displacement", pack=pack_args(name),
+                                a=kn * (A_FRICTIONLESS if friction == 0 else A_KN), max_it=3000,
+                                steps_p=STEPS_P, dp=P / STEPS_P, top_p="", steps=STEPS * refine, dux=0,
+                                duy=DUY / refine)
     raise SystemExit(f"unknown case {name}")
 
 
@@ -107,6 +191,11 @@ def main():
     if sys.argv[1] == "cases":
         for n, phi, friction, kn in cases():
             print(n, phi, friction, kn)
+    elif sys.argv[1] == "extended":
+        for n, c in extended():
+            print(n, c["load"], c["n"], c["kn_g"], c["nu"], c["P"])
+    elif sys.argv[1] == "pack":
+        print(pack_args(sys.argv[2]))
     elif sys.argv[1] == "scene":
         refine = int(sys.argv[5]) if len(sys.argv) > 5 else 1
         with open(f"{sys.argv[3]}/scene{'' if refine == 1 else f'_refine{refine}'}.yaml", "w") as f:
