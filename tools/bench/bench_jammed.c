@@ -43,7 +43,13 @@ int main(int argc, char **argv)
     double mf, wr, t0 = bench_now();
     gb_status st = gb_gem_relax(sim, &wc, prep_cap, &prep, &mf, &wr, &err);
     double t_prep = bench_now() - t0;
-    if (st) return printf("| %s | %d | | preparation not converged in %ld iterations (%.0f s), largest fixing force %g |\n", method, sim->n, prep, t_prep, mf), 3;
+    if (st) {
+        printf("| %s | %d | | preparation not converged in %ld iterations (%.0f s), largest fixing force %g |\n", method,
+               sim->n, prep, t_prep, mf);
+        gb_sim_free(sim);
+        gb_scene_free(&sc);
+        return 3;
+    }
     double s1, s2;
     gb_gem_forces(sim);
     gb_gem_stress(sim, &s1, &s2);
