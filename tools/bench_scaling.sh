@@ -18,8 +18,8 @@ trap 'rm -f "$rows"' EXIT
 echo "machine: $(nproc --all) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), $(free -g | awk '/Mem:/ {print $2}') GiB; $(date -u +%Y-%m-%d)"
 echo "threads: OPENBLAS_NUM_THREADS=$OPENBLAS_NUM_THREADS; load average $(cut -d' ' -f1-3 /proc/loadavg)"
 echo
-echo "| solver | N | contacts | iterations | seconds | peak memory [MB] | contact detection s | assembly s | factorisations (s) | solves s | the rest s |"
-echo "|---|---|---|---|---|---|---|---|---|---|---|"
+echo "| solver | N | contacts | iterations | seconds | peak memory [MB] | contact detection s | assembly s | analyses (s) | factorisations (s) | solves s | the rest s |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|---|"
 for n in $sizes; do
   if [ "$n" = 1000000 ]; then
     d=$root/runs/scaling/m10000x10
@@ -37,9 +37,10 @@ for n in $sizes; do
     split=$(grep 'load steps:' "$err" | head -1)
     rm -f "$err"
     num() { sed -n "s/.*$1 \([0-9.]*\) s.*/\1/p" <<< "$split"; }
-    fact=$(sed -n 's/.* \([0-9]*\) factorisations \([0-9.]*\) s.*/\2 (\1)/p' <<< "$split")
-    printf "|%s|%s|%s|%s|%s|%s| %s | %s | %s | %s | %s |\n" "$solver" "$nn" "$contacts" "$its" "$secs" "$mb" \
-      "$(num 'contact detection')" "$(num assembly)" "${fact:-}" "$(num solves)" "$(sed -n 's/.*moves) \([0-9.]*\) s.*/\1/p; s/.*update) \([0-9.]*\) s.*/\1/p' <<< "$split" | head -1)"
+    count() { sed -n "s/.* \([0-9]*\) $1 \([0-9.]*\) s.*/\2 (\1)/p" <<< "$split"; }
+    rest=$(sed -n 's/.*the rest ([^)]*) \([0-9.]*\) s.*/\1/p' <<< "$split")
+    printf "|%s|%s|%s|%s|%s|%s| %s | %s | %s | %s | %s | %s |\n" "$solver" "$nn" "$contacts" "$its" "$secs" "$mb" \
+      "$(num 'contact detection')" "$(num assembly)" "$(count analyses)" "$(count factorisations)" "$(num solves)" "$rest"
     echo "$(tr -d ' ' <<< "$solver") $(tr -d ' ' <<< "$nn") $(tr -d ' ' <<< "$secs")" >> "$rows"
   done
 done
