@@ -119,6 +119,28 @@ refuse "a state without a host" "$d/r_nohost.yaml" "nohost/state.yaml:[0-9]+:[0-
 sed '/^host:/,/^  cavity: cavity/d' "$d/s2.yaml" > "$d/r_noscenehost.yaml"
 refuse "a scene without a host" "$d/r_noscenehost.yaml" "stage1/state.yaml:[0-9]+:[0-9]+: host: the state comes from a run with a host"
 
+# 4. A restart after the cavity has moved: stage 1's grains, particles and cavity displacements
+#    moved down by 0.7 cm, more than a grain's radius (0.575 cm), so that the lowest grains lie
+#    below the cavity at rest: accepted (each grain is checked against the cavity moved as the
+#    state says; before, "lies outside the host's cavity"). The same state with one grain moved
+#    5 cm to the right, into the host: refused.
+cp -r "$d/stage1" "$d/down"
+awk -F, 'BEGIN { OFS = ","; CONVFMT = "%.17g" } NR > 1 { $2 -= 0.7 } 1' "$d/stage1/state_grains.csv" > "$d/down/state_grains.csv"
+awk -F, 'BEGIN { OFS = ","; CONVFMT = "%.17g" } NR > 1 { $3 -= 0.7; $5 -= 0.7 } 1' "$d/stage1/state_host.csv" > "$d/down/state_host.csv"
+lowest=$(awk -F, 'NR > 1 && (m == "" || $2 - $3 < m) { m = $2 - $3 } END { print m }' "$d/down/state_grains.csv")
+bottom=$(awk -F, 'NR > 1 && (m == "" || $3 - $5 < m) { m = $3 - $5 } END { print m }' "$d/down/state_host.csv")
+sed 's|stage1/state.yaml|down/state.yaml|' "$d/s2.yaml" | sed 's/max_iterations: [0-9]*/max_iterations: 50/' > "$d/r_down.yaml"
+msg=$("$gembem" run "$d/r_down.yaml" -o "$d/down_run" --quiet 2>&1 >/dev/null); code=$?
+if [ $code -ne 2 ] && ! grep -q "outside" <<< "$msg" && awk -v l="$lowest" -v b="$bottom" 'BEGIN { exit !(l < b) }'; then
+  ok "moved cavity: a restart with grains below the cavity at rest (lowest edge $lowest, cavity's rest bottom $bottom) runs (exit $code)"
+else
+  bad "moved cavity: exit $code, '$msg' (lowest grain edge $lowest, cavity's rest bottom $bottom)"
+fi
+cp -r "$d/down" "$d/into_host"
+awk -F, 'BEGIN { OFS = ","; CONVFMT = "%.17g" } NR == 2 { $1 += 5 } 1' "$d/down/state_grains.csv" > "$d/into_host/state_grains.csv"
+sed 's|stage1/state.yaml|into_host/state.yaml|' "$d/s2.yaml" > "$d/r_into_host.yaml"
+refuse "a grain in the host after the cavity moved" "$d/r_into_host.yaml" "grain 0 at .* lies outside the host's cavity"
+
 [ $fail -eq 0 ] && rm -rf "$out" || echo "outputs kept in $out"
 echo "$passed passed, $fail failed"
 [ $fail -eq 0 ]
