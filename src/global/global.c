@@ -559,7 +559,8 @@ static int pcg_previous_factor(gb_global *gl)
         for (size_t k = 0; k < n3; k++) rz1 += r[k] * z[k];
         double beta = it ? rz1 / rz : 0;
         rz = rz1;
-        for (size_t k = 0; k < n3; k++) p[k] = z[k] + beta * p[k];
+        /* (the first direction is z itself: p holds no value yet, and 0 times garbage may be NaN) */
+        for (size_t k = 0; k < n3; k++) p[k] = it ? z[k] + beta * p[k] : z[k];
         matvec(gl, p, Ap);
         double pAp = 0;
         for (size_t k = 0; k < n3; k++) pAp += p[k] * Ap[k];
