@@ -282,7 +282,7 @@ static gb_status analyse(gb_global *gl, gb_error *err)
 /* CHOLMOD 3 (SuiteSparse 5.12, Debian 12) runs the assembly loops of its supernodal factorisation
  * in OpenMP regions of a compiled-in 4 threads (CHOLMOD_OMP_NUM_THREADS), whatever the cores and
  * OMP_NUM_THREADS: on this 2-core machine its threads spent most of a factorisation in futex
- * waits (94 factorisations of the 1e4-disc benchmark: 9.3 s, 2.8 s serialised). The dense work is
+ * waits (94 factorisations of the 1e4-disc benchmark: 9.3 s, 3.0 s serialised). The dense work is
  * BLAS, threaded by OPENBLAS_NUM_THREADS; the regions are made inactive (max-active-levels 0) for
  * the factorisation and the caller's setting restored. */
 static void cholmod_serial_factorize(gb_global *gl)
