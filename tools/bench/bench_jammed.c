@@ -13,6 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/resource.h>
+#include "bench_accuracy.h"
 #include "bench_clock.h"
 
 #include "gem/sim.h"
@@ -28,13 +29,7 @@ int main(int argc, char **argv)
     gb_scene sc;
     gb_sim *sim;
     if (gb_scene_load(argv[1], &sc, &err)) return fprintf(stderr, "%s\n", err.msg), 1;
-    if (argc > 5 && !strcmp(argv[5], "target")) {
-        double r = 0;
-        for (int i = 0; i < sc.n_grains; i++) r += sc.grains[i].r;
-        sc.solver.accuracy = 1e-6 * sc.grain_grain.kn * r / (sc.n_grains ? sc.n_grains : 1);
-    } else if (argc > 5) {
-        sc.solver.accuracy = atof(argv[5]);
-    }
+    bench_set_accuracy(&sc, argc > 5 ? argv[5] : NULL);
     sc.solver.method = GB_METHOD_GLOBAL;
     sc.solver.linear = GB_LINEAR_CHOLMOD;
     if (gb_sim_create(&sc, &sim, &err)) return fprintf(stderr, "%s\n", err.msg), 1;

@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/resource.h>
+#include "bench_accuracy.h"
 #include "bench_clock.h"
 
 #include "gem/sim.h"
@@ -25,13 +26,7 @@ int main(int argc, char **argv)
     gb_scene sc;
     gb_sim *sim;
     if (gb_scene_load(argv[1], &sc, &err)) return fprintf(stderr, "%s\n", err.msg), 1;
-    if (argc > 4 && !strcmp(argv[4], "target")) {
-        double r = 0;
-        for (int i = 0; i < sc.n_grains; i++) r += sc.grains[i].r;
-        sc.solver.accuracy = 1e-6 * sc.grain_grain.kn * r / (sc.n_grains ? sc.n_grains : 1);
-    } else if (argc > 4) {
-        sc.solver.accuracy = atof(argv[4]);
-    }
+    bench_set_accuracy(&sc, argc > 4 ? argv[4] : NULL);
     sc.solver.method = strcmp(method, "reference") ? GB_METHOD_GLOBAL : GB_METHOD_REFERENCE;
     sc.solver.linear = strcmp(method, "umfpack") ? GB_LINEAR_CHOLMOD : GB_LINEAR_UMFPACK;
     double t0 = bench_now();
