@@ -120,9 +120,9 @@ static int parse4(const char *s, double v[4])
 int main(int argc, char **argv)
 {
     const char *in = NULL, *out = NULL;
-    double box[4] = {0}, porosity = -1, kn = -1, tol = -1, kn_wall = 0;
+    double box[4] = {0}, porosity = -1, kn = -1, tol = -1, kn_wall = -1;
     long max_iter = 10000000;
-    int have_box = 0;
+    int have_box = 0, have_wall_kn = 0;
     for (int a = 1; a < argc; a++) {
         const char *v = a + 1 < argc ? argv[a + 1] : NULL;
         if (!strcmp(argv[a], "--box") && v) have_box = parse4(v, box), a++;
@@ -131,7 +131,7 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[a], "--tol") && v) tol = atof(v), a++;
         else if (!strcmp(argv[a], "--out") && v) out = v, a++;
         else if (!strcmp(argv[a], "--max-iter") && v) max_iter = atol(v), a++;
-        else if (!strcmp(argv[a], "--wall-kn") && v) kn_wall = atof(v), a++;
+        else if (!strcmp(argv[a], "--wall-kn") && v) kn_wall = atof(v), have_wall_kn = 1, a++;
         else if (argv[a][0] != '-' && !in) in = argv[a];
         else {
             fprintf(stderr, "gb_jam: unexpected argument '%s'\nusage: gb_jam IN.csv --box L,R,B,T --porosity P --kn K "
@@ -140,10 +140,10 @@ int main(int argc, char **argv)
         }
     }
     if (!in || !out || !have_box || !(porosity > 0 && porosity < 1) || !(kn > 0) || !(tol > 0) || max_iter < 1 ||
-        kn_wall < 0 ||
+        (have_wall_kn && !(kn_wall > 0)) ||
         !(box[1] > box[0]) || !(box[3] > box[2])) {
         fprintf(stderr, "gb_jam: expected IN.csv, --box L,R,B,T (R > L, T > B), --porosity in (0, 1), --kn > 0, "
-                        "--tol > 0 and --out\n");
+                        "--tol > 0, --out, and --wall-kn > 0 if given\n");
         return 2;
     }
     FILE *f = fopen(in, "r");
@@ -188,7 +188,7 @@ int main(int argc, char **argv)
     for (int i = 0; i < n; i++) J.x[i] = cx + s * (J.x[i] - cx), J.y[i] = cy + s * (J.y[i] - cy);
 
     J.kn = kn;
-    J.kn_wall = kn_wall > 0 ? kn_wall : kn;
+    J.kn_wall = have_wall_kn ? kn_wall : kn;
     J.vx = calloc((size_t)n, sizeof(double)), J.vy = calloc((size_t)n, sizeof(double));
     J.fx = xmalloc((size_t)n * sizeof(double)), J.fy = xmalloc((size_t)n * sizeof(double));
     J.m = xmalloc((size_t)n * sizeof(double));
