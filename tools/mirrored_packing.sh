@@ -30,5 +30,5 @@ mv "$out/jammed.csv.part" "$out/jammed.csv"
 awk -v k="$k" -v L="$L" -v R="$R" -v B="$B" -v T="$T" \
   'BEGIN { printf "box: {left: %.17g, right: %.17g, bottom: %.17g, top: %.17g}\n", L, L + k * (R - L), B, B + k * (T - B) }' \
   > "$out/jammed.box"
-sed -e 's/{file: jammed.csv}/{file: jammed.csv}/' "$out/base/scene.yaml" | grep -v '^box:' > "$out/scene.yaml"
+grep -v '^box:' "$out/base/scene.yaml" > "$out/scene.yaml"
 cat "$out/jammed.box" >> "$out/scene.yaml"
