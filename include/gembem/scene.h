@@ -70,6 +70,7 @@ typedef struct {
     int linear;            /* global: GB_LINEAR_CHOLMOD or GB_LINEAR_UMFPACK */
     double global_alpha;   /* global: share of the solution taken per iteration (default 1) */
     double max_move;       /* global: largest move per iteration, as a share of the grain's radius */
+    int cutbacks;          /* a load step that does not converge is retried in halves, down to 1/2^cutbacks */
 } gb_solver_settings;
 
 enum { GB_METHOD_REFERENCE = 0, GB_METHOD_GLOBAL = 1 };

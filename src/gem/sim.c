@@ -23,6 +23,7 @@ void gb_sim_free(gb_sim *sim)
     free(sim->in_system);
     gb_sim_state_free(&sim->saved);
     gb_sim_state_free(&sim->trial);
+    gb_sim_state_free(&sim->substep);
     gb_pairs_free(&sim->pairs);
     gb_global_free(sim->global);
     gb_host_free(sim->host);
@@ -337,14 +338,15 @@ static const char *stage_name(gb_stage_kind k)
     }
 }
 
-/* One load step of a stage: the walls' control, then relaxation to equilibrium. */
-static gb_status load_step(gb_sim *sim, const gb_stage *sg, int k, const double start[2], long *iters,
-                           double *max_force, double *residual, gb_error *err)
+/* The part of load step k of a stage from fraction t to t + h of its increment (the whole step:
+ * t = 0, h = 1): the walls' control or the host's loads, then relaxation to equilibrium. */
+static gb_status load_step(gb_sim *sim, const gb_stage *sg, int k, double t, double h, const double start[2],
+                           long *iters, double *max_force, double *residual, gb_error *err)
 {
     long cap = sim->scene->solver.max_iterations;
     gb_wall_control wc = {GB_WALLS_FIXED, 0, 0, 0};
     gb_status st;
-    double f = (double)k / sg->steps;
+    double f = (k - 1 + t + h) / sg->steps;
     sim->dissipation_step = 0;
     for (int q = 0; q < sim->pairs.n; q++) sim->pairs.p[q].diss = 0;
     switch (sg->kind) {
@@ -364,24 +366,62 @@ static gb_status load_step(gb_sim *sim, const gb_stage *sg, int k, const double 
     case GB_STAGE_HOST_LOAD:
         /* The host's loads grow (grains and cavity held: f0 changes), then the grains and the
          * cavity relax. */
-        for (int q = 0; q < sg->n_host_groups; q++)
-            if ((st = gb_host_add_load(sim->host, sg->host_group[q], sg->host_increment[q], err))) return st;
-        if (sim->host->mesh.unbounded && (st = gb_host_add_remote(sim->host, sg->host_remote_increment, err)))
-            return st;
+        for (int q = 0; q < sg->n_host_groups; q++) {
+            double inc[2] = {h * sg->host_increment[q][0], h * sg->host_increment[q][1]};
+            if ((st = gb_host_add_load(sim->host, sg->host_group[q], inc, err))) return st;
+        }
+        double remote[3] = {h * sg->host_remote_increment[0], h * sg->host_remote_increment[1],
+                            h * sg->host_remote_increment[2]};
+        if (sim->host->mesh.unbounded && (st = gb_host_add_remote(sim->host, remote, err))) return st;
         return gb_gem_relax(sim, &wc, cap, iters, max_force, residual, err);
     case GB_STAGE_STRAIN:
-        if ((st = impose_strain(sim, sg->de1, sg->de2, err))) return st;
+        if ((st = impose_strain(sim, h * sg->de1, h * sg->de2, err))) return st;
         return gb_gem_relax(sim, &wc, cap, iters, max_force, residual, err);
     case GB_STAGE_SHEAR_MEAN:
         /* The shear increment, equilibrium with the walls held, then the mean stress restored by an
          * isotropic strain under stress control (K section 2.6). */
-        if ((st = impose_strain(sim, 0.5 * sg->d_shear, -0.5 * sg->d_shear, err))) return st;
+        if ((st = impose_strain(sim, 0.5 * h * sg->d_shear, -0.5 * h * sg->d_shear, err))) return st;
         if ((st = gb_gem_relax(sim, &wc, cap, iters, max_force, residual, err))) return st;
         wc.mode = GB_WALLS_MEAN;
         wc.mean = sg->mean_stress;
         return gb_gem_relax(sim, &wc, cap - *iters, iters, max_force, residual, err);
     }
     return GB_EINTERNAL;
+}
+
+/* Load step k of a stage. A step that does not converge is cut back, as nonlinear finite element
+ * codes do: taken again from its start in two halves, a half that fails in two quarters, and so on
+ * down to 1/2^cutbacks of the step (solver.cutbacks). The granular path is path-dependent, so a
+ * smaller sub-step is a finer, not a different, loading; a stall of the global solver (a grain that
+ * must roll out of a squeeze, a slip that moves many grains) is often a load step too large for one
+ * Newton path. Returns the iterations of all attempts in *iters, the sub-steps taken in *substeps,
+ * and on failure the finest sub-step tried in *finest. */
+static gb_status cut_back_step(gb_sim *sim, const gb_stage *sg, int k, const double start[2], long *iters,
+                               int *substeps, double *finest, double *max_force, double *residual, gb_error *err)
+{
+    int cuts = sg->kind == GB_STAGE_RELAX ? 0 : sim->scene->solver.cutbacks;
+    double t = 0, h = 1;
+    gb_status st;
+    *substeps = 0;
+    for (;;) {
+        if (cuts > 0 && (st = gb_sim_state_save(sim, &sim->substep, err))) return st;
+        long it = 0;
+        st = load_step(sim, sg, k, t, h, start, &it, max_force, residual, err);
+        *iters += it;
+        *finest = h;
+        if (st == GB_ENOCONV && cuts > 0) {
+            gb_sim_state_restore(sim, &sim->substep);
+            gb_gem_forces(sim);
+            cuts--;
+            h /= 2;
+            continue;
+        }
+        if (st) return st;
+        ++*substeps;
+        t += h; /* sums of powers of two: exact */
+        if (t >= 1) return GB_OK;
+        if (h > 1 - t) h = 1 - t;
+    }
 }
 
 gb_status gb_sim_run(gb_sim *sim, gb_step_fn on_step, void *user, gb_error *err)
@@ -407,18 +447,21 @@ gb_status gb_sim_run(gb_sim *sim, gb_step_fn on_step, void *user, gb_error *err)
         gb_gem_forces(sim);
         gb_gem_stress(sim, &start[0], &start[1]);
         for (int k = 1; k <= sg->steps && !st; k++) {
-            double t0 = gb_clock_seconds(), max_force = 0, residual = 0;
+            double t0 = gb_clock_seconds(), max_force = 0, residual = 0, finest = 1;
             long iters = 0;
+            int substeps = 0;
             step++;
-            st = load_step(sim, sg, k, start, &iters, &max_force, &residual, err);
+            st = cut_back_step(sim, sg, k, start, &iters, &substeps, &finest, &max_force, &residual, err);
             sim->iterations_total += iters;
             if (st == GB_ENOCONV) {
+                char cut[96] = "";
+                if (finest < 1) snprintf(cut, sizeof cut, ", nor in sub-steps down to 1/%.0f of the step", 1 / finest);
                 st = gb_fail(err, GB_ENOCONV,
                              "step %d (stage %d '%s', step %d of %d) did not converge in %ld iterations: largest "
-                             "fixing force %.6g, walls off their target by %.6g (accuracy a = %g); the outputs "
+                             "fixing force %.6g, walls off their target by %.6g (accuracy a = %g)%s; the outputs "
                              "hold the %d completed steps",
-                             step, s + 1, stage_name(sg->kind), k, sg->steps, iters, max_force, residual,
-                             sc->solver.accuracy, step - 1);
+                             step, s + 1, stage_name(sg->kind), k, sg->steps, sc->solver.max_iterations, max_force,
+                             residual, sc->solver.accuracy, cut, step - 1);
             } else if (st) {
                 char msg[GB_ERROR_MSG_MAX];
                 snprintf(msg, sizeof msg, "%s", err->msg);
@@ -432,6 +475,7 @@ gb_status gb_sim_run(gb_sim *sim, gb_step_fn on_step, void *user, gb_error *err)
             rep.stage = s;
             rep.step = step;
             rep.iterations = iters;
+            rep.substeps = substeps;
             fill_report(sim, &rep);
             add_step_work(sim);
             rep.seconds = gb_clock_seconds() - t0;

@@ -65,6 +65,8 @@ struct gb_sim {
     gb_sim_state saved;
     /* The state before a trial move of the global solver. */
     gb_sim_state trial;
+    /* The start of a sub-step of a load step being cut back (gb_sim_run). */
+    gb_sim_state substep;
     double lm_mu;        /* Levenberg-Marquardt damping of the global solver */
 #define LM_MEMORY GB_SOLVER_HISTORY
 /* sim->in_system: 0 moved by the reference cases, else by the global system, its rotation held or not */

@@ -12,7 +12,7 @@
 
 gb_solver_settings gb_solver_defaults(void)
 {
-    gb_solver_settings s = {0.75, 0.5, 20.0, 20.0, 0.0, 100000, GB_METHOD_REFERENCE, 0, 1.0, 0.1};
+    gb_solver_settings s = {0.75, 0.5, 20.0, 20.0, 0.0, 100000, GB_METHOD_REFERENCE, 0, 1.0, 0.1, 4};
     return s;
 }
 
@@ -112,6 +112,9 @@ static gb_status read_solver(gb_ymap *top, gb_solver_settings *sv, gb_error *err
         (st = gb_ymap_number(&m, "accuracy", GB_Y_REQUIRED | GB_Y_POSITIVE, &sv->accuracy, err)) ||
         (st = gb_ymap_int(&m, "max_iterations", 0, 1, 2000000000L, &sv->max_iterations, err)))
         return st;
+    long cutbacks = sv->cutbacks;
+    if ((st = gb_ymap_int(&m, "cutbacks", 0, 0, 20, &cutbacks, err))) return st;
+    sv->cutbacks = (int)cutbacks;
     if (!(sv->alpha <= 1.5) || !(sv->alpha1 <= 1.5))
         return gb_yaml_fail(m.doc, m.node, err, "solver: expected alpha and alpha1 in (0, 1.5]; the paper uses "
                                                 "alpha < 1 because neighbours move too");
