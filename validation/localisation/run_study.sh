@@ -59,8 +59,8 @@ if [ "${1:-}" = "extended" ]; then
     $PY $HERE/study.py extended > "$OUT/cases_run.txt"
 elif [ $# -gt 0 ]; then # only the cases named
     for c in "$@"; do grep "^$c " "$OUT/cases.txt" || echo "unknown case $c" >&2; done > "$OUT/cases_run.txt"
-else
-    cp "$OUT/cases.txt" "$OUT/cases_run.txt"
+else # the sweep (the extended cases take a few minutes each: run them by 'extended')
+    $PY $HERE/study.py cases > "$OUT/cases_run.txt"
 fi
 xargs -P "$JOBS" -L 1 "$ROOT/$HERE/run_study.sh" --one < "$OUT/cases_run.txt"
 
