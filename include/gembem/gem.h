@@ -25,7 +25,7 @@ typedef struct {
     double s1, s2;       /* boundary stresses (K section 4.1) */
     double stress_ratio; /* (s1 - s2)/(s1 + s2), 0 when both vanish */
     long iterations;     /* of all attempts, sub-steps included */
-    int substeps;        /* 1, or the sub-steps a cut-back step took (solver.cutbacks) */
+    int substeps;        /* 1, or the sub-steps a cut-back step took (solver.cutbacks); 0 for step 0 */
     double max_fixing_force;  /* largest |F| over the grains (K 14) */
     double seconds;           /* wall-clock time of the step */
     int n_contacts;

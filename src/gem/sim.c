@@ -393,7 +393,7 @@ static gb_status load_step(gb_sim *sim, const gb_stage *sg, int k, double t, dou
  * codes do: taken again from its start in two halves, a half that fails in two quarters, and so on
  * down to 1/2^cutbacks of the step (solver.cutbacks). The granular path is path-dependent, so a
  * smaller sub-step is a finer, not a different, loading; a stall of the global solver (a grain that
- * must roll out of a squeeze, a slip that moves many grains) is often a load step too large for one
+ * must roll out of a squeeze, a slip that moves many grains) can be a load step too large for one
  * Newton path. Returns the iterations of all attempts in *iters, the sub-steps taken in *substeps,
  * and on failure the finest sub-step tried in *finest. */
 static gb_status cut_back_step(gb_sim *sim, const gb_stage *sg, int k, const double start[2], long *iters,
