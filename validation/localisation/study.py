@@ -105,7 +105,7 @@ loading:
 #   confinement P also on the top as a normal traction, then the top moved sideways by DU per step
 #   with its normal traction held), STEPS_X steps of DU (cm) of the top's travel.
 EXT_DEFAULTS = {"n": N_GRAINS, "cavity": 64, "friction": BASE["friction"], "phi": BASE["phi"], "kn_g": 0.01,
-                "nu": NU, "P": P, "load": "biaxial", "steps": 300, "du": 0.01, "max_it": 3000}
+                "nu": NU, "P": P, "load": "biaxial", "steps": 300, "du": 0.01, "max_it": 3000, "seed": SEED}
 EXTENDED = [
     # 1. the kn/G = 0.01 cm case of the sweep, 3 cm of travel
     ("x_k0.01_3cm", {}),
@@ -124,6 +124,11 @@ EXTENDED = [
     ("x_n1000_nu0.45_k0.01", {"n": 1000, "cavity": 128, "nu": 0.45, "steps": 200}),
     ("x_n1000_shear_k0.01", {"n": 1000, "cavity": 128, "load": "shear", "steps": 200}),
     ("x_n2000_k0.01", {"n": 2000, "cavity": 256, "steps": 200}),
+    # other packings of the same case (seed 1 is x_k0.01_3cm's): is its episode the packing's?
+    ("x_k0.01_seed2", {"seed": 2, "steps": 200}),
+    ("x_k0.01_seed3", {"seed": 3, "steps": 200}),
+    ("x_k0.01_seed4", {"seed": 4, "steps": 200}),
+    ("x_k0.01_seed5", {"seed": 5, "steps": 200}),
 ]
 
 
@@ -137,7 +142,7 @@ def ext_accuracy(c):
 
 
 # the extended cases drawn window by window (figures.py: extended_windows_NAME.png)
-EXT_WINDOW_MAPS = ["x_n1000_k0.01", "x_n2000_k0.01", "x_n1000_shear_k0.01", "x_k0.01_3cm"]
+EXT_WINDOW_MAPS = ["x_n1000_k0.01", "x_n2000_k0.01", "x_n1000_shear_k0.01", "x_k0.01_3cm", "x_k0.01_seed5"]
 
 
 def ext(name):
@@ -157,7 +162,7 @@ def extended():
 def pack_args(name):
     c = ext(name)
     if c is not None:
-        return f"--n {c['n']} --phi {c['phi']} --seed {SEED} --elements {c['cavity']}"
+        return f"--n {c['n']} --phi {c['phi']} --seed {c['seed']} --elements {c['cavity']}"
     for n, phi, friction, kn in cases():
         if n == name:
             return f"--n {N_GRAINS} --phi {phi} --seed {SEED}"
