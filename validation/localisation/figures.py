@@ -735,7 +735,7 @@ def ext_table(ecs):
              "(stalls), seconds | windowed index: peak (travel) | windows >= 0.5 | median windowed index, "
              "second half of the travel | band measure: median, second half (peak, travel, strip direction) | "
              "persistence of the top 10 % (median) | index of the whole loading | band measure of the whole "
-             "loading (direction) | wall non-affine share (rms, um) | grains non-affine share (rms, um) |",
+             "loading (direction; the strip's share of the area) | wall non-affine share (rms, um) | grains non-affine share (rms, um) |",
              "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for c in ecs:
         p = c.c
@@ -746,7 +746,7 @@ def ext_table(ecs):
         ks, tr, wi, ov, ss, sa = ext_windows(c)
         tri, g, ok, area, _ = accumulated_strain(c, c.first_top, c.last)
         whole = index_of(np.where(ok, g, 0), np.where(ok, area, 0))
-        wss, _, wang = strip_share(tri, g, ok, area)
+        wss, warea, wang = strip_share(tri, g, ok, area)
         sec = tr >= tr[-1] / 2
         half = wi[sec]
         js = int(np.argmax(ss))
@@ -757,7 +757,7 @@ def ext_table(ecs):
         lines.append(f"| {c.name} | {desc} | {c.top_uy[c.last]:.2f} / {p['du'] * p['steps']:g} | {segs} ({stalls}), "
                      f"{secs:.0f} | {wi.max():.2f} ({tr[j]:.2f}) | {int(np.sum(wi >= 0.5))} of {len(wi)} | "
                      f"{np.median(half):.2f} | {np.median(ss[sec]):.2f} ({ss[js]:.2f}, {tr[js]:.2f}, {sa[js]:.0f}) | "
-                     f"{np.nanmedian(ov):.2f} | {whole:.2f} | {wss:.2f} ({wang:.0f}) | {wall_text(c.run)} | "
+                     f"{np.nanmedian(ov):.2f} | {whole:.2f} | {wss:.2f} ({wang:.0f}; {warea:.2f}) | {wall_text(c.run)} | "
                      f"{grains_nonaffine(c)} |")
     # the sweep's attempts, for comparison
     with open(os.path.join(HERE, "extended.md"), "w") as f:
@@ -782,14 +782,14 @@ def sweep_nonaffine(cases):
             res += np.sum((u - X @ coef)**2)
             dev += np.sum((u - u.mean())**2)
         tri, g, ok, area, _ = accumulated_strain(c, c.first_top, c.last)
-        wss, _, wang = strip_share(tri, g, ok, area)
+        wss, warea, wang = strip_share(tri, g, ok, area)
         wins = [strip_share(*accumulated_strain(c, k - c.window + 1, k)[:4])[0]
                 for k in range(c.first_top + c.window - 1, c.last + 1, c.refine)]
-        out.append(f"| {c.label()} | {c.top_uy[c.last]:.2f} | {wss:.2f} ({wang:.0f}) | "
+        out.append(f"| {c.label()} | {c.top_uy[c.last]:.2f} | {wss:.2f} ({wang:.0f}; {warea:.2f}) | "
                    f"{np.median(wins) if wins else 0:.2f} ({max(wins) if wins else 0:.2f}) | "
                    f"{wall_text(c.run)} | {math.sqrt(res / dev):.3f} ({math.sqrt(res / m.sum()) * 1e4:.0f}) | "
                    f"{grains_nonaffine(c)} |")
-    return ("| case | top [cm] | band measure of the whole loading (strip direction, deg) | band measure over "
+    return ("| case | top [cm] | band measure of the whole loading (strip direction, deg; the strip's share of the area) | band measure over "
             "0.1 cm windows: median (peak) | wall non-affine share (rms, um) | empty cavity's wall, same travel | "
             "grains non-affine share (rms, um) |\n|---|---|---|---|---|---|---|\n" + "\n".join(out) + "\n")
 
