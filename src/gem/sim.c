@@ -283,9 +283,10 @@ static void add_step_work(gb_sim *sim)
                           sim->body[2 * i + 1] * (sim->g[i].y - sim->saved.g[i].y);
 }
 
-static void restore_state(gb_sim *sim)
+/* Back to a saved state, with its forces. */
+static void restore_state(gb_sim *sim, const gb_sim_state *state)
 {
-    gb_sim_state_restore(sim, &sim->saved);
+    gb_sim_state_restore(sim, state);
     gb_gem_forces(sim);
 }
 
@@ -410,8 +411,7 @@ static gb_status cut_back_step(gb_sim *sim, const gb_stage *sg, int k, const dou
         *iters += it;
         *finest = h;
         if (st == GB_ENOCONV && cuts > 0) {
-            gb_sim_state_restore(sim, &sim->substep);
-            gb_gem_forces(sim);
+            restore_state(sim, &sim->substep);
             cuts--;
             h /= 2;
             continue;
@@ -469,7 +469,7 @@ gb_status gb_sim_run(gb_sim *sim, gb_step_fn on_step, void *user, gb_error *err)
                              stage_name(sg->kind), k, sg->steps, msg);
             }
             if (st) {
-                restore_state(sim);
+                restore_state(sim, &sim->saved);
                 break;
             }
             rep.stage = s;
