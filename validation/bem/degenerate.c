@@ -8,7 +8,7 @@
  * At the analytic radius and at the discrete mesh's own degenerate radius (found here from
  * det(G1 - c lambda E) = 0 with a 2 x 2 eigenproblem, c = (3 - 4 nu) / (8 pi mu (1 - nu))),
  * the system's rcond (dgecon) collapses; the guard rescales the lengths and the answer equals the
- * safe size's. Without the guard the discrete degenerate radius is singular.
+ * safe size's. Without the guard the discrete degenerate radius is singular from N = 256 on.
  * Usage: bem_degenerate [--full] */
 #include <lapacke.h>
 
@@ -150,7 +150,10 @@ int main(int argc, char **argv)
                 }
                 V_CHECK(d < 1e-9, "%s N = %d a = %.6f: differs from the safe size by %.2e", name, n, radii[r], d);
                 if (!unb) V_CHECK(eex < 2.0 / n, "disk N = %d: error %.2e vs exact", n, eex);
-                if (r == 1)
+                /* breaks only where G is singular to working precision (N = 256: rcond 3e-17); at
+                 * N = 64 (rcond 4e-9) the unguarded error is ~1e-16 / rcond or less, and whether it
+                 * reaches 1e-3 depends on the BLAS kernel's rounding (SkylakeX: 4e-9) */
+                if (r == 1 && o.rcond_first < 1e-13)
                     V_CHECK(off.st == GB_ENUMERIC || tdiff(off.t, ref.t, n) > 1e-3,
                             "%s N = %d: the mesh's degenerate radius should break the unguarded solve", name, n);
                 free(o.t);
