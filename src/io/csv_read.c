@@ -1,6 +1,8 @@
 #define _POSIX_C_SOURCE 200809L
 #include "io/csv_read.h"
 
+#include "core/number.h"
+
 #include <errno.h>
 #include <math.h>
 #include <stdlib.h>
@@ -103,12 +105,9 @@ gb_status gb_csv_fail(const gb_csv *c, int k, gb_error *err, const char *what)
 
 gb_status gb_csv_number(const gb_csv *c, int k, double *out, gb_error *err)
 {
-    const char *s = c->field[k];
-    char *end = NULL;
-    errno = 0;
-    double v = strtod(s, &end);
-    if (end == s || *end != '\0') return gb_csv_fail(c, k, err, "a number");
-    if (!isfinite(v) || errno == ERANGE) return gb_csv_fail(c, k, err, "a finite number");
-    *out = v;
-    return GB_OK;
+    switch (gb_parse_finite(c->field[k], out)) {
+    case GB_NUMBER_OK: return GB_OK;
+    case GB_NUMBER_SYNTAX: return gb_csv_fail(c, k, err, "a number");
+    default: return gb_csv_fail(c, k, err, "a finite number");
+    }
 }

@@ -1,5 +1,7 @@
 #include "scene/yaml_read.h"
 
+#include "core/number.h"
+
 #include <errno.h>
 #include <math.h>
 #include <stdarg.h>
@@ -107,15 +109,11 @@ gb_status gb_yaml_number(const gb_yaml_doc *doc, struct fy_node *node, const cha
                             s ? s : "");
     memcpy(buf, s, len);
     buf[len] = '\0';
-    char *end = NULL;
-    errno = 0;
-    double v = strtod(buf, &end);
-    if (end == buf || *end != '\0')
-        return gb_yaml_fail(doc, node, err, "%s: expected a number, found '%s'", what, buf);
-    if (!isfinite(v) || errno == ERANGE)
-        return gb_yaml_fail(doc, node, err, "%s: expected a finite number, found '%s'", what, buf);
-    *out = v;
-    return GB_OK;
+    switch (gb_parse_finite(buf, out)) {
+    case GB_NUMBER_OK: return GB_OK;
+    case GB_NUMBER_SYNTAX: return gb_yaml_fail(doc, node, err, "%s: expected a number, found '%s'", what, buf);
+    default: return gb_yaml_fail(doc, node, err, "%s: expected a finite number, found '%s'", what, buf);
+    }
 }
 
 gb_status gb_ymap_open(const gb_yaml_doc *doc, struct fy_node *node, const char *name, gb_ymap *m,

@@ -38,6 +38,13 @@ int main(void)
     CHECK(strstr(err.msg, "missing key 'missing'") != NULL);
     gb_yaml_free(&doc);
 
+    p = write_tmp("tiny", "a: 8.8e-317\nb: 1e309\n"); /* a subnormal reads back; overflow does not */
+    CHECK(gb_yaml_load(p, &doc, &err) == GB_OK);
+    gb_ymap_open(&doc, fy_document_root(doc.fyd), "", &m, &err);
+    CHECK(gb_ymap_number(&m, "a", 0, &x, &err) == GB_OK && x == 8.8e-317);
+    CHECK(gb_ymap_number(&m, "b", 0, &x, &err) == GB_EINPUT && strstr(err.msg, ":2:4: b: expected a finite number"));
+    gb_yaml_free(&doc);
+
     p = write_tmp("bad", "a: -3\nb: .nan\nc: \"12\"\nd: 1.5x\n");
     CHECK(gb_yaml_load(p, &doc, &err) == GB_OK);
     gb_ymap_open(&doc, fy_document_root(doc.fyd), "", &m, &err);
