@@ -2,7 +2,7 @@
  * independently of its code.
  *
  * usage: test_packgen GB_PACKGEN WORKDIR CASE
- * cases: overlap, porosity, box, seed, shares, refuse */
+ * cases: overlap, porosity, box, seed, shares, refuse, push */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
 #include <stdio.h>
@@ -332,6 +332,132 @@ static void case_shares(void)
     unload(&p);
 }
 
+/* The text after `key` on the first line of the box file that holds it, or NULL. */
+static char *box_comment(const char *name, const char *key, char *line, size_t len)
+{
+    FILE *f = fopen(path(name, ".box.yaml"), "r");
+    char *hit = NULL;
+    while (f && !hit && fgets(line, (int)len, f))
+        if ((hit = strstr(line, key)) != NULL)
+            hit += strlen(key);
+    if (f)
+        fclose(f);
+    return hit;
+}
+
+/* Brute force O(N^2) and the walls: the largest overlap / smaller radius and / radius against
+ * a wall, and how many exceed tol (up to rounding: 1e-12 of the radius). */
+static void push_bounds(const packing *p, double tol, double *pair, double *wall, size_t *bad)
+{
+    *pair = *wall = 0.0;
+    *bad = 0;
+    for (size_t i = 0; i < p->n; ++i) {
+        const double r = p->r[i];
+        const double o[4] = {p->left - (p->x[i] - r), p->x[i] + r - p->right,
+                             p->bottom - (p->y[i] - r), p->y[i] + r - p->top};
+        for (int k = 0; k < 4; ++k) {
+            if (o[k] / r > *wall)
+                *wall = o[k] / r;
+            *bad += o[k] > (tol + 1e-12) * r;
+        }
+        for (size_t j = i + 1; j < p->n; ++j) {
+            const double dx = p->x[i] - p->x[j], dy = p->y[i] - p->y[j];
+            const double rmin = r < p->r[j] ? r : p->r[j];
+            const double over = r + p->r[j] - sqrt(dx * dx + dy * dy);
+            if (over / rmin > *pair)
+                *pair = over / rmin;
+            *bad += over > (tol + 1e-12) * rmin;
+        }
+    }
+}
+
+/* Counts per size from the CSV: each the floor or the ceiling of its ideal share of N (equal
+ * area per size: N (1/d_k^2) / sum_j 1/d_j^2), and the same as the box file says. */
+static void check_counts(const char *name, const packing *p, int K, const double *diam)
+{
+    long count[16] = {0};
+    double w = 0.0;
+    for (int k = 0; k < K; ++k)
+        w += 1.0 / (diam[k] * diam[k]);
+    for (size_t i = 0; i < p->n; ++i)
+        for (int k = 0; k < K; ++k)
+            count[k] += fabs(2.0 * p->r[i] - diam[k]) <= 1e-12 * diam[k];
+    char line[1024], expect[256] = "", *got = box_comment(name, "(diameter:count): ", line,
+                                                         sizeof line);
+    size_t used = 0;
+    for (int k = 0; k < K; ++k) {
+        const double ideal = (double)p->n / (diam[k] * diam[k]) / w;
+        CHECK(count[k] == (long)floor(ideal) || count[k] == (long)ceil(ideal),
+              "size %g: %ld discs, ideal %.3f", diam[k], count[k], ideal);
+        used += (size_t)snprintf(expect + used, sizeof expect - used, "%s%g:%ld", k ? " " : "",
+                                 diam[k], count[k]);
+    }
+    CHECK(got && !strncmp(got, expect, strlen(expect)), "box file counts '%s', CSV '%s'",
+          got ? got : "(none)", expect);
+}
+
+static void case_push(void)
+{
+    const char *base = "--method push --n 500 --diameters 0.6,0.9,1.2 --porosity 0.18 "
+                       "--max-overlap 0.015";
+    const char *names[] = {"push_a", "push_b", "push_c"};
+    const int seeds[] = {31, 31, 32};
+    char args[2048];
+    for (int k = 0; k < 3; ++k) {
+        clean(names[k]);
+        snprintf(args, sizeof args, "%s --seed %d --out '%s'", base, seeds[k],
+                 path(names[k], ".csv"));
+        CHECK(run(args) == 0, "push, seed %d, failed", seeds[k]);
+    }
+    packing p;
+    CHECK(load("push_a", &p) && p.n == 500, "cannot read the push packing");
+    double pair, wall;
+    size_t bad;
+    push_bounds(&p, 0.015, &pair, &wall, &bad);
+    CHECK(bad == 0, "%zu overlaps beyond 0.015 r_min (largest %.6g, walls %.6g)", bad, pair, wall);
+    CHECK(pair > 0.5 * 0.015, "largest overlap %.6g: at porosity 0.18 discs should touch", pair);
+    char line[1024];
+    const char *rep = box_comment("push_a", "largest overlap / smaller radius ", line, sizeof line);
+    CHECK(rep && fabs(atof(rep) - pair) <= 1e-9, "box file's largest overlap %s, measured %.17g",
+          rep ? rep : "(none)", pair);
+    CHECK(box_comment("push_a", "push-apart sweeps", line, sizeof line), "no sweep count");
+    CHECK(fabs(porosity(&p) - 0.18) <= 1e-9, "porosity %.17g, requested 0.18", porosity(&p));
+    CHECK(fabs((p.top - p.bottom) - (p.right - p.left)) <= 1e-12 * p.right, "box not square");
+    const double d3[] = {0.6, 0.9, 1.2};
+    check_counts("push_a", &p, 3, d3);
+    unload(&p);
+    CHECK(same_file(path("push_a", ".csv"), path("push_b", ".csv")) &&
+              same_file(path("push_a", ".box.yaml"), path("push_b", ".box.yaml")),
+          "push: same seed, different files");
+    CHECK(!same_file(path("push_a", ".csv"), path("push_c", ".csv")),
+          "push: different seeds, identical CSV files");
+
+    /* other options: sizes 1 and 2 by --fractions, a tall box, a larger allowance */
+    clean("push_d");
+    snprintf(args, sizeof args,
+             "--method push --n 400 --diameters 1,2 --fractions 0.7,0.3 --porosity 0.25 "
+             "--aspect 2 --max-overlap 0.05 --seed 3 --out '%s'",
+             path("push_d", ".csv"));
+    CHECK(run(args) == 0, "push with --fractions, --aspect 2, --max-overlap 0.05 failed");
+    CHECK(load("push_d", &p) && p.n == 400, "cannot read the second push packing");
+    push_bounds(&p, 0.05, &pair, &wall, &bad);
+    CHECK(bad == 0, "%zu overlaps beyond 0.05 r_min (largest %.6g, walls %.6g)", bad, pair, wall);
+    CHECK(fabs(porosity(&p) - 0.25) <= 1e-9, "porosity %.17g, requested 0.25", porosity(&p));
+    CHECK(fabs((p.top - p.bottom) / (p.right - p.left) - 2.0) <= 1e-12, "aspect not 2");
+    const double d2[] = {1.0, 2.0}, f2[] = {0.7, 0.3};
+    check_shares(&p, 2, d2, f2);
+    unload(&p);
+
+    /* the cap: too few sweeps is a failure (status 1) that leaves no file */
+    clean("push_capped");
+    snprintf(args, sizeof args, "%s --seed 31 --max-sweeps 3 --out '%s'", base,
+             path("push_capped", ".csv"));
+    CHECK(run(args) == 1, "push capped at 3 sweeps: expected exit status 1");
+    CHECK(!exists(path("push_capped", ".csv")) && !exists(path("push_capped", ".box.yaml")) &&
+              !exists(path("push_capped", ".csv.tmp")),
+          "push capped at 3 sweeps left a file");
+}
+
 static void case_refuse(void)
 {
     const char *bad[] = {
@@ -352,6 +478,13 @@ static void case_refuse(void)
         "--diameters 1 --out '%s'",
         "--n 10 --out '%s'",
         "--n 10 --diameters 1 --out '%s' --porosity",
+        "--method push --n 500 --diameters 0.6,0.9,1.2 --out '%s'", /* push needs --porosity */
+        "--method push --n 500 --diameters 1 --porosity 0.2 --min-gap 0.1 --out '%s'",
+        "--method push --n 500 --diameters 1 --porosity 0.2 --max-overlap 0 --out '%s'",
+        "--method push --n 500 --diameters 1 --porosity 0.2 --max-sweeps 0 --out '%s'",
+        "--n 500 --diameters 1 --max-overlap 0.1 --out '%s'", /* push options with deposit */
+        "--method pull --n 500 --diameters 1 --porosity 0.2 --out '%s'",
+        "--method push --n 1 --diameters 1 --porosity 0.2 --out '%s'", /* box below a diameter */
     };
     for (size_t k = 0; k < sizeof bad / sizeof *bad; ++k) {
         char fmtd[2048], args[2048];
@@ -389,6 +522,8 @@ int main(int argc, char **argv)
         case_shares();
     else if (!strcmp(c, "refuse"))
         case_refuse();
+    else if (!strcmp(c, "push"))
+        case_push();
     else {
         fprintf(stderr, "unknown case %s\n", c);
         return 2;
