@@ -4,10 +4,13 @@
  * (the incompressible part of H from two Poisson ratios, its flux defects per loop, one rank-one
  * update per loop); and the material checks. */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "bem/segment.h"
 #include "check.h"
+#include "core/memory.h"
 
 int main(void)
 {
@@ -78,5 +81,14 @@ int main(void)
     gb_bem_mesh_free(&m);
     free(xy);
     free(g);
+    /* a mesh whose dense matrices cannot fit in this machine is refused before allocation */
+    double have = gb_memory_physical();
+    CHECK(have > 0);
+    int big = (int)(2 * sqrt(have / 128)) + 10;
+    CHECK(gb_bem_mesh_circle(0, 0, 1, big, 0, &m, &err) == GB_OK);
+    CHECK(gb_bem_assemble(&m, &mat, &s, &err) == GB_EINPUT);
+    CHECK(strstr(err.msg, "more than this machine's") != NULL);
+    printf("%d elements: %s\n", big, err.msg);
+    gb_bem_mesh_free(&m);
     TEST_END();
 }
