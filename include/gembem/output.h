@@ -3,14 +3,26 @@
 #ifndef GEMBEM_OUTPUT_H
 #define GEMBEM_OUTPUT_H
 
+#include <stddef.h>
+
 #include "gembem/gem.h"
 
 typedef struct gb_run_output gb_run_output;
 
-/* Creates (or, with overwrite, reuses) the run directory. `command` is recorded in run_info.yaml. */
-gb_status gb_run_output_open(const char *dir, const gb_scene *scene, int overwrite, const char *command,
+/* Creates (or, with overwrite, reuses) the run directory for a simulation not yet run (its scene's
+ * hash, for resuming, is taken from its initial state). `command` is recorded in run_info.yaml. */
+gb_status gb_run_output_open(const char *dir, const gb_sim *sim, int overwrite, const char *command,
                              gb_run_output **out, gb_error *err);
-/* One row of steps.csv (flushed at once) and the snapshots the scene asks for at this step. */
+/* Reopens the run directory of an interrupted run (README.md, "Checkpoints and resume"): its
+ * checkpoint into sim (just created from the same scene: refused, GB_EINPUT, if the scene changed),
+ * the appended files cut back to the checkpoint, run_info.yaml told of the resume. gb_sim_run then
+ * continues after the checkpoint's step. Nothing is changed if the checkpoint cannot be used. */
+gb_status gb_run_output_resume(const char *dir, gb_sim *sim, const char *command, gb_run_output **out,
+                               gb_error *err);
+/* Reads the scene's path from dir's checkpoint, into path. */
+gb_status gb_run_output_resume_scene(const char *dir, char *path, size_t cap, gb_error *err);
+/* One row of steps.csv (flushed at once), the snapshots the scene asks for at this step, and the
+ * checkpoint when due (output.checkpoint_every, output.checkpoint_minutes). */
 gb_status gb_run_output_step(gb_run_output *o, const gb_sim *sim, const gb_step_report *rep, gb_error *err);
 /* Writes the final state (state.yaml, state_grains.csv, state_contacts.csv), records the run's
  * status in run_info.yaml and frees o. */

@@ -137,6 +137,10 @@ typedef struct {
      * 0: never). Default GB_MEASURES_DEFAULT_EVERY below GB_MEASURES_DEFAULT_GRAINS grains, else 0. */
     int measures_every;
     int measures_every_given; /* the scene set it (else the default by size) */
+    /* The run directory's checkpoint.txt (`gembem run --resume`): after every checkpoint_every-th
+     * step (0: none), and after any step that ends checkpoint_minutes after the last one. */
+    int checkpoint_every;
+    double checkpoint_minutes;
 } gb_scene;
 
 #define GB_MEASURES_DEFAULT_GRAINS 5000

@@ -1,5 +1,6 @@
 /* The gembem command: one file per subcommand, each a thin layer over the library.
- * Exit statuses: 0 ok, 2 bad input or usage, 3 not converged, 1 anything else. */
+ * Exit statuses: 0 ok, 2 bad input or usage, 3 not converged, 4 an output could not be written
+ * (disk full), 1 anything else. */
 #ifndef GB_CLI_H
 #define GB_CLI_H
 

@@ -36,17 +36,22 @@ static gb_status on_step(void *user, const gb_sim *sim, const gb_step_report *r,
 static void usage(FILE *to)
 {
     fprintf(to, "usage: gembem run SCENE.yaml -o RUNDIR [--overwrite] [--quiet]\n"
+                "       gembem run --resume RUNDIR [SCENE.yaml] [--quiet]\n"
                 "  Runs the scene's loading program with the reference GEM iteration and writes RUNDIR/steps.csv,\n"
                 "  RUNDIR/state.yaml (a scene can start from it), VTK snapshots and a copy of the scene.\n"
-                "  Exit status: 0 done, 2 bad input, 3 a step did not converge (completed steps are kept).\n");
+                "  RUNDIR/checkpoint.txt follows the run; --resume continues an interrupted run from it, with\n"
+                "  the same scene (by default the path the run started with; refused if it changed).\n"
+                "  Exit status: 0 done, 2 bad input, 3 a step did not converge (completed steps are kept),\n"
+                "  4 an output could not be written (disk full: the last checkpoint is whole).\n");
 }
 
 int gb_cli_run(int argc, char **argv)
 {
-    const char *scene_path = NULL, *dir = NULL;
+    const char *scene_path = NULL, *dir = NULL, *resume = NULL;
     int overwrite = 0, quiet = 0;
     for (int k = 1; k < argc; k++) {
         if (!strcmp(argv[k], "-o") && k + 1 < argc) dir = argv[++k];
+        else if (!strcmp(argv[k], "--resume") && k + 1 < argc) resume = argv[++k];
         else if (!strcmp(argv[k], "--overwrite")) overwrite = 1;
         else if (!strcmp(argv[k], "--quiet")) quiet = 1;
         else if (!strcmp(argv[k], "--help") || !strcmp(argv[k], "-h")) return usage(stdout), 0;
@@ -57,7 +62,8 @@ int gb_cli_run(int argc, char **argv)
             return 2;
         }
     }
-    if (!scene_path || !dir) {
+    if (resume ? dir || overwrite : !scene_path || !dir) {
+        if (resume) fprintf(stderr, "gembem run: --resume continues in its own directory: no -o, no --overwrite\n");
         usage(stderr);
         return 2;
     }
@@ -68,6 +74,12 @@ int gb_cli_run(int argc, char **argv)
     }
 
     gb_error err = {0};
+    char resume_scene[1024];
+    if (resume && !scene_path) {
+        if (gb_run_output_resume_scene(resume, resume_scene, sizeof resume_scene, &err)) return gb_cli_report(&err);
+        scene_path = resume_scene;
+    }
+    if (resume) dir = resume;
     gb_scene scene;
     if (gb_scene_load(scene_path, &scene, &err)) return gb_cli_report(&err);
     gb_sim *sim = NULL;
@@ -77,7 +89,8 @@ int gb_cli_run(int argc, char **argv)
     }
     run_ctx ctx = {NULL, isatty(2), quiet, {0, 0}};
     clock_gettime(CLOCK_MONOTONIC, &ctx.t0);
-    if (gb_run_output_open(dir, &scene, overwrite, command, &ctx.out, &err)) {
+    if (resume ? gb_run_output_resume(dir, sim, command, &ctx.out, &err)
+               : gb_run_output_open(dir, sim, overwrite, command, &ctx.out, &err)) {
         gb_sim_free(sim);
         gb_scene_free(&scene);
         return gb_cli_report(&err);

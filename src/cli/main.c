@@ -20,6 +20,7 @@ int gb_cli_report(const gb_error *err)
     case GB_OK: return 0;
     case GB_EINPUT: return 2;
     case GB_ENOCONV: return 3;
+    case GB_EIO: return 4;
     default: return 1;
     }
 }

@@ -433,20 +433,29 @@ gb_status gb_sim_run(gb_sim *sim, gb_step_fn on_step, void *user, gb_error *err)
     rep.stage = -1;
     rep.total_steps = gb_scene_total_steps(sc);
     fill_report(sim, &rep);
-    sim->energy0 = gb_sim_elastic_energy(sim);
+    /* A resumed run (src/io/checkpoint.c) continues after the checkpoint's step: its outputs,
+     * energy0 and the stage's start are those of the run it continues. */
+    gb_sim_position from = sim->pos;
+    if (!from.resume) {
+        memset(&sim->pos, 0, sizeof sim->pos);
+        sim->energy0 = gb_sim_elastic_energy(sim);
+    }
     save_state(sim, err, &st);
-    if (!st && on_step) st = on_step(user, sim, &rep, err);
-    int step = 0;
-    for (int s = 0; s < sc->n_stages && !st; s++) {
+    if (!st && on_step && !from.resume) st = on_step(user, sim, &rep, err);
+    int step = sim->pos.step;
+    for (int s = from.resume ? from.stage : 0; s < sc->n_stages && !st; s++) {
         const gb_stage *sg = &sc->stages[s];
-        if (sg->reset_strain) {
-            sim->ref_width = sim->box.right - sim->box.left;
-            sim->ref_height = sim->box.top - sim->box.bottom;
+        int first = from.resume && s == from.stage ? from.stage_step + 1 : 1;
+        double start[2] = {from.start[0], from.start[1]};
+        if (first == 1) {
+            if (sg->reset_strain) {
+                sim->ref_width = sim->box.right - sim->box.left;
+                sim->ref_height = sim->box.top - sim->box.bottom;
+            }
+            gb_gem_forces(sim);
+            gb_gem_stress(sim, &start[0], &start[1]);
         }
-        double start[2];
-        gb_gem_forces(sim);
-        gb_gem_stress(sim, &start[0], &start[1]);
-        for (int k = 1; k <= sg->steps && !st; k++) {
+        for (int k = first; k <= sg->steps && !st; k++) {
             double t0 = gb_clock_seconds(), max_force = 0, residual = 0, finest = 1;
             long iters = 0;
             int substeps = 0;
@@ -479,6 +488,8 @@ gb_status gb_sim_run(gb_sim *sim, gb_step_fn on_step, void *user, gb_error *err)
             fill_report(sim, &rep);
             add_step_work(sim);
             rep.seconds = gb_clock_seconds() - t0;
+            gb_sim_position at = {s, k, step, {start[0], start[1]}, 0};
+            sim->pos = at;
             /* The output sees the step's start in the saved state; then it becomes the start of the next. */
             if (on_step) st = on_step(user, sim, &rep, err);
             if (!st) save_state(sim, err, &st);

@@ -38,6 +38,15 @@ typedef struct {
     double host_remote[3];
 } gb_sim_state;
 
+/* Where gb_sim_run stands: the last completed load step (a checkpoint's place in the program). */
+typedef struct {
+    int stage;        /* its stage (0 with step 0, the initial state) */
+    int stage_step;   /* its number in the stage, 1-based (0: none of the stage's steps yet) */
+    int step;         /* overall, 0 = the initial state */
+    double start[2];  /* the boundary stresses at the stage's start, where a stress ramp begins */
+    int resume;       /* set by a checkpoint: gb_sim_run continues after this step */
+} gb_sim_position;
+
 struct gb_sim {
     const gb_scene *scene;
     int n;
@@ -88,6 +97,7 @@ struct gb_sim {
     double dissipation;       /* (K 28) summed over contacts and iterations */
     double dissipation_step;  /* of the current load step */
     double energy0;           /* elastic energy of the initial state */
+    gb_sim_position pos;
 };
 
 gb_status gb_sim_state_save(const gb_sim *sim, gb_sim_state *st, gb_error *err);

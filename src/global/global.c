@@ -53,6 +53,8 @@ struct gb_global {
     unsigned char *unloading; /* per pair: a sliding contact that a solution unloaded: kt in K until one
                                  loads it again (reset with the pattern) */
     int kt_cap;
+    unsigned char *resumed;   /* unloading flags from a checkpoint, for the pattern of pairs.rebuilds resumed_of */
+    long resumed_of;
     cholmod_common cc;
     cholmod_sparse *A;
     cholmod_factor *L;
@@ -121,7 +123,7 @@ void gb_global_free(gb_global *gl)
     free(gl->dof0), free(gl->adj_start), free(gl->adj), free(gl->adj_off), free(gl->collen), free(gl->colstart);
     free(gl->pos_ij), free(gl->pos_ji), free(gl->wall_in_grain), free(gl->grain_in_wall), free(gl->touch);
     free(gl->Ap), free(gl->Ai), free(gl->Ax), free(gl->rhs), free(gl->x), free(gl->held);
-    free(gl->S), free(gl->Sp), free(gl->kt), free(gl->stick), free(gl->unloading);
+    free(gl->S), free(gl->Sp), free(gl->kt), free(gl->stick), free(gl->unloading), free(gl->resumed);
     free(gl);
 }
 
@@ -623,6 +625,32 @@ static gb_status solve_system(gb_global *gl, const gb_sim *sim, const gb_wall_co
     return GB_OK;
 }
 
+/* A resumed run: the checkpoint's flags replace the zeros of the new pattern if the pair list is the
+ * one they were saved for (no rebuild since), as if the pattern had never been lost. */
+static void resume_unloading(gb_global *gl, const gb_pair_list *P)
+{
+    if (gl->resumed_of == P->rebuilds && P->n) memcpy(gl->unloading, gl->resumed, (size_t)P->n);
+    free(gl->resumed);
+    gl->resumed = NULL;
+}
+
+const unsigned char *gb_global_unloading(const gb_global *gl, const gb_pair_list *P)
+{
+    return gl->pattern_of == P->rebuilds && P->n ? gl->unloading : NULL;
+}
+
+gb_status gb_global_resume(gb_global *gl, const gb_pair_list *P, const unsigned char *unloading, gb_error *err)
+{
+    free(gl->resumed);
+    gl->resumed = NULL;
+    gl->pattern_of = -1;
+    if (!unloading || !P->n) return GB_OK;
+    if (!(gl->resumed = malloc((size_t)P->n))) return gb_fail(err, GB_ENOMEM, "out of memory");
+    memcpy(gl->resumed, unloading, (size_t)P->n);
+    gl->resumed_of = P->rebuilds;
+    return GB_OK;
+}
+
 gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const gb_wall_control *wc, double mu, gb_error *err)
 {
     gb_status st;
@@ -636,6 +664,7 @@ gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const gb_wall_control *wc,
     int n = gl->n, np = gl->np;
     if ((st = pair_buffers(gl, &sim->pairs, err))) return st;
     if (new_pattern && sim->pairs.n) memset(gl->unloading, 0, (size_t)sim->pairs.n);
+    if (gl->resumed) resume_unloading(gl, &sim->pairs);
     /* A grain with a single contact in the system keeps that contact's kt (see mark_system). */
     for (int k = 0; k < sim->pairs.n; k++) {
         const gb_pair *p = &sim->pairs.p[k];

@@ -5,6 +5,7 @@
 #ifndef GB_GLOBAL_H
 #define GB_GLOBAL_H
 
+#include "contact/pairs.h"
 #include "gembem/status.h"
 
 struct gb_sim;
@@ -36,6 +37,14 @@ void gb_global_free(gb_global *gl);
 struct gb_wall_control_s;
 gb_status gb_global_moves(gb_global *gl, struct gb_sim *sim, const struct gb_wall_control_s *wc, double mu,
                           gb_error *err);
+
+/* What the solver carries from one load step to the next (for checkpoints): the sliding contacts
+ * that a solution unloaded, one flag per pair of P, while the sparsity pattern is P's; NULL when the
+ * next move builds a new pattern (and starts with no flag set). */
+const unsigned char *gb_global_unloading(const gb_global *gl, const gb_pair_list *P);
+/* A resumed run: the flags (or NULL) that gb_global_unloading gave for P when the checkpoint was
+ * written. The pattern and its analysis are built again at the next move. */
+gb_status gb_global_resume(gb_global *gl, const gb_pair_list *P, const unsigned char *unloading, gb_error *err);
 
 const gb_global_stats *gb_global_statistics(const gb_global *gl);
 

@@ -1,7 +1,27 @@
+#define _POSIX_C_SOURCE 200809L
 #include "io/file_util.h"
 
 #include <errno.h>
+#include <fcntl.h>
+#include <signal.h>
+#include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
+
+void gb_test_kill_point(FILE *torn)
+{
+    static long at = -1, count = 0;
+    if (at < 0) {
+        const char *s = getenv("GB_TEST_KILL_AT");
+        at = s ? strtol(s, NULL, 10) : 0;
+    }
+    if (at <= 0 || ++count != at) return;
+    if (torn) {
+        fputs("torn wri", torn);
+        fflush(torn);
+    }
+    raise(SIGKILL);
+}
 
 gb_status gb_atomic_open(gb_atomic_file *a, const char *path, gb_error *err)
 {
@@ -14,6 +34,7 @@ gb_status gb_atomic_open(gb_atomic_file *a, const char *path, gb_error *err)
 
 gb_status gb_atomic_commit(gb_atomic_file *a, gb_error *err)
 {
+    gb_test_kill_point(a->f);
     int bad = ferror(a->f);
     bad |= fclose(a->f) != 0;
     a->f = NULL;
@@ -29,4 +50,26 @@ void gb_atomic_abort(gb_atomic_file *a)
     if (a->f) fclose(a->f);
     a->f = NULL;
     remove(a->tmp);
+}
+
+gb_status gb_atomic_commit_durable(gb_atomic_file *a, gb_error *err)
+{
+    if (fflush(a->f) != 0 || fsync(fileno(a->f)) != 0) {
+        int e = errno;
+        gb_atomic_abort(a);
+        return gb_fail(err, GB_EIO, "%s: write failed: %s", a->path, strerror(e));
+    }
+    gb_status st = gb_atomic_commit(a, err);
+    if (st) return st;
+    /* the rename itself: sync the directory */
+    char dir[sizeof a->path];
+    snprintf(dir, sizeof dir, "%s", a->path);
+    char *slash = strrchr(dir, '/');
+    if (slash) *slash = '\0';
+    int fd = open(slash ? dir : ".", O_RDONLY);
+    if (fd >= 0) {
+        fsync(fd);
+        close(fd);
+    }
+    return GB_OK;
 }

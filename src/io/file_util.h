@@ -14,6 +14,14 @@ typedef struct {
 gb_status gb_atomic_open(gb_atomic_file *a, const char *path, gb_error *err);
 /* Closes and renames; on a write error removes the temporary file. */
 gb_status gb_atomic_commit(gb_atomic_file *a, gb_error *err);
+/* The same, the data synced to the disk first and the directory after the rename, so that the file
+ * survives a power cut whole (checkpoints). */
+gb_status gb_atomic_commit_durable(gb_atomic_file *a, gb_error *err);
 void gb_atomic_abort(gb_atomic_file *a);
+
+/* For tests of interrupted runs (tests/cli/run_resume.sh): with GB_TEST_KILL_AT=N in the
+ * environment, the N-th call in the process writes a few bytes to `torn` (may be NULL), as a write
+ * cut short would leave, and raises SIGKILL. Called before each appended row and each atomic rename. */
+void gb_test_kill_point(FILE *torn);
 
 #endif

@@ -1,5 +1,5 @@
 /* The run directory of `gembem run`. */
-#define _POSIX_C_SOURCE 200809L
+#define _XOPEN_SOURCE 700
 #include <dirent.h>
 #include <errno.h>
 #include <stdio.h>
@@ -8,10 +8,12 @@
 #include <sys/stat.h>
 #include <time.h>
 
+#include "core/clock.h"
 #include "gem/sim.h"
 #include "gembem/measure.h"
 #include "hybrid/host_output.h"
 #include "gembem/output.h"
+#include "io/checkpoint.h"
 #include "io/file_util.h"
 #include "measure/step_measures.h"
 
@@ -28,7 +30,23 @@ struct gb_run_output {
     char started[64];
     int *snap_steps, n_snaps; /* steps that were written, for the .pvd collection */
     int snap_cap;
+    gb_checkpoint_meta ck;    /* the scene's hash and path; the appended files' marks at each checkpoint */
+    const char *appended[GB_CHECKPOINT_MAX_FILES];
+    int n_appended;
+    double last_checkpoint;   /* gb_clock_seconds() */
+    int interrupted;          /* earlier runs of the directory that ended without a status */
+    char resumed[4096];       /* run_info.yaml's "resumed:" list items */
 };
+
+/* The files a run appends to (or rewrites in place at their end), cut back to their checkpoint's
+ * marks on a resume; the others are written whole at each step (atomically) and rewritten alike. */
+static void list_appended(gb_run_output *o)
+{
+    static const char *const names[] = {"steps.csv", "micromechanics.csv", "localisation.csv",
+                                        "fields/triangles.pvd", "host_steps.csv"};
+    o->n_appended = o->scene->host.present ? 5 : 4;
+    for (int k = 0; k < o->n_appended; k++) o->appended[k] = names[k];
+}
 
 static int dir_is_empty(const char *path)
 {
@@ -91,6 +109,9 @@ static gb_status write_info(const gb_run_output *o, const char *status, const ch
             : sc->measures_every ? "; the default below " GB_STR(GB_MEASURES_DEFAULT_GRAINS) " grains"
                                  : "; the default from " GB_STR(GB_MEASURES_DEFAULT_GRAINS) " grains up");
     fprintf(a.f, "status: %s\n", status);
+    if (o->resumed[0])
+        fprintf(a.f, "interrupted: %d   # runs of this directory killed before they ended\nresumed:\n%s",
+                o->interrupted, o->resumed);
     if (message) {
         fprintf(a.f, "message: \"");
         for (const char *c = message; *c; c++) fputc(*c == '"' ? '\'' : *c, a.f);
@@ -99,10 +120,11 @@ static gb_status write_info(const gb_run_output *o, const char *status, const ch
     return gb_atomic_commit(&a, err);
 }
 
-gb_status gb_run_output_open(const char *dir, const gb_scene *scene, int overwrite, const char *command,
+gb_status gb_run_output_open(const char *dir, const gb_sim *sim, int overwrite, const char *command,
                              gb_run_output **out, gb_error *err)
 {
     *out = NULL;
+    const gb_scene *scene = gb_sim_scene(sim);
     struct stat sb;
     if (stat(dir, &sb) == 0) {
         if (!S_ISDIR(sb.st_mode)) return gb_fail(err, GB_EINPUT, "%s exists and is not a directory", dir);
@@ -110,6 +132,11 @@ gb_status gb_run_output_open(const char *dir, const gb_scene *scene, int overwri
             return gb_fail(err, GB_EINPUT, "run directory %s exists and is not empty; choose another or pass "
                                            "--overwrite", dir);
     }
+    gb_checkpoint_meta ck;
+    memset(&ck, 0, sizeof ck);
+    if (!realpath(scene->path, ck.scene_path)) return gb_fail(err, GB_EINPUT, "%s: %s", scene->path, strerror(errno));
+    gb_status st0 = gb_checkpoint_scene_hash(sim, &ck.scene_hash, err);
+    if (st0) return st0;
     gb_status st = make_dirs(dir, err);
     if (st) return st;
     gb_run_output *o = calloc(1, sizeof *o);
@@ -117,9 +144,17 @@ gb_status gb_run_output_open(const char *dir, const gb_scene *scene, int overwri
     snprintf(o->dir, sizeof o->dir, "%s", dir);
     snprintf(o->command, sizeof o->command, "%s", command);
     o->scene = scene;
+    o->ck = ck;
+    o->last_checkpoint = gb_clock_seconds();
+    list_appended(o);
     time_t now = time(NULL);
     strftime(o->started, sizeof o->started, "%Y-%m-%dT%H:%M:%SZ", gmtime(&now));
     char path[1024];
+    snprintf(path, sizeof path, "%s/%s", dir, GB_CHECKPOINT_NAME); /* an older run's, with --overwrite */
+    if (remove(path) != 0 && errno != ENOENT) {
+        free(o);
+        return gb_fail(err, GB_EIO, "%s: %s", path, strerror(errno));
+    }
     snprintf(path, sizeof path, "%s/scene.yaml", dir);
     if ((st = copy_file(scene->path, path, err)) || (st = write_info(o, "running", NULL, err))) {
         free(o);
@@ -159,12 +194,162 @@ gb_status gb_run_output_open(const char *dir, const gb_scene *scene, int overwri
     return GB_OK;
 }
 
+static int snapshot_due(const gb_scene *s, int step);
+static gb_status add_snapshot(gb_run_output *o, int step, gb_error *err);
+
+/* The value of "key: " on its line of run_info.yaml's text, quotes dropped, or "". */
+static void info_value(const char *text, const char *key, char *out, size_t cap)
+{
+    out[0] = '\0';
+    size_t n = strlen(key);
+    for (const char *l = text; l && *l; l = strchr(l, '\n') ? strchr(l, '\n') + 1 : NULL) {
+        if (strncmp(l, key, n) || l[n] != ':' || l[n + 1] != ' ') continue;
+        const char *v = l + n + 2, *e = strchr(v, '\n');
+        size_t len = e ? (size_t)(e - v) : strlen(v);
+        if (len >= 2 && v[0] == '"' && v[len - 1] == '"') v++, len -= 2;
+        if (len >= cap) len = cap - 1;
+        memcpy(out, v, len), out[len] = '\0';
+        return;
+    }
+}
+
+/* The temporary files of atomic writes that an interruption left in dir/sub. */
+static void remove_tmp(const char *dir, const char *sub)
+{
+    char path[1200];
+    snprintf(path, sizeof path, "%s%s%s", dir, *sub ? "/" : "", sub);
+    DIR *d = opendir(path);
+    if (!d) return;
+    struct dirent *e;
+    while ((e = readdir(d))) {
+        size_t n = strlen(e->d_name);
+        if (n < 4 || strcmp(e->d_name + n - 4, ".tmp")) continue;
+        char f[1500];
+        snprintf(f, sizeof f, "%s/%s", path, e->d_name);
+        remove(f);
+    }
+    closedir(d);
+}
+
+static gb_status open_append(gb_run_output *o, const char *name, FILE **f, gb_error *err)
+{
+    char path[1200];
+    snprintf(path, sizeof path, "%s/%s", o->dir, name);
+    if (!(*f = fopen(path, "a"))) return gb_fail(err, GB_EIO, "%s: %s", path, strerror(errno));
+    return GB_OK;
+}
+
+/* A directory with a run to resume: its run_info.yaml's text (may be empty) and status. */
+static gb_status resumable(const char *dir, char *info, size_t cap, char *status, size_t status_cap, gb_error *err)
+{
+    struct stat sb;
+    if (stat(dir, &sb) != 0 || !S_ISDIR(sb.st_mode)) return gb_fail(err, GB_EINPUT, "%s: no such run directory", dir);
+    char path[1200];
+    snprintf(path, sizeof path, "%s/run_info.yaml", dir);
+    FILE *f = fopen(path, "r");
+    info[0] = '\0';
+    if (f) {
+        info[fread(info, 1, cap - 1, f)] = '\0';
+        fclose(f);
+    }
+    info_value(info, "status", status, status_cap);
+    if (!strcmp(status, "completed"))
+        return gb_fail(err, GB_EINPUT, "%s: the run completed (run_info.yaml); nothing to resume", dir);
+    snprintf(path, sizeof path, "%s/%s", dir, GB_CHECKPOINT_NAME);
+    if (stat(path, &sb) != 0)
+        return gb_fail(err, GB_EINPUT, "%s: no %s to resume from: not a run directory, or its run stopped before its "
+                       "first checkpoint (or output.checkpoint_every is 0); run the scene again", dir,
+                       GB_CHECKPOINT_NAME);
+    return GB_OK;
+}
+
+gb_status gb_run_output_resume(const char *dir, gb_sim *sim, const char *command, gb_run_output **out,
+                               gb_error *err)
+{
+    *out = NULL;
+    struct stat sb;
+    char path[1200], info[16384], status[64], value[1024];
+    gb_status st = resumable(dir, info, sizeof info, status, sizeof status, err);
+    if (st) return st;
+    uint64_t hash;
+    gb_checkpoint_meta ck;
+    memset(&ck, 0, sizeof ck);
+    st = gb_checkpoint_scene_hash(sim, &hash, err);
+    if (!st) st = gb_checkpoint_read(dir, sim, hash, &ck, err);
+    for (int k = 0; k < ck.n_files && !st; k++) { /* all checked before any is cut */
+        snprintf(path, sizeof path, "%s/%s", dir, ck.file[k].name);
+        if (ck.file[k].length >= 0 && (stat(path, &sb) != 0 || (long long)sb.st_size < ck.file[k].length))
+            st = gb_fail(err, GB_EINPUT, "%s: missing or shorter than its checkpoint records (%lld bytes); the run "
+                         "directory was changed", path, ck.file[k].length);
+    }
+    for (int k = 0; k < ck.n_files && !st; k++) st = gb_checkpoint_file_rewind(dir, &ck.file[k], err);
+    if (st) return st;
+    static const char *const subs[] = {"", "snapshots", "contacts", "fields"};
+    for (int k = 0; k < 4; k++) remove_tmp(dir, subs[k]);
+    gb_run_output *o = calloc(1, sizeof *o);
+    if (!o) return gb_fail(err, GB_ENOMEM, "out of memory");
+    snprintf(o->dir, sizeof o->dir, "%s", dir);
+    o->scene = gb_sim_scene(sim);
+    o->ck = ck;
+    o->last_checkpoint = gb_clock_seconds();
+    list_appended(o);
+    info_value(info, "command", value, sizeof value);
+    snprintf(o->command, sizeof o->command, "%s", value[0] ? value : "?");
+    info_value(info, "started", o->started, sizeof o->started);
+    info_value(info, "interrupted", value, sizeof value);
+    o->interrupted = atoi(value) + !strcmp(status, "running");
+    const char *items = strstr(info, "\nresumed:\n");
+    size_t used = 0;
+    for (const char *l = items ? items + 10 : NULL; l && !strncmp(l, "  - ", 4); l = strchr(l, '\n') + 1) {
+        size_t n = strchr(l, '\n') ? (size_t)(strchr(l, '\n') - l + 1) : 0;
+        if (!n || used + n >= sizeof o->resumed / 2) break;
+        memcpy(o->resumed + used, l, n), used += n;
+    }
+    time_t now = time(NULL);
+    char at[64];
+    strftime(at, sizeof at, "%Y-%m-%dT%H:%M:%SZ", gmtime(&now));
+    const char *threads = getenv("OPENBLAS_NUM_THREADS");
+    snprintf(o->resumed + used, sizeof o->resumed - used,
+             "  - {at: %s, after_step: %d, previous_status: %s, openblas_threads: \"%s\", command: \"%s\"}\n", at,
+             sim->pos.step, !strcmp(status, "running") ? "interrupted" : status[0] ? status : "unknown",
+             threads ? threads : "default", command);
+    for (int q = 0; q <= sim->pos.step && !st; q++)
+        if (snapshot_due(o->scene, q)) st = add_snapshot(o, q, err);
+    if (!st) st = open_append(o, "steps.csv", &o->steps, err);
+    if (!st) st = open_append(o, "micromechanics.csv", &o->micro, err);
+    if (!st && o->scene->host.present) st = open_append(o, "host_steps.csv", &o->host, err);
+    if (!st) st = write_info(o, "running", NULL, err);
+    if (st) {
+        FILE *files[3] = {o->steps, o->micro, o->host};
+        for (int k = 0; k < 3; k++)
+            if (files[k]) fclose(files[k]);
+        free(o->snap_steps);
+        free(o);
+        return st;
+    }
+    *out = o;
+    return GB_OK;
+}
+
 static int snapshot_due(const gb_scene *s, int step)
 {
     if (s->snapshot_every > 0 && step % s->snapshot_every == 0) return 1;
     for (int k = 0; k < s->n_snapshot_steps; k++)
         if (s->snapshot_steps[k] == step) return 1;
     return 0;
+}
+
+static gb_status add_snapshot(gb_run_output *o, int step, gb_error *err)
+{
+    if (o->n_snaps == o->snap_cap) {
+        int cap = o->snap_cap ? 2 * o->snap_cap : 16;
+        int *p = realloc(o->snap_steps, (size_t)cap * sizeof *p);
+        if (!p) return gb_fail(err, GB_ENOMEM, "out of memory");
+        o->snap_steps = p;
+        o->snap_cap = cap;
+    }
+    o->snap_steps[o->n_snaps++] = step;
+    return GB_OK;
 }
 
 static gb_status write_pvd(const gb_run_output *o, const char *what, gb_error *err)
@@ -196,14 +381,29 @@ static gb_status write_rose_csv(const char *path, const gb_sim *sim, gb_error *e
     return gb_atomic_commit(&a, err);
 }
 
+static gb_status write_snapshot(gb_run_output *o, const gb_sim *sim, int step, gb_error *err);
+
+/* checkpoint.txt for the step just written: the appended files' marks, then the state. */
+static gb_status checkpoint(gb_run_output *o, const gb_sim *sim, gb_error *err)
+{
+    gb_status st = GB_OK;
+    o->ck.n_files = o->n_appended;
+    for (int k = 0; k < o->n_appended && !st; k++) st = gb_checkpoint_file_mark(o->dir, o->appended[k], &o->ck.file[k], err);
+    if (!st) st = gb_checkpoint_write(o->dir, sim, &o->ck, err);
+    o->last_checkpoint = gb_clock_seconds();
+    return st;
+}
+
 gb_status gb_run_output_step(gb_run_output *o, const gb_sim *sim, const gb_step_report *r, gb_error *err)
 {
+    gb_test_kill_point(o->steps);
     fprintf(o->steps, "%d,%d,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%ld,%.6e,%.6e,%d,%.17g,%.17g,%d\n", r->step,
             r->stage + 1, r->e1 - r->e2, r->e1, r->e2, r->ev, r->s1, r->s2, r->stress_ratio, r->iterations,
             r->max_fixing_force, r->seconds, r->n_contacts, r->width, r->height, r->substeps);
     if (fflush(o->steps) != 0 || ferror(o->steps)) return gb_fail(err, GB_EIO, "%s/steps.csv: write failed", o->dir);
     gb_micro m;
     gb_micro_measure(sim, &m);
+    gb_test_kill_point(o->micro);
     fprintf(o->micro, "%d,%d,%d,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.6f,%.10e,%.10e,%.10e,%.10e,%.10e,%.6f,%.17g,"
                       "%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.6f,%.10e,%.10e,%.10e\n",
             r->step, m.n_contacts, m.n_wall_contacts, m.coordination, m.fabric.xx, m.fabric.yy, m.fabric.xy,
@@ -216,6 +416,7 @@ gb_status gb_run_output_step(gb_run_output *o, const gb_sim *sim, const gb_step_
     gb_status st;
     const gb_scene *sc = o->scene;
     char path[1024];
+    if (o->host) gb_test_kill_point(o->host);
     if (o->host && (st = gb_host_write_step(o->host, r->step, sim, err))) return st;
     /* Strain field, D2min, localisation, sliding contacts, host around the cavity (src/measure). */
     int fields = sc->measures_every > 0 && r->step % sc->measures_every == 0;
@@ -230,21 +431,23 @@ gb_status gb_run_output_step(gb_run_output *o, const gb_sim *sim, const gb_step_
         snprintf(path, sizeof path, "%s/contacts/rose_%06d.csv", o->dir, r->step);
         if ((st = write_rose_csv(path, sim, err))) return st;
     }
-    if (!snapshot_due(sc, r->step)) return GB_OK;
+    if (snapshot_due(sc, r->step) && (st = write_snapshot(o, sim, r->step, err))) return st;
+    int every = sc->checkpoint_every;
+    if (every > 0 && (r->step % every == 0 || gb_clock_seconds() - o->last_checkpoint >= 60 * sc->checkpoint_minutes))
+        return checkpoint(o, sim, err);
+    return GB_OK;
+}
+
+static gb_status write_snapshot(gb_run_output *o, const gb_sim *sim, int step, gb_error *err)
+{
+    char path[1024];
+    gb_status st;
     snprintf(path, sizeof path, "%s/snapshots", o->dir);
     if ((st = make_dirs(path, err))) return st;
-    snprintf(path, sizeof path, "%s/snapshots/grains_%06d.vtp", o->dir, r->step);
+    snprintf(path, sizeof path, "%s/snapshots/grains_%06d.vtp", o->dir, step);
     if ((st = gb_vtk_write_grains(path, sim, err))) return st;
-    snprintf(path, sizeof path, "%s/snapshots/contacts_%06d.vtp", o->dir, r->step);
-    if ((st = gb_vtk_write_contacts(path, sim, err))) return st;
-    if (o->n_snaps == o->snap_cap) {
-        int cap = o->snap_cap ? 2 * o->snap_cap : 16;
-        int *p = realloc(o->snap_steps, (size_t)cap * sizeof *p);
-        if (!p) return gb_fail(err, GB_ENOMEM, "out of memory");
-        o->snap_steps = p;
-        o->snap_cap = cap;
-    }
-    o->snap_steps[o->n_snaps++] = r->step;
+    snprintf(path, sizeof path, "%s/snapshots/contacts_%06d.vtp", o->dir, step);
+    if ((st = gb_vtk_write_contacts(path, sim, err)) || (st = add_snapshot(o, step, err))) return st;
     if ((st = write_pvd(o, "grains", err))) return st;
     return write_pvd(o, "contacts", err);
 }
@@ -261,7 +464,21 @@ gb_status gb_run_output_close(gb_run_output *o, const gb_sim *sim, gb_status run
     if (!st && sim) st = gb_state_write(o->dir, sim, err);
     if (!st && sim && sim->host) st = gb_host_write_outputs(o->dir, sim, err);
     if (!st) st = write_info(o, run_status == GB_OK ? "completed" : gb_status_name(run_status), message, err);
+    /* A completed run has nothing to resume; any other keeps its last checkpoint. */
+    char path[1024];
+    snprintf(path, sizeof path, "%s/%s", o->dir, GB_CHECKPOINT_NAME);
+    if (!st && run_status == GB_OK) remove(path);
     free(o->snap_steps);
     free(o);
+    return st;
+}
+
+gb_status gb_run_output_resume_scene(const char *dir, char *path, size_t cap, gb_error *err)
+{
+    gb_checkpoint_meta ck;
+    char info[16384], status[64];
+    gb_status st = resumable(dir, info, sizeof info, status, sizeof status, err);
+    if (!st) st = gb_checkpoint_read_meta(dir, &ck, err);
+    if (!st) snprintf(path, cap, "%s", ck.scene_path);
     return st;
 }

@@ -143,7 +143,7 @@ static gb_status add_to_pvd(const char *dir, int step, gb_error *err)
     if (!f) return gb_fail(err, GB_EIO, "%s: %s", path, strerror(errno));
     fseek(f, 0, SEEK_END);
     long end = ftell(f), tail = (long)strlen(close_tags);
-    if (end >= tail) fseek(f, -tail, SEEK_END);
+    if (end >= tail) fseek(f, -tail, SEEK_END), gb_test_kill_point(f);
     else fprintf(f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n");
     fprintf(f, "<DataSet timestep=\"%d\" file=\"triangles_%06d.vtu\"/>\n%s", step, step, close_tags);
     if (ferror(f) | fclose(f)) return gb_fail(err, GB_EIO, "%s: write failed", path);
@@ -196,6 +196,7 @@ static gb_status write_row(const char *dir, int step, const zone *z, int n_slidi
     snprintf(path, sizeof path, "%s/localisation.csv", dir);
     FILE *f = fopen(path, step == 0 ? "w" : "a");
     if (!f) return gb_fail(err, GB_EIO, "%s: %s", path, strerror(errno));
+    gb_test_kill_point(f);
     if (step == 0)
         fprintf(f, "step,grains,triangles,triangles_delaunay,area,mean_gamma,max_gamma,localisation_index,"
                    "zone_exx,zone_eyy,zone_exy,zone_ev,mean_d2min,max_d2min,d2min_range,sliding_contacts%s\n",

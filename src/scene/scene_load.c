@@ -291,6 +291,14 @@ static gb_status read_output(gb_ymap *top, gb_scene *s, gb_error *err)
         return st;
     s->measures_every = (int)measures_every;
     s->measures_every_given = me != NULL;
+    /* checkpoints (src/io/checkpoint.c): after every step unless the scene says otherwise */
+    long ck_every = 1;
+    double ck_minutes = 10;
+    if ((st = gb_ymap_int(&m, "checkpoint_every", 0, 0, 100000000L, &ck_every, err)) ||
+        (st = gb_ymap_number(&m, "checkpoint_minutes", GB_Y_POSITIVE, &ck_minutes, err)))
+        return st;
+    s->checkpoint_every = (int)ck_every;
+    s->checkpoint_minutes = ck_minutes;
     if (list) {
         int total = gb_scene_total_steps(s);
         if (fy_node_get_type(list) != FYNT_SEQUENCE)

@@ -238,7 +238,7 @@ static int run(const char *scene, const char *dir, gb_step_fn fn)
     gb_sim *sim = NULL;
     run_ctx c = {NULL, dir, 0};
     if (gb_scene_load(scene, &sc, &err) || gb_sim_create(&sc, &sim, &err) ||
-        gb_run_output_open(dir, &sc, 1, "test_measures_output", &c.out, &err)) {
+        gb_run_output_open(dir, sim, 1, "test_measures_output", &c.out, &err)) {
         fprintf(stderr, "%s\n", err.msg);
         return -1;
     }

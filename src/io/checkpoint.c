@@ -1,0 +1,486 @@
+/* checkpoint.txt: a text file of hex floats (%a reads back bit for bit), in a fixed order, ending
+ * with "end" and the FNV-1a 64 of everything before it, so that a damaged file is refused. */
+#define _POSIX_C_SOURCE 200809L
+#include "io/checkpoint.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <inttypes.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "core/number.h"
+#include "gem/sim.h"
+#include "io/file_util.h"
+
+enum { FORMAT = 1 };
+
+static uint64_t fnv(uint64_t h, const void *data, size_t n)
+{
+    const unsigned char *b = data;
+    for (size_t k = 0; k < n; k++) h = (h ^ b[k]) * 0x100000001b3ULL;
+    return h;
+}
+#define FNV0 0xcbf29ce484222325ULL
+
+gb_status gb_checkpoint_scene_hash(const gb_sim *sim, uint64_t *hash, gb_error *err)
+{
+    const gb_scene *sc = sim->scene;
+    FILE *f = fopen(sc->path, "rb");
+    if (!f) return gb_fail(err, GB_EINPUT, "%s: %s", sc->path, strerror(errno));
+    uint64_t h = FNV0;
+    char buf[65536];
+    size_t k;
+    while ((k = fread(buf, 1, sizeof buf, f)) > 0) h = fnv(h, buf, k);
+    int bad = ferror(f);
+    fclose(f);
+    if (bad) return gb_fail(err, GB_EINPUT, "%s: read failed", sc->path);
+    /* What the run starts from, as the simulation holds it (files the scene names included); not
+     * the host's condensed stiffness, whose last digits may follow the BLAS's threads. */
+    h = fnv(h, &sim->n, sizeof sim->n);
+    for (int i = 0; i < sim->n; i++) h = fnv(h, &sim->g[i], sizeof sim->g[i]);
+    for (int q = 0; q < sim->pairs.n; q++) {
+        const gb_pair *p = &sim->pairs.p[q];
+        double v[3] = {p->d, p->pn, p->pt};
+        h = fnv(h, &p->i, sizeof p->i), h = fnv(h, &p->j, sizeof p->j), h = fnv(h, v, sizeof v);
+    }
+    double box[4] = {sim->box.left, sim->box.right, sim->box.bottom, sim->box.top};
+    h = fnv(h, box, sizeof box);
+    h = fnv(h, &sim->lm_mu, sizeof sim->lm_mu), h = fnv(h, sim->lm_history, sizeof sim->lm_history);
+    if (sim->host) {
+        const gb_host *hw = sim->host;
+        h = fnv(h, &hw->mesh.n, sizeof hw->mesh.n);
+        h = fnv(h, hw->mesh.mid, 2 * (size_t)hw->mesh.n * sizeof(double));
+        h = fnv(h, hw->mesh.length, (size_t)hw->mesh.n * sizeof(double));
+        h = fnv(h, hw->mesh.group, (size_t)hw->mesh.n * sizeof(int));
+        h = fnv(h, hw->u, (size_t)hw->m * sizeof(double));
+        for (int g = 0; g < GB_BEM_MAX_GROUPS; g++) h = fnv(h, hw->prob.bc[g].value, sizeof hw->prob.bc[g].value);
+        h = fnv(h, hw->prob.remote_stress, sizeof hw->prob.remote_stress);
+    }
+    *hash = h;
+    return GB_OK;
+}
+
+gb_status gb_checkpoint_file_mark(const char *dir, const char *name, gb_checkpoint_file *f, gb_error *err)
+{
+    char path[1200];
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    snprintf(f->name, sizeof f->name, "%s", name);
+    f->length = -1, f->n_tail = 0;
+    FILE *in = fopen(path, "rb");
+    if (!in) return errno == ENOENT ? GB_OK : gb_fail(err, GB_EIO, "%s: %s", path, strerror(errno));
+    int ok = fseek(in, 0, SEEK_END) == 0;
+    long end = ok ? ftell(in) : -1;
+    f->n_tail = end < GB_CHECKPOINT_TAIL ? (int)end : GB_CHECKPOINT_TAIL;
+    ok = end >= 0 && fseek(in, end - f->n_tail, SEEK_SET) == 0 && fread(f->tail, 1, (size_t)f->n_tail, in) ==
+                                                                     (size_t)f->n_tail;
+    fclose(in);
+    if (!ok) return gb_fail(err, GB_EIO, "%s: cannot read its end", path);
+    f->length = end;
+    return GB_OK;
+}
+
+gb_status gb_checkpoint_file_rewind(const char *dir, const gb_checkpoint_file *f, gb_error *err)
+{
+    char path[1200];
+    snprintf(path, sizeof path, "%s/%s", dir, f->name);
+    if (f->length < 0) return remove(path) == 0 || errno == ENOENT ? GB_OK : gb_fail(err, GB_EIO, "%s: %s", path,
+                                                                                       strerror(errno));
+    struct stat sb;
+    if (stat(path, &sb) != 0 || (long long)sb.st_size < f->length)
+        return gb_fail(err, GB_EINPUT, "%s: %s than the checkpoint records (%lld bytes); the run directory was "
+                       "changed", path, stat(path, &sb) != 0 ? "missing, not longer" : "shorter", f->length);
+    int fd = open(path, O_WRONLY);
+    int ok = fd >= 0 && ftruncate(fd, (off_t)f->length) == 0 &&
+             pwrite(fd, f->tail, (size_t)f->n_tail, (off_t)(f->length - f->n_tail)) == f->n_tail;
+    if (fd >= 0 && close(fd) != 0) ok = 0;
+    return ok ? GB_OK : gb_fail(err, GB_EIO, "%s: cannot cut back to %lld bytes: %s", path, f->length,
+                                strerror(errno));
+}
+
+/* ---- writing ---- */
+
+static void put(FILE *f, const char *label, const double *v, int n)
+{
+    fputs(label, f);
+    for (int k = 0; k < n; k++) fprintf(f, " %a", v[k]);
+    fputc('\n', f);
+}
+
+static void write_body(FILE *f, const gb_sim *sim, const gb_checkpoint_meta *m)
+{
+    const gb_pair_list *P = &sim->pairs;
+    int np = sim->bp.n, hm = sim->host ? sim->host->m : 0;
+    fprintf(f, "gembem_checkpoint %d\nversion %s\nscene %s\nscene_hash %016" PRIx64 "\nfiles %d\n", FORMAT,
+            gb_version(), m->scene_path, m->scene_hash, m->n_files);
+    for (int k = 0; k < m->n_files; k++) {
+        const gb_checkpoint_file *cf = &m->file[k];
+        fprintf(f, "file %s %lld ", cf->name, cf->length);
+        for (int b = 0; b < cf->n_tail; b++) fprintf(f, "%02x", cf->tail[b]);
+        fprintf(f, "%s\n", cf->n_tail ? "" : "-");
+    }
+    const gb_sim_position *pos = &sim->pos;
+    fprintf(f, "position %d %d %d %a %a\n", pos->stage, pos->stage_step, pos->step, pos->start[0], pos->start[1]);
+    fprintf(f, "counts %d %d %d %d\n", sim->n, P->n, np, hm);
+    double box[4] = {sim->box.left, sim->box.right, sim->box.bottom, sim->box.top};
+    double box0[4] = {P->box0.left, P->box0.right, P->box0.bottom, P->box0.top};
+    put(f, "box", box, 4);
+    put(f, "box0", box0, 4);
+    put(f, "wall_force", sim->wall_force, GB_N_WALLS);
+    double e[7] = {sim->work_walls_iter, sim->dissipation, sim->dissipation_step, sim->relaxation,
+                   sim->work_walls, sim->work_body, sim->energy0};
+    put(f, "energies", e, 7);
+    double ref[2] = {sim->ref_width, sim->ref_height};
+    put(f, "reference", ref, 2);
+    fprintf(f, "counters %ld %d %ld %d\n", P->rebuilds, sim->half_pending, sim->iterations_total, sim->lm_next);
+    put(f, "damping", &sim->lm_mu, 1);
+    put(f, "damping_history", sim->lm_history, LM_MEMORY);
+    if (sim->host) {
+        double v[2 * GB_BEM_MAX_GROUPS + 3];
+        for (int g = 0; g < GB_BEM_MAX_GROUPS; g++)
+            v[2 * g] = sim->host->prob.bc[g].value[0], v[2 * g + 1] = sim->host->prob.bc[g].value[1];
+        memcpy(&v[2 * GB_BEM_MAX_GROUPS], sim->host->prob.remote_stress, 3 * sizeof(double));
+        put(f, "host_values", v, 2 * GB_BEM_MAX_GROUPS + 3);
+    }
+    fprintf(f, "grains\n");
+    for (int i = 0; i < sim->n; i++) {
+        const gb_grain *g = &sim->g[i];
+        fprintf(f, "%a %a %a %a %a %a\n", g->x, g->y, g->r, g->rot, P->x0[2 * i], P->x0[2 * i + 1]);
+    }
+    const unsigned char *un = sim->global ? gb_global_unloading(sim->global, P) : NULL;
+    fprintf(f, "pairs %d\n", un != NULL);
+    for (int q = 0; q < P->n; q++) {
+        const gb_pair *p = &P->p[q];
+        fprintf(f, "%d %d %a %a %a %a %a %a %d\n", p->i, p->j, p->nx, p->ny, p->d, p->pn, p->pt, p->diss,
+                un ? un[q] : 0);
+    }
+    fprintf(f, "particles\n");
+    for (int e2 = 0; e2 < np; e2++)
+        fprintf(f, "%a %a %a %a\n", sim->bp.x[e2], sim->bp.y[e2], P->px0[2 * e2], P->px0[2 * e2 + 1]);
+    fprintf(f, "host\n");
+    for (int k = 0; k < hm; k++) fprintf(f, "%a %a\n", sim->host->u[k], sim->host->K.f0[k]);
+}
+
+gb_status gb_checkpoint_write(const char *dir, const gb_sim *sim, const gb_checkpoint_meta *m, gb_error *err)
+{
+    char path[1200];
+    snprintf(path, sizeof path, "%s/%s", dir, GB_CHECKPOINT_NAME);
+    /* Written to memory first: the trailer's hash covers the bytes as written. */
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *mem = open_memstream(&buf, &len);
+    if (!mem) return gb_fail(err, GB_ENOMEM, "out of memory for a checkpoint");
+    write_body(mem, sim, m);
+    if (fclose(mem) != 0 || !buf) {
+        free(buf);
+        return gb_fail(err, GB_ENOMEM, "out of memory for a checkpoint");
+    }
+    gb_atomic_file a;
+    gb_status st = gb_atomic_open(&a, path, err);
+    if (!st) {
+        fwrite(buf, 1, len, a.f);
+        fprintf(a.f, "end %016" PRIx64 "\n", fnv(FNV0, buf, len));
+        st = gb_atomic_commit_durable(&a, err);
+    }
+    free(buf);
+    return st;
+}
+
+/* ---- reading ---- */
+
+typedef struct {
+    char *p;         /* next unread byte */
+    int line;
+    const char *path;
+    gb_error *err;
+    gb_status st;
+    char w[2 * GB_CHECKPOINT_TAIL + 8]; /* the last word read */
+} cursor;
+
+static void fail(cursor *c, const char *what)
+{
+    if (!c->st) c->st = gb_fail(c->err, GB_EINPUT, "%s:%d: %s", c->path, c->line, what);
+}
+
+/* The next space-separated word ("" at the end or after a failure). */
+static const char *word(cursor *c)
+{
+    c->w[0] = '\0';
+    if (c->st) return c->w;
+    for (; *c->p == ' ' || *c->p == '\n'; c->p++) c->line += *c->p == '\n';
+    size_t n = strcspn(c->p, " \n");
+    if (n >= sizeof c->w) fail(c, "a word too long");
+    else memcpy(c->w, c->p, n), c->w[n] = '\0';
+    c->p += n;
+    return c->w;
+}
+
+static void expect(cursor *c, const char *label)
+{
+    const char *w = word(c);
+    char what[96];
+    snprintf(what, sizeof what, "expected '%s'", label);
+    if (strcmp(w, label)) fail(c, what);
+}
+
+static double num(cursor *c)
+{
+    double v = 0;
+    if (gb_parse_finite(word(c), &v) != GB_NUMBER_OK) fail(c, "expected a finite number");
+    return v;
+}
+
+static void nums(cursor *c, const char *label, double *v, int n)
+{
+    expect(c, label);
+    for (int k = 0; k < n; k++) v[k] = num(c);
+}
+
+static long long integer(cursor *c, long long lo, long long hi)
+{
+    const char *w = word(c);
+    char *end;
+    errno = 0;
+    long long v = strtoll(w, &end, 10);
+    if (end == w || *end || errno || v < lo || v > hi) fail(c, "expected an integer in range");
+    return v;
+}
+
+/* The rest of the line, without its newline. */
+static char *rest_of_line(cursor *c)
+{
+    while (*c->p == ' ') c->p++;
+    char *s = c->p, *nl = strchr(s, '\n');
+    if (!nl) {
+        fail(c, "unexpected end");
+        return c->p;
+    }
+    *nl = '\0';
+    c->p = nl + 1, c->line++;
+    return s;
+}
+
+static int hexval(char ch) { return ch >= '0' && ch <= '9' ? ch - '0' : ch >= 'a' && ch <= 'f' ? ch - 'a' + 10 : -1; }
+
+/* Reads dir/checkpoint.txt whole and checks its trailer. */
+static gb_status load(const char *dir, char *path, size_t cap, char **text, gb_error *err)
+{
+    snprintf(path, cap, "%s/%s", dir, GB_CHECKPOINT_NAME);
+    *text = NULL;
+    FILE *f = fopen(path, "rb");
+    if (!f) return gb_fail(err, GB_EINPUT, "%s: %s", path, strerror(errno));
+    char *buf = NULL;
+    size_t len = 0, k;
+    char chunk[65536];
+    gb_status st = GB_OK;
+    while (!st && (k = fread(chunk, 1, sizeof chunk, f)) > 0) {
+        char *b = realloc(buf, len + k + 1);
+        if (!b) st = gb_fail(err, GB_ENOMEM, "out of memory for %s", path);
+        else memcpy(b + len, chunk, k), buf = b, len += k;
+    }
+    if (!st && ferror(f)) st = gb_fail(err, GB_EIO, "%s: read failed", path);
+    fclose(f);
+    if (!st && !buf) st = gb_fail(err, GB_EINPUT, "%s: empty", path);
+    if (st) {
+        free(buf);
+        return st;
+    }
+    buf[len] = '\0';
+    /* "end <16 hex digits>\n" */
+    size_t t = len >= 21 ? len - 21 : 0;
+    uint64_t want = 0;
+    int ok = len >= 21 && (t == 0 || buf[t - 1] == '\n') && !strncmp(buf + t, "end ", 4) && buf[len - 1] == '\n';
+    for (int d = 0; ok && d < 16; d++) {
+        int v = hexval(buf[t + 4 + d]);
+        ok = v >= 0;
+        want = want << 4 | (uint64_t)(v < 0 ? 0 : v);
+    }
+    if (!ok || fnv(FNV0, buf, t) != want || strncmp(buf, "gembem_checkpoint ", 18)) {
+        free(buf);
+        return gb_fail(err, GB_EINPUT, "%s: not a complete gembem checkpoint (damaged or cut short)", path);
+    }
+    buf[t] = '\0';
+    *text = buf;
+    return GB_OK;
+}
+
+static void read_meta(cursor *c, gb_checkpoint_meta *m)
+{
+    expect(c, "gembem_checkpoint");
+    if (integer(c, 0, 1000) != FORMAT) fail(c, "a checkpoint of another format; resume it with the gembem that "
+                                              "wrote it");
+    expect(c, "version");
+    word(c);
+    expect(c, "scene");
+    snprintf(m->scene_path, sizeof m->scene_path, "%s", rest_of_line(c));
+    expect(c, "scene_hash");
+    const char *w = word(c);
+    m->scene_hash = 0;
+    for (int d = 0; d < 16; d++) {
+        int v = strlen(w) == 16 ? hexval(w[d]) : -1;
+        if (v < 0) fail(c, "expected 16 hexadecimal digits");
+        m->scene_hash = m->scene_hash << 4 | (uint64_t)(v < 0 ? 0 : v);
+    }
+    expect(c, "files");
+    m->n_files = (int)integer(c, 0, GB_CHECKPOINT_MAX_FILES);
+    for (int k = 0; k < m->n_files && !c->st; k++) {
+        gb_checkpoint_file *f = &m->file[k];
+        expect(c, "file");
+        w = word(c);
+        if (strlen(w) >= sizeof f->name || strstr(w, "..")) fail(c, "expected a file of the run directory");
+        snprintf(f->name, sizeof f->name, "%s", w);
+        f->length = integer(c, -1, (long long)1 << 60);
+        w = word(c);
+        size_t n = strcmp(w, "-") ? strlen(w) / 2 : 0;
+        if (n > GB_CHECKPOINT_TAIL || (long long)n > (f->length < 0 ? 0 : f->length) || (n == 0 && strcmp(w, "-")))
+            fail(c, "expected the file's last bytes in hexadecimal");
+        for (size_t b = 0; b < n && !c->st; b++) {
+            int hi = hexval(w[2 * b]), lo = hexval(w[2 * b + 1]);
+            if (hi < 0 || lo < 0) fail(c, "expected the file's last bytes in hexadecimal");
+            f->tail[b] = (unsigned char)(16 * hi + lo);
+        }
+        f->n_tail = (int)n;
+    }
+}
+
+gb_status gb_checkpoint_read_meta(const char *dir, gb_checkpoint_meta *m, gb_error *err)
+{
+    char path[1200], *text;
+    gb_status st = load(dir, path, sizeof path, &text, err);
+    if (st) return st;
+    cursor c = {text, 1, path, err, GB_OK, ""};
+    read_meta(&c, m);
+    free(text);
+    return c.st;
+}
+
+/* The state part: into st (allocated here) and the simulation's own accounts in *x. */
+typedef struct {
+    gb_sim_position pos;
+    double work_walls, work_body, energy0, ref[2], lm_mu, lm_history[LM_MEMORY], *px0;
+    long iterations_total;
+    int lm_next, has_unloading;
+    unsigned char *unloading;
+} extras;
+
+static void read_state(cursor *c, const gb_sim *sim, gb_sim_state *st, extras *x)
+{
+    expect(c, "position");
+    x->pos.stage = (int)integer(c, 0, sim->scene->n_stages > 0 ? sim->scene->n_stages - 1 : 0);
+    x->pos.stage_step = (int)integer(c, 0, c->st ? 0 : sim->scene->stages[x->pos.stage].steps);
+    x->pos.step = (int)integer(c, 0, gb_scene_total_steps(sim->scene));
+    x->pos.start[0] = num(c), x->pos.start[1] = num(c);
+    x->pos.resume = 1;
+    expect(c, "counts");
+    int np = sim->bp.n, hm = sim->host ? sim->host->m : 0;
+    long long n_grains = integer(c, 0, 1 << 30);
+    st->n_pairs = (int)integer(c, 0, 1 << 30);
+    long long n_particles = integer(c, 0, 1 << 30), n_host = integer(c, 0, 1 << 30);
+    if (n_grains != sim->n || n_particles != np || n_host != hm)
+        fail(c, "the checkpoint's grains or host differ from the scene's");
+    if (c->st) return;
+    size_t n = (size_t)(sim->n > 0 ? sim->n : 1), npairs = (size_t)(st->n_pairs > 0 ? st->n_pairs : 1);
+    st->g = malloc(n * sizeof *st->g), st->x0 = malloc(2 * n * sizeof(double));
+    st->p = malloc(npairs * sizeof *st->p), st->cap = st->n_pairs;
+    x->unloading = malloc(npairs);
+    x->px0 = malloc(2 * (size_t)(np > 0 ? np : 1) * sizeof(double));
+    if (hm) {
+        st->bp_xy = malloc((size_t)hm * sizeof(double));
+        st->host_u = malloc((size_t)hm * sizeof(double)), st->host_f0 = malloc((size_t)hm * sizeof(double));
+    }
+    if (!st->g || !st->x0 || !st->p || !x->unloading || !x->px0 ||
+        (hm && (!st->bp_xy || !st->host_u || !st->host_f0))) {
+        c->st = gb_fail(c->err, GB_ENOMEM, "out of memory for the checkpoint of %d grains", sim->n);
+        return;
+    }
+    double box[4], box0[4], e[7];
+    nums(c, "box", box, 4);
+    nums(c, "box0", box0, 4);
+    gb_box b = {box[0], box[1], box[2], box[3]}, b0 = {box0[0], box0[1], box0[2], box0[3]};
+    st->box = b, st->box0 = b0;
+    nums(c, "wall_force", st->wall_force, GB_N_WALLS);
+    nums(c, "energies", e, 7);
+    st->work_walls_iter = e[0], st->dissipation = e[1], st->dissipation_step = e[2], st->relaxation = e[3];
+    x->work_walls = e[4], x->work_body = e[5], x->energy0 = e[6];
+    nums(c, "reference", x->ref, 2);
+    expect(c, "counters");
+    st->rebuilds = (long)integer(c, 0, (long long)1 << 62);
+    st->half_pending = (int)integer(c, 0, 1);
+    x->iterations_total = (long)integer(c, 0, (long long)1 << 62);
+    x->lm_next = (int)integer(c, 0, 2147483647LL);
+    nums(c, "damping", &x->lm_mu, 1);
+    nums(c, "damping_history", x->lm_history, LM_MEMORY);
+    if (hm) {
+        double v[2 * GB_BEM_MAX_GROUPS + 3];
+        nums(c, "host_values", v, 2 * GB_BEM_MAX_GROUPS + 3);
+        for (int g = 0; g < GB_BEM_MAX_GROUPS; g++) st->host_bc[g][0] = v[2 * g], st->host_bc[g][1] = v[2 * g + 1];
+        memcpy(st->host_remote, &v[2 * GB_BEM_MAX_GROUPS], sizeof st->host_remote);
+    }
+    expect(c, "grains");
+    for (int i = 0; i < sim->n && !c->st; i++) {
+        gb_grain *g = &st->g[i];
+        g->x = num(c), g->y = num(c), g->r = num(c), g->rot = num(c);
+        st->x0[2 * i] = num(c), st->x0[2 * i + 1] = num(c);
+        if (g->r != sim->g[i].r) fail(c, "a grain's radius differs from the scene's");
+    }
+    expect(c, "pairs");
+    x->has_unloading = (int)integer(c, 0, 1);
+    for (int q = 0; q < st->n_pairs && !c->st; q++) {
+        gb_pair *p = &st->p[q];
+        p->i = (int)integer(c, 0, sim->n - 1);
+        p->j = (int)integer(c, np > 0 ? GB_PARTICLE_J(np - 1) : -GB_N_WALLS, sim->n - 1);
+        p->nx = num(c), p->ny = num(c), p->d = num(c), p->pn = num(c), p->pt = num(c), p->diss = num(c);
+        x->unloading[q] = (unsigned char)integer(c, 0, 1);
+    }
+    expect(c, "particles");
+    for (int k = 0; k < np && !c->st; k++)
+        st->bp_xy[2 * k] = num(c), st->bp_xy[2 * k + 1] = num(c), x->px0[2 * k] = num(c), x->px0[2 * k + 1] = num(c);
+    expect(c, "host");
+    for (int k = 0; k < hm && !c->st; k++) st->host_u[k] = num(c), st->host_f0[k] = num(c);
+    if (!c->st && *word(c)) fail(c, "expected the end of the checkpoint");
+}
+
+gb_status gb_checkpoint_read(const char *dir, gb_sim *sim, uint64_t scene_hash, gb_checkpoint_meta *m,
+                             gb_error *err)
+{
+    char path[1200], *text;
+    gb_status st = load(dir, path, sizeof path, &text, err);
+    if (st) return st;
+    cursor c = {text, 1, path, err, GB_OK, ""};
+    read_meta(&c, m);
+    if (!c.st && m->scene_hash != scene_hash)
+        c.st = gb_fail(err, GB_EINPUT, "%s: the scene %s (or a file it reads: grains, initial state, host mesh) "
+                       "has changed since the run started; a run resumes only with the scene it started with",
+                       dir, sim->scene->path);
+    gb_sim_state s;
+    memset(&s, 0, sizeof s);
+    extras x;
+    memset(&x, 0, sizeof x);
+    if (!c.st) read_state(&c, sim, &s, &x);
+    /* Everything read: now into the simulation (the pair list grown first, so that restoring
+     * needs no swap of its buffers). */
+    if (!c.st && s.n_pairs > sim->pairs.cap) {
+        gb_pair *p = realloc(sim->pairs.p, (size_t)s.n_pairs * sizeof *p);
+        if (!p) c.st = gb_fail(err, GB_ENOMEM, "out of memory for %d pairs", s.n_pairs);
+        else sim->pairs.p = p, sim->pairs.cap = s.n_pairs;
+    }
+    if (!c.st && sim->global)
+        c.st = gb_global_resume(sim->global, &sim->pairs, x.has_unloading ? x.unloading : NULL, err);
+    if (!c.st) {
+        gb_sim_state_restore(sim, &s);
+        if (sim->bp.n) memcpy(sim->pairs.px0, x.px0, 2 * (size_t)sim->bp.n * sizeof(double));
+        sim->work_walls = x.work_walls, sim->work_body = x.work_body, sim->energy0 = x.energy0;
+        sim->ref_width = x.ref[0], sim->ref_height = x.ref[1];
+        sim->iterations_total = x.iterations_total;
+        sim->lm_mu = x.lm_mu, sim->lm_next = x.lm_next;
+        memcpy(sim->lm_history, x.lm_history, sizeof sim->lm_history);
+        sim->pos = x.pos;
+    }
+    gb_sim_state_free(&s);
+    free(x.unloading), free(x.px0);
+    free(text);
+    return c.st;
+}
