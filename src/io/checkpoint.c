@@ -370,7 +370,7 @@ static void read_state(cursor *c, const gb_sim *sim, gb_sim_state *st, extras *x
 {
     expect(c, "position");
     x->pos.stage = (int)integer(c, 0, sim->scene->n_stages > 0 ? sim->scene->n_stages - 1 : 0);
-    x->pos.stage_step = (int)integer(c, 0, c->st ? 0 : sim->scene->stages[x->pos.stage].steps);
+    x->pos.stage_step = (int)integer(c, 0, c->st || !sim->scene->n_stages ? 0 : sim->scene->stages[x->pos.stage].steps);
     x->pos.step = (int)integer(c, 0, gb_scene_total_steps(sim->scene));
     x->pos.start[0] = num(c), x->pos.start[1] = num(c);
     x->pos.resume = 1;

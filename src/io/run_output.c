@@ -253,9 +253,11 @@ static gb_status resumable(const char *dir, char *info, size_t cap, char *status
         fclose(f);
     }
     info_value(info, "status", status, status_cap);
-    if (!strcmp(status, "completed"))
-        return gb_fail(err, GB_EINPUT, "%s: the run completed (run_info.yaml); nothing to resume", dir);
     snprintf(path, sizeof path, "%s/%s", dir, GB_CHECKPOINT_NAME);
+    if (!strcmp(status, "completed")) {
+        remove(path); /* left if the run was killed just after saying it completed */
+        return gb_fail(err, GB_EINPUT, "%s: the run completed (run_info.yaml); nothing to resume", dir);
+    }
     if (stat(path, &sb) != 0)
         return gb_fail(err, GB_EINPUT, "%s: no %s to resume from: not a run directory, or its run stopped before its "
                        "first checkpoint (or output.checkpoint_every is 0); run the scene again", dir,
@@ -291,6 +293,8 @@ gb_status gb_run_output_resume(const char *dir, gb_sim *sim, const char *command
     snprintf(o->dir, sizeof o->dir, "%s", dir);
     o->scene = gb_sim_scene(sim);
     o->ck = ck;
+    if (!realpath(o->scene->path, o->ck.scene_path)) /* the SCENE given, if it moved */
+        snprintf(o->ck.scene_path, sizeof o->ck.scene_path, "%s", ck.scene_path);
     o->last_checkpoint = gb_clock_seconds();
     list_appended(o);
     info_value(info, "command", value, sizeof value);

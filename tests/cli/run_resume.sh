@@ -35,6 +35,9 @@ same_runs() { # A B LABEL
 }
 
 # One scene: uninterrupted in $d/ref/run, interrupted and resumed in $d/kill/run.
+# run/ completed (a kill may land after run_info.yaml says so: nothing to resume then)
+done_() { grep -qs "^status: completed" run/run_info.yaml; }
+
 # gembem run ARGS, killed at its n-th write (GB_TEST_KILL_AT=$n; 0: never); its exit status.
 start() { (GB_TEST_KILL_AT=$n "$gembem" run "$@" --quiet; exit $?) 2>/dev/null; }
 
@@ -52,10 +55,11 @@ kill_case() { # NAME SCENE ATTEMPTS MAX_N [TIMED_DELAYS]
     else start "$scene" -o run --overwrite; rc=$?; starts=$((starts + 1)); fi
     [ $rc -eq 137 ] && kills=$((kills + 1))
     [ $rc -eq 0 ] && break
+    [ $rc -ne 137 ] && done_ && break
     [ $rc -ne 137 ] && { bad "$name: attempt $attempt (kill at $n) exited $rc"; cd "$out"; return; }
   done
   n=0
-  while [ $rc -ne 0 ]; do  # to the end
+  while [ $rc -ne 0 ] && ! done_; do  # to the end
     if [ -f run/checkpoint.txt ]; then start --resume run; rc=$?; resumes=$((resumes + 1))
     else start "$scene" -o run --overwrite; rc=$?; starts=$((starts + 1)); fi
     [ $rc -ne 0 ] && { bad "$name: the last resume exited $rc"; cd "$out"; return; }
@@ -65,7 +69,7 @@ kill_case() { # NAME SCENE ATTEMPTS MAX_N [TIMED_DELAYS]
     mkdir -p "$d/timed_$t"; cd "$d/timed_$t"
     (timeout -s KILL "$t" "$gembem" run "$scene" -o run --quiet; exit $?) 2>/dev/null; rc=$?
     [ $rc -eq 137 ] && kills=$((kills + 1))
-    while [ $rc -ne 0 ]; do
+    while [ $rc -ne 0 ] && ! done_; do
       if [ -f run/checkpoint.txt ]; then "$gembem" run --resume run --quiet; rc=$?; resumes=$((resumes + 1))
       else "$gembem" run "$scene" -o run --overwrite --quiet; rc=$?; starts=$((starts + 1)); fi
       [ $rc -ne 0 ] && { bad "$name: resuming after a kill at ${t}s exited $rc"; break; }
