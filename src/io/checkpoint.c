@@ -72,11 +72,12 @@ gb_status gb_checkpoint_file_mark(const char *dir, const char *name, gb_checkpoi
     f->length = -1, f->n_tail = 0;
     FILE *in = fopen(path, "rb");
     if (!in) return errno == ENOENT ? GB_OK : gb_fail(err, GB_EIO, "%s: %s", path, strerror(errno));
-    int ok = fseek(in, 0, SEEK_END) == 0;
+    /* on the disk before the checkpoint that counts on it (a power cut) */
+    int ok = fsync(fileno(in)) == 0 && fseek(in, 0, SEEK_END) == 0;
     long end = ok ? ftell(in) : -1;
-    f->n_tail = end < GB_CHECKPOINT_TAIL ? (int)end : GB_CHECKPOINT_TAIL;
-    ok = end >= 0 && fseek(in, end - f->n_tail, SEEK_SET) == 0 && fread(f->tail, 1, (size_t)f->n_tail, in) ==
-                                                                     (size_t)f->n_tail;
+    f->n_tail = end < 0 ? 0 : end < GB_CHECKPOINT_TAIL ? (int)end : GB_CHECKPOINT_TAIL;
+    ok = end >= 0 && fseek(in, end - f->n_tail, SEEK_SET) == 0 &&
+         fread(f->tail, 1, (size_t)f->n_tail, in) == (size_t)f->n_tail;
     fclose(in);
     if (!ok) return gb_fail(err, GB_EIO, "%s: cannot read its end", path);
     f->length = end;
@@ -370,7 +371,8 @@ static void read_state(cursor *c, const gb_sim *sim, gb_sim_state *st, extras *x
 {
     expect(c, "position");
     x->pos.stage = (int)integer(c, 0, sim->scene->n_stages > 0 ? sim->scene->n_stages - 1 : 0);
-    x->pos.stage_step = (int)integer(c, 0, c->st || !sim->scene->n_stages ? 0 : sim->scene->stages[x->pos.stage].steps);
+    int steps = c->st || !sim->scene->n_stages ? 0 : sim->scene->stages[x->pos.stage].steps;
+    x->pos.stage_step = (int)integer(c, 0, steps);
     x->pos.step = (int)integer(c, 0, gb_scene_total_steps(sim->scene));
     x->pos.start[0] = num(c), x->pos.start[1] = num(c);
     x->pos.resume = 1;

@@ -33,7 +33,7 @@ typedef struct {
  * reads (grains, contacts, initial state, the host's mesh and values): call it before the run. */
 gb_status gb_checkpoint_scene_hash(const gb_sim *sim, uint64_t *hash, gb_error *err);
 
-/* The length and last bytes of dir/name now. */
+/* The length and last bytes of dir/name now, the file synced to the disk. */
 gb_status gb_checkpoint_file_mark(const char *dir, const char *name, gb_checkpoint_file *f, gb_error *err);
 /* dir/name back to its mark: cut to its length and its last bytes rewritten, or removed if it did
  * not exist. Fails if the file is shorter than its mark (it lost data the checkpoint counts on). */

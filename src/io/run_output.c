@@ -392,7 +392,8 @@ static gb_status checkpoint(gb_run_output *o, const gb_sim *sim, gb_error *err)
 {
     gb_status st = GB_OK;
     o->ck.n_files = o->n_appended;
-    for (int k = 0; k < o->n_appended && !st; k++) st = gb_checkpoint_file_mark(o->dir, o->appended[k], &o->ck.file[k], err);
+    for (int k = 0; k < o->n_appended && !st; k++)
+        st = gb_checkpoint_file_mark(o->dir, o->appended[k], &o->ck.file[k], err);
     if (!st) st = gb_checkpoint_write(o->dir, sim, &o->ck, err);
     o->last_checkpoint = gb_clock_seconds();
     return st;
