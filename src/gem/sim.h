@@ -47,6 +47,8 @@ typedef struct {
     int resume;       /* set by a checkpoint: gb_sim_run continues after this step */
 } gb_sim_position;
 
+/* What one load step leaves for the next (the state, the accounts, the damping) is in a run's
+ * checkpoint (src/io/checkpoint.c): a field added here that outlives a step belongs there too. */
 struct gb_sim {
     const gb_scene *scene;
     int n;
