@@ -469,8 +469,6 @@ gb_status gb_checkpoint_read(const char *dir, gb_sim *sim, uint64_t scene_hash, 
         if (!p) c.st = gb_fail(err, GB_ENOMEM, "out of memory for %d pairs", s.n_pairs);
         else sim->pairs.p = p, sim->pairs.cap = s.n_pairs;
     }
-    if (!c.st && sim->global)
-        c.st = gb_global_resume(sim->global, &sim->pairs, x.has_unloading ? x.unloading : NULL, err);
     if (!c.st) {
         gb_sim_state_restore(sim, &s);
         if (sim->bp.n) memcpy(sim->pairs.px0, x.px0, 2 * (size_t)sim->bp.n * sizeof(double));
@@ -480,6 +478,9 @@ gb_status gb_checkpoint_read(const char *dir, gb_sim *sim, uint64_t scene_hash, 
         sim->lm_mu = x.lm_mu, sim->lm_next = x.lm_next;
         memcpy(sim->lm_history, x.lm_history, sizeof sim->lm_history);
         sim->pos = x.pos;
+        /* for the restored pair list (its count and rebuilds) */
+        if (sim->global)
+            c.st = gb_global_resume(sim->global, &sim->pairs, x.has_unloading ? x.unloading : NULL, err);
     }
     gb_sim_state_free(&s);
     free(x.unloading), free(x.px0);

@@ -46,7 +46,7 @@ gb_status gb_checkpoint_write(const char *dir, const gb_sim *sim, const gb_check
 gb_status gb_checkpoint_read_meta(const char *dir, gb_checkpoint_meta *m, gb_error *err);
 /* The whole checkpoint into a simulation just created from the same scene (scene_hash: its hash,
  * refused if the checkpoint's differs); gb_sim_run then continues after the checkpoint's step.
- * The simulation is unchanged on failure. */
+ * The simulation is unchanged if the checkpoint is refused (only running out of memory fails later). */
 gb_status gb_checkpoint_read(const char *dir, gb_sim *sim, uint64_t scene_hash, gb_checkpoint_meta *m,
                              gb_error *err);
 

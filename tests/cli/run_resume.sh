@@ -95,6 +95,10 @@ sed -e 's/steps: 20/steps: 7/' "$root/validation/biaxial122/test_shear.yaml" > "
 printf 'output: {snapshot_every: 3, contacts_every: 2, checkpoint_every: 3}\n' >> "$out/scenes/ref.yaml"
 sed -e 's/solver: {/solver: {method: global, linear: cholmod, /' -e 's/steps: 20/steps: 7/' \
   "$root/validation/biaxial122/test_shear.yaml" > "$out/scenes/global.yaml"
+# strain-controlled: the pair list is rebuilt within steps, and sliding contacts are held stuck across them
+sed -e 's/solver: {/solver: {method: global, linear: cholmod, /' \
+  -e 's/  - shear_mean_stress: .*/  - strain: {de1: 0.0006, de2: -0.0006, steps: 4}/' \
+  "$root/validation/biaxial122/test_shear.yaml" > "$out/scenes/global_strain.yaml"
 sed -e "s|\.\./\.\./meshes|$root/meshes|" "$root/tests/hybrid/load_grains.yaml" > "$out/scenes/hybrid.yaml"
 sed -e "s|\.\./\.\./meshes|$root/meshes|" -e 's/linear: umfpack/linear: cholmod/' \
   -e 's/grain_boundary: {kn: 1000, kt: 0, friction_deg: 0}/grain_boundary: {kn: 1000, kt: 500, friction_deg: 20}/' \
@@ -102,6 +106,7 @@ sed -e "s|\.\./\.\./meshes|$root/meshes|" -e 's/linear: umfpack/linear: cholmod/
 
 kill_case reference "$out/scenes/ref.yaml" 10 25 "0.3 0.6"
 kill_case global "$out/scenes/global.yaml" 8 20
+kill_case global_strain "$out/scenes/global_strain.yaml" 8 20
 kill_case hybrid "$out/scenes/hybrid.yaml" 8 20
 kill_case hybrid_remote "$out/scenes/hybrid_remote.yaml" 8 20
 
