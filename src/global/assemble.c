@@ -29,9 +29,11 @@ gb_status gb_global_pair_buffers(gb_global *gl, const gb_pair_list *P, gb_error 
     if (kt) gl->kt = kt;
     unsigned char *stick = realloc(gl->stick, (size_t)P->cap);
     if (stick) gl->stick = stick;
+    double *slide = realloc(gl->slide, (size_t)P->cap * sizeof(double));
+    if (slide) gl->slide = slide;
     unsigned char *unloading = realloc(gl->unloading, (size_t)P->cap);
     if (unloading) gl->unloading = unloading;
-    if (!kt || !stick || !unloading) return gb_fail(err, GB_ENOMEM, "out of memory");
+    if (!kt || !stick || !slide || !unloading) return gb_fail(err, GB_ENOMEM, "out of memory");
     memset(gl->unloading + gl->kt_cap, 0, (size_t)(P->cap - gl->kt_cap));
     gl->kt_cap = P->cap;
     return GB_OK;
@@ -39,6 +41,7 @@ gb_status gb_global_pair_buffers(gb_global *gl, const gb_pair_list *P, gb_error 
 
 void gb_global_tangents(gb_global *gl, const gb_sim *sim)
 {
+    int exact = sim->scene->solver.newton == GB_NEWTON_LINE_SEARCH;
     memset(gl->S, 0, 6 * (size_t)gl->n * sizeof(double));
     memset(gl->Sp, 0, 3 * (size_t)gl->np * sizeof(double));
     for (int k = 0; k < sim->pairs.n; k++) {
@@ -53,6 +56,8 @@ void gb_global_tangents(gb_global *gl, const gb_sim *sim)
          * tangential part, so the solution does not slide it: only K, not the forces, sees it. */
         if (gl->stick[k] && !(kt > 0)) kt = SINGLE_CONTACT_KT * kn;
         gl->kt[k] = kt;
+        /* The exact tangent of a sliding contact: pt = +-(pn tan phi + c) follows the overlap. */
+        gl->slide[k] = !(kt > 0) && exact && p->pt != 0 && (p->j >= 0 || GB_IS_PARTICLE(p->j)) ? (p->pt > 0 ? 1 : -1) * kn * gb_sim_tan_phi(sim, p->j) : 0;
         double c = p->nx, s = p->ny;
         double s00 = kn * c * c + kt * s * s, s01 = (kn - kt) * c * s, s11 = kn * s * s + kt * c * c;
         double *S = &gl->S[6 * p->i];
@@ -67,6 +72,45 @@ void gb_global_tangents(gb_global *gl, const gb_sim *sim)
     }
 }
 
+/* The exact tangent's terms of a contact between grain i and node j (a grain, nb = 3, or a boundary
+ * particle, nb = 2) beyond K 8 and 25, for a Newton method whose tangent is the derivative of the
+ * forces it balances (solver.newton: line_search; unsymmetric, UMFPACK):
+ * - a sliding contact, pt = +-(pn tan phi + c): its diagonal blocks' part, row t from column n
+ *   (the off-diagonal part is added with K 25's blocks);
+ * - the contact's rotation (geometric stiffness): F_i = pn n + pt t with n, t turning with the
+ *   branch vector of length l = r_i + r_j - d, so dF_i = (pn t - pt n) (t . (dx_j - dx_i)) / l and
+ *   F_j = -F_i. Compression makes it negative along t: it is what decides whether a chain of
+ *   grains buckles, and a tangent without it predicts the wrong sign of the force change along the
+ *   soft (rolling) modes of a loose packing, where Newton's step then raises the residual. */
+static void add_exact_diagonal(gb_global *gl, const gb_sim *sim, const gb_pair *p, int k, int i, int j, int nb)
+{
+    const unsigned char *held = gl->held;
+    double c = p->nx, s = p->ny, sl = gl->slide[k];
+    double r1[3] = {c, s, 0}, r2[3] = {-s, c, 1}, q1[3] = {-c, -s, 0}, q2[3] = {s, -c, 1};
+    int qi = entry_of(gl, i, i), qj = entry_of(gl, j, j), dj = gl->dof0[j];
+    if (sl != 0) {
+        for (int a = 0; a < 3; a++)
+            for (int b = 0; b < 3; b++)
+                if (!held[3 * i + a] && !held[3 * i + b]) add(gl, i, b, qi, a, sl * r2[a] * r1[b]);
+        for (int a = 0; a < nb; a++)
+            for (int b = 0; b < nb; b++)
+                if (!held[dj + a] && !held[dj + b]) add(gl, j, b, qj, a, sl * q2[a] * q1[b]);
+    }
+    double rj = p->j >= 0 ? sim->g[p->j].r : sim->bp.r[GB_PARTICLE_OF(p->j)];
+    double len = sim->g[i].r + rj - p->d, t[2] = {-s, c};
+    double u[2] = {(p->pn * t[0] - p->pt * c) / len, (p->pn * t[1] - p->pt * s) / len};
+    for (int a = 0; a < 2; a++)
+        for (int b = 0; b < 2; b++) {
+            double G = u[a] * t[b]; /* dF_i[a] / dx_j[b] */
+            if (!held[3 * i + a] && !held[dj + b]) {
+                add(gl, j, b, gl->pos_ij[k], a, G);
+                add(gl, i, a, gl->pos_ji[k], b, u[b] * t[a]); /* dF_j[b] / dx_i[a] = G[b][a] (dF_j = -dF_i) */
+            }
+            if (!held[3 * i + a] && !held[3 * i + b]) add(gl, i, b, qi, a, -G);
+            if (!held[dj + a] && !held[dj + b]) add(gl, j, b, qj, a, -G);
+        }
+}
+
 /* K = sum over contacts of [T T']^t S_c [T T'] (K 1-8, 25) over grains, boundary particles (the
  * translational part of T') and walls, plus the host's condensed stiffness on the particles (its
  * symmetric part for CHOLMOD), held DOFs as identity rows. A wall DOF that moves walls inward by
@@ -74,6 +118,7 @@ void gb_global_tangents(gb_global *gl, const gb_sim *sim)
  * kn lever (c, s, 0). */
 void gb_global_assemble(gb_global *gl, const gb_sim *sim, double shift)
 {
+    int exact = sim->scene->solver.newton == GB_NEWTON_LINE_SEARCH;
     memset(gl->Ax, 0, (size_t)gl->nnz * sizeof(double));
     const unsigned char *held = gl->held;
     int n = gl->n, np = gl->np;
@@ -140,9 +185,11 @@ void gb_global_assemble(gb_global *gl, const gb_sim *sim, double shift)
             for (int b = 0; b < nb; b++) {
                 if (held[3 * i + a] || held[gl->dof0[j] + b]) continue;
                 double v = kn * r1[a] * q1[b] + kt * r2[a] * q2[b]; /* T^t S_c T' */
-                add(gl, j, b, gl->pos_ij[k], a, v);                 /* (i, a) row, (j, b) column */
-                add(gl, i, a, gl->pos_ji[k], b, v);                 /* its transpose */
+                double sl = gl->slide[k]; /* a sliding contact's pt follows the overlap (rows r2, q2) */
+                add(gl, j, b, gl->pos_ij[k], a, v + sl * r2[a] * q1[b]); /* (i, a) row, (j, b) column */
+                add(gl, i, a, gl->pos_ji[k], b, v + sl * q2[b] * r1[a]); /* (j, b) row, (i, a) column */
             }
+        if (exact) add_exact_diagonal(gl, sim, p, k, i, j, nb);
     }
     /* A wall DOF whose walls touch nothing gets the stiffness of one grain-wall contact, as in the
      * reference iteration. */

@@ -71,7 +71,7 @@ void gb_global_free(gb_global *gl)
     free(gl->dof0), free(gl->adj_start), free(gl->adj), free(gl->adj_off), free(gl->collen), free(gl->colstart);
     free(gl->pos_ij), free(gl->pos_ji), free(gl->wall_in_grain), free(gl->grain_in_wall), free(gl->touch);
     free(gl->Ap), free(gl->Ai), free(gl->Ax), free(gl->rhs), free(gl->x), free(gl->held);
-    free(gl->S), free(gl->Sp), free(gl->kt), free(gl->stick), free(gl->unloading);
+    free(gl->S), free(gl->Sp), free(gl->kt), free(gl->slide), free(gl->stick), free(gl->unloading);
     free(gl);
 }
 

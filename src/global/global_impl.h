@@ -38,6 +38,7 @@ struct gb_global {
     double *S;                /* per grain: its block of K (s00 s01 s02 s11 s12 s22) */
     double *Sp;               /* per particle: its contact block (s00 s01 s11) */
     double *kt;               /* per pair: tangential stiffness used in K (0 for a sliding contact) */
+    double *slide;            /* per pair: d pt / d overlap of a sliding contact, +-kn tan phi (exact tangent) */
     unsigned char *stick;     /* per pair: kt in K even if it slides (a single contact in the system, or a
                                  sliding contact that the first solution unloads) */
     unsigned char *unloading; /* per pair: a sliding contact that a solution unloaded: kt in K until one

@@ -2,8 +2,9 @@
 # Issue 25, item 4: a converged state is a frictional equilibrium by METHOD.md's law, checked by an
 # independent recomputation (tools/check_equilibrium.py: its own contact detection, pn = kn d from
 # the positions, the stored pt, every grain's force and moment) after an oedometric path from the
-# jammed fixture with each solver; and the checker fails on a state that is not one (a grain moved
-# by 1e-5 cm; a tangential force past its Coulomb cap).
+# jammed fixture with each solver (reference, global, global with newton: line_search); and the
+# checker fails on a state that is not one (a grain moved by 1e-5 cm; a tangential force past its
+# Coulomb cap).
 #   check_equilibrium.sh GEMBEM JAMMED_DIR OUT_DIR
 set -euo pipefail
 gembem=$1 jammed=$2 out=$3
@@ -12,9 +13,10 @@ rm -rf "$out"; mkdir -p "$out"
 fails=0
 ok() { echo "ok: $*"; }
 bad() { echo "FAIL: $*"; fails=$((fails + 1)); }
-for method in reference global; do
+for method in reference global line_search; do
+  solver="method: $method"; [ $method = line_search ] && solver="method: global, newton: line_search"
   sed -e "s|^grains: {file: jammed.csv}|grains: {file: $jammed/jammed.csv}|" \
-      -e "s|^solver: .*|solver: {method: $method, accuracy: 100, max_iterations: 2000000}|" \
+      -e "s|^solver: .*|solver: {$solver, accuracy: 100, max_iterations: 2000000}|" \
       -e '/^loading:/,$d' "$jammed/scene.yaml" > "$out/$method.yaml"
   printf 'loading:\n  - strain: {de1: 0.0005, de2: 0, steps: 4}\n' >> "$out/$method.yaml"
   OPENBLAS_NUM_THREADS=1 "$gembem" run "$out/$method.yaml" -o "$out/$method" --quiet > /dev/null
