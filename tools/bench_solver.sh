@@ -8,12 +8,13 @@
 # Markdown row per run; a run that does not converge is a row, not a failure: the exit status is
 # non-zero only for a usage error.
 #
-#   [SOLVER=global|reference] [LINEAR=cholmod|umfpack] [PERTURB=1e-9]
+#   [SOLVER=global|reference] [LINEAR=cholmod|umfpack] [NEWTON=damped|line_search] [PERTURB=1e-9]
 #   [MAX_ITERATIONS=...] [PATH_MAX_ITERATIONS=...] [REF_MAX_ITERATIONS=1000000]
 #   [OPENBLAS_NUM_THREADS=1] [OMP_NUM_THREADS=1] [OPENBLAS_CORETYPE=...]
 #   tools/bench_solver.sh [BUILD_DIR] [N ...]        (default: build, 1000 10000 100000)
 #
-# SOLVER, LINEAR: the solver of every run (default global, cholmod). PERTURB=f: every centre
+# SOLVER, LINEAR, NEWTON: the solver of every run (default global, cholmod, damped; line_search
+# needs umfpack). PERTURB=f: every centre
 # moved by up to f times its radius (seeded) in a copy of the packing. MAX_ITERATIONS caps each
 # relaxation (default 1000 for global, 1000000 for reference), PATH_MAX_ITERATIONS each load step
 # of the path before its cut-backs (500; 1000000), REF_MAX_ITERATIONS the fallback reference
@@ -28,13 +29,15 @@
 # dyn/cm) from its start to 0.5 % and 1 % of vertical strain.
 set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-usage() { echo "usage: [SOLVER=global|reference] [LINEAR=cholmod|umfpack] [PERTURB=f] tools/bench_solver.sh [BUILD_DIR] [N ...]" >&2; exit 2; }
+usage() { echo "usage: [SOLVER=global|reference] [LINEAR=cholmod|umfpack] [NEWTON=damped|line_search] [PERTURB=f] tools/bench_solver.sh [BUILD_DIR] [N ...]" >&2; exit 2; }
 build=${1:-build}; shift || true
 case $build in /*) ;; *) build=$root/$build;; esac
 sizes=${*:-1000 10000 100000}
-export SOLVER=${SOLVER:-global} LINEAR=${LINEAR:-cholmod}
+export SOLVER=${SOLVER:-global} LINEAR=${LINEAR:-cholmod} NEWTON=${NEWTON:-damped}
 case $SOLVER in global|reference) ;; *) echo "bench_solver.sh: SOLVER must be global or reference" >&2; usage;; esac
 case $LINEAR in cholmod|umfpack) ;; *) echo "bench_solver.sh: LINEAR must be cholmod or umfpack" >&2; usage;; esac
+case $NEWTON in damped|line_search) ;; *) echo "bench_solver.sh: NEWTON must be damped or line_search" >&2; usage;; esac
+[ "$NEWTON" = damped ] || [ "$LINEAR" = umfpack ] || { echo "bench_solver.sh: NEWTON=line_search needs LINEAR=umfpack" >&2; usage; }
 for n in $sizes; do
   [[ $n =~ ^[1-9][0-9]*$ ]] || { echo "bench_solver.sh: N must be a positive integer, got '$n'" >&2; usage; }
 done
@@ -54,13 +57,14 @@ export OPENBLAS_NUM_THREADS=${OPENBLAS_NUM_THREADS:-1} OMP_NUM_THREADS=${OMP_NUM
 timer=/usr/bin/time
 [ -x "$timer" ] || timer=
 tag=$SOLVER; [ "$SOLVER" = global ] && tag=$SOLVER-$LINEAR
+[ "$SOLVER" = global ] && [ "$NEWTON" = line_search ] && tag=$tag-line_search
 [ -n "${PERTURB:-}" ] && tag=$tag-p$PERTURB
 
 echo "machine: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), $(nproc --all) cores, $(free -g | awk '/Mem:/ {print $2}') GiB; $(date -u '+%Y-%m-%d %H:%M UTC')"
 echo "threads: OPENBLAS_NUM_THREADS=$OPENBLAS_NUM_THREADS, OMP_NUM_THREADS=$OMP_NUM_THREADS; OPENBLAS_CORETYPE=${OPENBLAS_CORETYPE:-unset (detected)}; load average $(cut -d' ' -f1-3 /proc/loadavg)"
 others=$(env | grep -E '^(OPENBLAS|GOTO|OMP|CHOLMOD)_' | grep -vE '^(OPENBLAS_NUM_THREADS|OMP_NUM_THREADS|OPENBLAS_CORETYPE)=' | sort | tr '\n' ' ')
 [ -z "$others" ] || echo "also set: $others"
-solver=$SOLVER; [ "$SOLVER" = global ] && solver="global, $LINEAR"
+solver=$SOLVER; [ "$SOLVER" = global ] && solver="global, $LINEAR, newton $NEWTON"
 echo "solver: $solver, accuracy 100 dyn; caps: relaxations $MAX_ITERATIONS, path steps $PATH_MAX_ITERATIONS iterations (cut-backs after); perturbation ${PERTURB:-none}"
 [ -n "$timer" ] || echo "note: /usr/bin/time not found: no peak memory, seconds from bash"
 echo

@@ -16,6 +16,14 @@ typedef struct {
     double diss;       /* energy dissipated at the contact in the last load step (K 28) */
 } gb_contact;
 
+/* The global solver's work (zero for the reference iteration). */
+typedef struct {
+    long trials;          /* moves tried: Newton iterations plus rejected moves (damped: retried with more
+                             damping; line_search: shorter trial lengths) */
+    long factorisations;  /* of the sparse tangent */
+    long sweeps;          /* reference sweeps of unbalanced grains where the line search found no decrease */
+} gb_solver_work;
+
 /* One converged (or failed) load step. Stresses and strains: compression positive, 1 = vertical. */
 typedef struct {
     int stage;           /* 0-based stage of the loading program; -1 for the initial state */
@@ -26,6 +34,7 @@ typedef struct {
     double stress_ratio; /* (s1 - s2)/(s1 + s2), 0 when both vanish */
     long iterations;     /* of all attempts, sub-steps included */
     int substeps;        /* 1, or the sub-steps a cut-back step took (solver.cutbacks); 0 for step 0 */
+    gb_solver_work work; /* of all attempts, sub-steps included */
     double max_fixing_force;  /* largest |F| over the grains (K 14) */
     double seconds;           /* wall-clock time of the step */
     int n_contacts;

@@ -71,9 +71,16 @@ typedef struct {
     double global_alpha;   /* global: share of the solution taken per iteration (default 1) */
     double max_move;       /* global: largest move per iteration, as a share of the grain's radius */
     int cutbacks;          /* a load step that does not converge is retried in halves, down to 1/2^cutbacks */
+    int newton;            /* global: GB_NEWTON_DAMPED or GB_NEWTON_LINE_SEARCH */
 } gb_solver_settings;
 
 enum { GB_METHOD_REFERENCE = 0, GB_METHOD_GLOBAL = 1 };
+/* The global solver's iteration. DAMPED: Levenberg-Marquardt damping with non-monotone acceptance
+ * (src/gem/relax.c). LINE_SEARCH: the exact tangent (sliding contacts and the contacts' rotation
+ * included, unsymmetric: UMFPACK), a monotone line search, reference sweeps of the unbalanced
+ * grains where it finds no decrease, and an affine predictor for strain steps
+ * (src/gem/line_search.c). */
+enum { GB_NEWTON_DAMPED = 0, GB_NEWTON_LINE_SEARCH = 1 };
 
 /* An elastic host with a cavity that holds the grains (the hybrid method, METHOD.md sections 9-11). */
 typedef struct {

@@ -148,7 +148,7 @@ void gb_gem_grain_move(const gb_sim *sim, int i, double dX[3])
 }
 
 /* sum over grains of F.dX with the current F and dX */
-static double fixing_work(const gb_sim *sim)
+double gb_gem_fixing_work(const gb_sim *sim)
 {
     double w = 0;
     for (int k = 0; k < 3 * sim->n; k++) w += sim->F[k] * sim->dX[k];
@@ -156,7 +156,7 @@ static double fixing_work(const gb_sim *sim)
 }
 
 /* Wall moves of this iteration; returns the walls' residual force (0 for fixed walls). */
-static double wall_moves(gb_sim *sim, const gb_wall_control *wc)
+double gb_gem_wall_moves(gb_sim *sim, const gb_wall_control *wc)
 {
     memset(sim->wall_dx, 0, sizeof sim->wall_dx);
     if (wc->mode == GB_WALLS_FIXED) return 0;
@@ -258,7 +258,7 @@ static const double LM_STALL_FACTOR = 0.5;
 /* The merit of a configuration: squared fixing forces of the grains that the system moves (those
  * with two contacts or more before the move: the others move by the reference cases, whatever the
  * damping), of the boundary particles, and the walls' residual. */
-static double merit(const gb_sim *sim, const unsigned char *in_system, double wall_residual)
+double gb_gem_merit(const gb_sim *sim, const unsigned char *in_system, double wall_residual)
 {
     double m = wall_residual * wall_residual;
     for (int i = 0; i < sim->n; i++)
@@ -301,7 +301,7 @@ static gb_status global_move(gb_sim *sim, const gb_wall_control *wc, double wall
     /* Non-monotone acceptance (Grippo, Lampariello and Lucidi): a move may raise the merit above
      * the current one but not above the largest of the last few accepted, so that grains moved by
      * the reference cases (a grain rolling over a neighbour) cannot lock the damping. */
-    double m0 = merit(sim, sim->in_system, wall_residual), bound = m0;
+    double m0 = gb_gem_merit(sim, sim->in_system, wall_residual), bound = m0;
     for (int k = 0; k < LM_MEMORY; k++) bound = fmax(bound, sim->lm_history[k]);
     /* A cycle: a grain whose contact switches between sticking and sliding (the sliding contact has
      * no tangential stiffness in K) can alternate between two configurations whose merits both
@@ -316,13 +316,15 @@ static gb_status global_move(gb_sim *sim, const gb_wall_control *wc, double wall
     if (sim->lm_since > LM_STALL) bound = m0;
     gb_status st = gb_sim_state_save(sim, &sim->trial, err);
     if (st) return st;
+    if (sim->scene->solver.newton == GB_NEWTON_LINE_SEARCH) return gb_gem_line_search_move(sim, wc, m0, err);
     for (int trial = 0;; trial++) {
+        sim->work.trials++;
         if ((st = gb_global_moves(sim->global, sim, wc, sim->lm_mu, err))) return st;
-        sim->relaxation -= 0.5 * fixing_work(sim);
+        sim->relaxation -= 0.5 * gb_gem_fixing_work(sim);
         sim->half_pending = 1;
         if ((st = gb_gem_apply_moves(sim, err))) return st;
         gb_gem_forces(sim);
-        double m1 = merit(sim, sim->in_system, wall_moves(sim, wc));
+        double m1 = gb_gem_merit(sim, sim->in_system, gb_gem_wall_moves(sim, wc));
         if (m1 <= bound || trial == MAX_TRIALS || sim->lm_mu >= MU_MAX) {
             sim->lm_mu = fmax(sim->lm_mu / 4, MU_MIN);
             sim->lm_history[sim->lm_next++ % LM_MEMORY] = m0;
@@ -353,9 +355,9 @@ int gb_gem_iterate(gb_sim *sim, const gb_wall_control *wc, double *max_force, do
     /* Energy absorbed by the fixing forces (the "hand" that holds each grain) over a move, by the
      * trapezoid rule: the springs' energy changes by sum (F + B).dX + walls' work - dissipation,
      * so -sum F.dX is what the quasi-static iteration loses where a dynamic system would damp. */
-    if (sim->half_pending) sim->relaxation -= 0.5 * fixing_work(sim);
+    if (sim->half_pending) sim->relaxation -= 0.5 * gb_gem_fixing_work(sim);
     sim->half_pending = 0;
-    *wall_residual = wall_moves(sim, wc);
+    *wall_residual = gb_gem_wall_moves(sim, wc);
     if (!isfinite(*max_force) || !isfinite(*wall_residual)) {
         *st = gb_fail(err, GB_ENUMERIC, "a fixing force became non-finite");
         return 0;
@@ -371,7 +373,7 @@ int gb_gem_iterate(gb_sim *sim, const gb_wall_control *wc, double *max_force, do
         return 0;
     }
     for (int i = 0; i < sim->n; i++) gb_gem_grain_move(sim, i, &sim->dX[3 * i]);
-    sim->relaxation -= 0.5 * fixing_work(sim);
+    sim->relaxation -= 0.5 * gb_gem_fixing_work(sim);
     sim->half_pending = 1;
     *st = gb_gem_apply_moves(sim, err);
     return 0;

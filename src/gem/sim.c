@@ -21,6 +21,8 @@ void gb_sim_free(gb_sim *sim)
     free(sim->nc);
     free(sim->one);
     free(sim->in_system);
+    free(sim->ls_dir);
+    free(sim->sweep_mask);
     gb_sim_state_free(&sim->saved);
     gb_sim_state_free(&sim->trial);
     gb_sim_state_free(&sim->substep);
@@ -195,6 +197,14 @@ gb_status gb_sim_create(const gb_scene *scene, gb_sim **out, gb_error *err)
         gb_sim_free(sim);
         return st;
     }
+    if (scene->solver.method == GB_METHOD_GLOBAL && scene->solver.newton == GB_NEWTON_LINE_SEARCH) {
+        sim->ls_dir = malloc((3 * nn + 2 * (size_t)sim->bp.n + 2 * GB_N_WALLS) * sizeof(double));
+        sim->sweep_mask = malloc(nn);
+        if (!sim->ls_dir || !sim->sweep_mask) {
+            gb_sim_free(sim);
+            return gb_fail(err, GB_ENOMEM, "out of memory for %d grains", n);
+        }
+    }
     *out = sim;
     return GB_OK;
 }
@@ -303,6 +313,19 @@ static gb_status impose_strain(gb_sim *sim, double de1, double de2, gb_error *er
     sim->wall_dx[GB_WALL_TOP][1] = -dy;
     sim->wall_dx[GB_WALL_LEFT][0] = dx;
     sim->wall_dx[GB_WALL_RIGHT][0] = -dx;
+    if (sim->global && sim->scene->solver.newton == GB_NEWTON_LINE_SEARCH) {
+        /* The grains follow the box affinely, the prediction of a homogeneous strain: Newton
+         * starts with the increment spread over the packing instead of concentrated at the walls
+         * (FIRE-jammed 1e3 discs, 1 % oedometric in 20 steps: 7.7 iterations a step against 8.3,
+         * docs/solver/research.md). */
+        const gb_box *b = &sim->box;
+        double xc = 0.5 * (b->left + b->right), yc = 0.5 * (b->bottom + b->top);
+        double sx = 2 * dx / (b->right - b->left), sy = 2 * dy / (b->top - b->bottom);
+        for (int i = 0; i < sim->n; i++) {
+            sim->dX[3 * i] = -sx * (sim->g[i].x - xc);
+            sim->dX[3 * i + 1] = -sy * (sim->g[i].y - yc);
+        }
+    }
     return gb_gem_apply_moves(sim, err);
 }
 
@@ -424,6 +447,14 @@ static gb_status cut_back_step(gb_sim *sim, const gb_stage *sg, int k, const dou
     }
 }
 
+/* The global solver's work since the start of the run. */
+static gb_solver_work solver_work(const gb_sim *sim)
+{
+    gb_solver_work w = sim->work;
+    if (sim->global) w.factorisations = gb_global_statistics(sim->global)->factorisations;
+    return w;
+}
+
 gb_status gb_sim_run(gb_sim *sim, gb_step_fn on_step, void *user, gb_error *err)
 {
     const gb_scene *sc = sim->scene;
@@ -460,6 +491,7 @@ gb_status gb_sim_run(gb_sim *sim, gb_step_fn on_step, void *user, gb_error *err)
             long iters = 0;
             int substeps = 0;
             step++;
+            gb_solver_work work0 = solver_work(sim);
             st = cut_back_step(sim, sg, k, start, &iters, &substeps, &finest, &max_force, &residual, err);
             sim->iterations_total += iters;
             if (st == GB_ENOCONV) {
@@ -485,6 +517,10 @@ gb_status gb_sim_run(gb_sim *sim, gb_step_fn on_step, void *user, gb_error *err)
             rep.step = step;
             rep.iterations = iters;
             rep.substeps = substeps;
+            gb_solver_work work1 = solver_work(sim);
+            rep.work.trials = work1.trials - work0.trials;
+            rep.work.factorisations = work1.factorisations - work0.factorisations;
+            rep.work.sweeps = work1.sweeps - work0.sweeps;
             fill_report(sim, &rep);
             add_step_work(sim);
             rep.seconds = gb_clock_seconds() - t0;

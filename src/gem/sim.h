@@ -89,6 +89,10 @@ struct gb_sim {
     int lm_next;
     unsigned char *in_system; /* per grain: moved by the global system in this iteration (GB_IN_SYSTEM...) */
     long iterations_total;
+    gb_solver_work work;      /* the global solver's work since the start of the process: only its changes within
+                                 a load step are reported, so a resumed run needs none of it */
+    double *ls_dir;           /* solver.newton: line_search: the Newton direction of grains, particles, walls */
+    unsigned char *sweep_mask; /* and the grains its sweeps move */
     double detect_seconds;    /* spent on contact detection: the pair list's staleness and rebuilds */
     /* Energy accounts since the start of the run (absolute, force x length). */
     double work_walls;        /* done by the walls: quasi-static, from converged steps' forces */
@@ -132,5 +136,16 @@ void gb_gem_strain(const gb_sim *sim, double *e1, double *e2);
 
 /* The move of one grain by cases a) to d) of K section 2.5, from its F, S and contacts. */
 void gb_gem_grain_move(const gb_sim *sim, int i, double dX[3]);
+
+/* sum over grains of F.dX with the current F and dX: the fixing forces' work of a move */
+double gb_gem_fixing_work(const gb_sim *sim);
+/* The walls' moves of an iteration (sim->wall_dx); returns their residual (0 for fixed walls). */
+double gb_gem_wall_moves(gb_sim *sim, const gb_wall_control *wc);
+/* The global solver's merit: squared fixing forces of the grains in the system, of the boundary
+ * particles, and the walls' residual squared. */
+double gb_gem_merit(const gb_sim *sim, const unsigned char *in_system, double wall_residual);
+/* One iteration of the global solver with solver.newton: line_search (src/gem/line_search.c), from
+ * the configuration saved in sim->trial, whose merit is m0. */
+gb_status gb_gem_line_search_move(gb_sim *sim, const gb_wall_control *wc, double m0, gb_error *err);
 
 #endif

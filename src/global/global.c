@@ -1,68 +1,16 @@
-/* Assembly of the contact stiffness of grains, walls and boundary particles (with the host's
- * condensed stiffness), and its sparse solution. */
-#include "global/global.h"
-
-#include <cholmod.h>
+/* The global system's solution: its sparse pattern, factorisation (CHOLMOD or UMFPACK), the
+ * corrections of sliding contacts it unloads, and the moves it gives (assembly: assemble.c). */
 #include <math.h>
 #include <omp.h>
 #include <stdlib.h>
 #include <string.h>
-#include <umfpack.h>
 
 #include "core/clock.h"
-#include "gem/sim.h"
-
-/* Wall DOFs: x axis (left and right walls inward), y axis (bottom and top inward), and the
- * isotropic strain of constant mean stress control. */
-enum { NW = 3, W_X = 0, W_Y = 1, W_MEAN = 2 };
+#include "global/global_impl.h"
 
 /* Smallest relative diagonal shift: it keeps a system with a free rigid mode (a cluster held by
  * nothing) positive definite; if the factorisation still meets a zero pivot it grows tenfold. */
 static const double REGULARISE = 1e-10;
-
-/* The tangent stiffness, as a share of kn, of a frictionless single contact in the system. */
-static const double SINGLE_CONTACT_KT = 1e-2;
-
-/* The system is a graph of nodes: grains (3 DOFs: x, y, r w), boundary particles (2 DOFs) and the
- * wall DOFs (1 each), in that order. Column block v of the matrix holds, for each node u adjacent
- * to v (itself included, in increasing order), the rows of u's DOFs; every column of v has the
- * same rows. */
-struct gb_global {
-    gb_linear_kind kind;
-    int n, np;                /* grains, boundary particles */
-    int nodes, ndof;
-    long pattern_of;          /* pairs.rebuilds the pattern was built for (-1: none) */
-    int *dof0;                /* per node: its first DOF */
-    int *adj_start, *adj;     /* per node: adjacent nodes adj[adj_start[v] .. adj_start[v + 1]) */
-    int *adj_off;             /* per adjacency entry: row offset of that node within the column */
-    int *collen, *colstart;   /* per node: rows per column, first entry of its first column */
-    int adj_cap;
-    int *pos_ij, *pos_ji, pos_cap; /* per pair: entry of i in j's list, of j in i's list */
-    int *wall_in_grain;       /* per grain and wall DOF: entry of the wall in the grain's list, or -1 */
-    int *grain_in_wall;       /* per wall DOF and grain: entry of the grain in the wall's list, or -1 */
-    unsigned char *touch;     /* per grain: bit 0 pairs with the left/right wall, bit 1 bottom/top */
-    int *Ap, *Ai, nnz, cap;
-    double *Ax;
-    double *rhs, *x;
-    unsigned char *held;      /* per DOF: held (identity row) */
-    double *S;                /* per grain: its block of K (s00 s01 s02 s11 s12 s22) */
-    double *Sp;               /* per particle: its contact block (s00 s01 s11) */
-    double *kt;               /* per pair: tangential stiffness used in K (0 for a sliding contact) */
-    unsigned char *stick;     /* per pair: kt in K even if it slides (a single contact in the system, or a
-                                 sliding contact that the first solution unloads) */
-    unsigned char *unloading; /* per pair: a sliding contact that a solution unloaded: kt in K until one
-                                 loads it again (reset with the pattern) */
-    int kt_cap;
-    unsigned char *resumed;   /* unloading flags from a checkpoint, for the pattern of pairs.rebuilds resumed_of */
-    long resumed_of;
-    cholmod_common cc;
-    cholmod_sparse *A;
-    cholmod_factor *L;
-    void *symbolic, *numeric;
-    double control[UMFPACK_CONTROL], info[UMFPACK_INFO];
-    gb_global_stats stats;
-};
-
 
 static int node_dofs(const gb_global *gl, int v) { return v < gl->n ? 3 : v < gl->n + gl->np ? 2 : 1; }
 
@@ -123,7 +71,8 @@ void gb_global_free(gb_global *gl)
     free(gl->dof0), free(gl->adj_start), free(gl->adj), free(gl->adj_off), free(gl->collen), free(gl->colstart);
     free(gl->pos_ij), free(gl->pos_ji), free(gl->wall_in_grain), free(gl->grain_in_wall), free(gl->touch);
     free(gl->Ap), free(gl->Ai), free(gl->Ax), free(gl->rhs), free(gl->x), free(gl->held);
-    free(gl->S), free(gl->Sp), free(gl->kt), free(gl->stick), free(gl->unloading), free(gl->resumed);
+    free(gl->S), free(gl->Sp), free(gl->kt), free(gl->slide), free(gl->stick), free(gl->unloading);
+    free(gl->resumed);
     free(gl);
 }
 
@@ -135,20 +84,6 @@ static int cmp_int(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-/* Entry of node u in v's adjacency list (binary search), or -1. */
-static int entry_of(const gb_global *gl, int v, int u)
-{
-    int lo = gl->adj_start[v], hi = gl->adj_start[v + 1] - 1;
-    while (lo <= hi) {
-        int mid = (lo + hi) / 2;
-        if (gl->adj[mid] == u) return mid;
-        if (gl->adj[mid] < u) lo = mid + 1;
-        else hi = mid - 1;
-    }
-    return -1;
-}
-
-static int wall_node(const gb_global *gl, int w) { return gl->n + gl->np + w; }
 
 /* Which wall DOFs a grain touching these walls is coupled to. */
 static int couples(unsigned char touch, int w) { return w == W_X ? (touch & 1) : w == W_Y ? (touch & 2) >> 1 : touch != 0; }
@@ -253,12 +188,6 @@ static gb_status build_pattern(gb_global *gl, const gb_pair_list *P, gb_error *e
     return GB_OK;
 }
 
-/* Adds v to the entry (row: DOF a of the node at adjacency entry q of node col; column: DOF b of
- * node col). */
-static inline void add(gb_global *gl, int col, int b, int q, int a, double v)
-{
-    gl->Ax[gl->colstart[col] + b * gl->collen[col] + gl->adj_off[q] + a] += v;
-}
 static gb_status analyse(gb_global *gl, gb_error *err)
 {
     double t0 = gb_clock_seconds();
@@ -340,151 +269,6 @@ static int factor_solve(gb_global *gl, gb_error *err, gb_status *st)
     }
     gl->stats.solve += gb_clock_seconds() - t0;
     return 0;
-}
-
-/* The length that converts wall DOF w into the inward displacement of wall `wall` (0 if the wall
- * does not move with it): 1 for the axes, half the reference side for the isotropic strain. */
-static double wall_lever(const gb_sim *sim, int w, int wall)
-{
-    int is_x = wall == GB_WALL_LEFT || wall == GB_WALL_RIGHT;
-    if (w == W_X) return is_x ? 1 : 0;
-    if (w == W_Y) return is_x ? 0 : 1;
-    return is_x ? 0.5 * sim->ref_width : 0.5 * sim->ref_height;
-}
-
-/* The tangent stiffness of every contact and the diagonal blocks of grains and particles. Unlike
- * the reference iteration, which keeps kt in S (K 8), a contact at its Coulomb limit (K 13) gets no
- * tangential stiffness: it slides, and Newton's method converges when its tangent is the true one. */
-static gb_status pair_buffers(gb_global *gl, const gb_pair_list *P, gb_error *err)
-{
-    if (P->n <= gl->kt_cap) return GB_OK;
-    double *kt = realloc(gl->kt, (size_t)P->cap * sizeof(double));
-    if (kt) gl->kt = kt;
-    unsigned char *stick = realloc(gl->stick, (size_t)P->cap);
-    if (stick) gl->stick = stick;
-    unsigned char *unloading = realloc(gl->unloading, (size_t)P->cap);
-    if (unloading) gl->unloading = unloading;
-    if (!kt || !stick || !unloading) return gb_fail(err, GB_ENOMEM, "out of memory");
-    memset(gl->unloading + gl->kt_cap, 0, (size_t)(P->cap - gl->kt_cap));
-    gl->kt_cap = P->cap;
-    return GB_OK;
-}
-
-static void tangents(gb_global *gl, const gb_sim *sim)
-{
-    memset(gl->S, 0, 6 * (size_t)gl->n * sizeof(double));
-    memset(gl->Sp, 0, 3 * (size_t)gl->np * sizeof(double));
-    for (int k = 0; k < sim->pairs.n; k++) {
-        const gb_pair *p = &sim->pairs.p[k];
-        gl->kt[k] = 0;
-        if (!(p->d > 0)) continue;
-        const gb_material *m = gb_sim_material(sim, p->j);
-        double limit = p->pn * gb_sim_tan_phi(sim, p->j) + m->cohesion;
-        double kn = m->kn, kt = fabs(p->pt) >= limit * (1 - 1e-9) && !gl->stick[k] ? 0 : m->kt;
-        /* The single contact of a grain in the system without a tangential spring: a tangent
-         * stiffness of its own along t keeps the grain's block regular. Its force has no
-         * tangential part, so the solution does not slide it: only K, not the forces, sees it. */
-        if (gl->stick[k] && !(kt > 0)) kt = SINGLE_CONTACT_KT * kn;
-        gl->kt[k] = kt;
-        double c = p->nx, s = p->ny;
-        double s00 = kn * c * c + kt * s * s, s01 = (kn - kt) * c * s, s11 = kn * s * s + kt * c * c;
-        double *S = &gl->S[6 * p->i];
-        S[0] += s00, S[1] += s01, S[2] += -kt * s, S[3] += s11, S[4] += kt * c, S[5] += kt;
-        if (p->j >= 0) {
-            S = &gl->S[6 * p->j];
-            S[0] += s00, S[1] += s01, S[2] += kt * s, S[3] += s11, S[4] += -kt * c, S[5] += kt;
-        } else if (GB_IS_PARTICLE(p->j)) {
-            double *Sp = &gl->Sp[3 * GB_PARTICLE_OF(p->j)];
-            Sp[0] += s00, Sp[1] += s01, Sp[2] += s11;
-        }
-    }
-}
-
-/* K = sum over contacts of [T T']^t S_c [T T'] (K 1-8, 25) over grains, boundary particles (the
- * translational part of T') and walls, plus the host's condensed stiffness on the particles (its
- * symmetric part for CHOLMOD), held DOFs as identity rows. A wall DOF that moves walls inward by
- * lever x its value changes a wall contact's overlap by as much: its coupling with grain i is
- * kn lever (c, s, 0). */
-static void assemble(gb_global *gl, const gb_sim *sim, double shift)
-{
-    memset(gl->Ax, 0, (size_t)gl->nnz * sizeof(double));
-    const unsigned char *held = gl->held;
-    int n = gl->n, np = gl->np;
-    for (int i = 0; i < n; i++) {
-        const double *S = &gl->S[6 * i];
-        double blk[3][3] = {{S[0], S[1], S[2]}, {S[1], S[3], S[4]}, {S[2], S[4], S[5]}};
-        int q = entry_of(gl, i, i);
-        for (int a = 0; a < 3; a++)
-            for (int b = 0; b < 3; b++) {
-                int h = held[3 * i + a] || held[3 * i + b];
-                add(gl, i, b, q, a, h ? (a == b ? 1.0 : 0.0) : blk[a][b] * (a == b ? 1 + shift : 1));
-            }
-    }
-    if (np > 0) {
-        const gb_host *host = sim->host;
-        const double *K = gl->kind == GB_LINEAR_CHOLMOD ? host->Ksym : host->K.K;
-        int m = host->m;
-        for (int e = 0; e < np; e++) {
-            int first = entry_of(gl, n + e, n); /* the particles are contiguous in every particle's list */
-            for (int f = 0; f < np; f++)
-                for (int a = 0; a < 2; a++)
-                    for (int b = 0; b < 2; b++) {
-                        double v = K[(2 * f + a) + (size_t)(2 * e + b) * m];
-                        if (held[gl->dof0[n + e] + b] || held[gl->dof0[n + f] + a]) {
-                            add(gl, n + e, b, first + f, a, f == e && a == b ? 1.0 : 0.0);
-                            continue;
-                        }
-                        if (f == e) {
-                            const double *Sp = &gl->Sp[3 * e];
-                            double c[2][2] = {{Sp[0], Sp[1]}, {Sp[1], Sp[2]}};
-                            v += c[a][b];
-                            if (a == b) v *= 1 + shift;
-                        }
-                        add(gl, n + e, b, first + f, a, v);
-                    }
-        }
-    }
-    double kww[NW] = {0, 0, 0};
-    for (int k = 0; k < sim->pairs.n; k++) {
-        const gb_pair *p = &sim->pairs.p[k];
-        if (!(p->d > 0)) continue;
-        int i = p->i;
-        const gb_material *mat = gb_sim_material(sim, p->j);
-        double c = p->nx, s = p->ny, kn = mat->kn, kt = gl->kt[k];
-        if (p->j < 0 && !GB_IS_PARTICLE(p->j)) {
-            double g[2] = {kn * c, kn * s};
-            for (int w = 0; w < NW; w++) {
-                double lever = wall_lever(sim, w, -1 - p->j);
-                int nw = wall_node(gl, w);
-                if (lever == 0 || held[gl->dof0[nw]]) continue;
-                kww[w] += kn * lever * lever;
-                int qi = gl->wall_in_grain[w * (n + 1) + i], qw = gl->grain_in_wall[w * (n + 1) + i];
-                for (int a = 0; a < 2; a++) {
-                    if (held[3 * i + a]) continue;
-                    add(gl, i, a, qi, 0, g[a] * lever);  /* (wall, grain a) */
-                    add(gl, nw, 0, qw, a, g[a] * lever); /* (grain a, wall) */
-                }
-            }
-            continue;
-        }
-        double r1[3] = {c, s, 0}, r2[3] = {-s, c, 1}, q1[3] = {-c, -s, 0}, q2[3] = {s, -c, 1};
-        int j = p->j >= 0 ? p->j : n + GB_PARTICLE_OF(p->j), nb = p->j >= 0 ? 3 : 2;
-        for (int a = 0; a < 3; a++)
-            for (int b = 0; b < nb; b++) {
-                if (held[3 * i + a] || held[gl->dof0[j] + b]) continue;
-                double v = kn * r1[a] * q1[b] + kt * r2[a] * q2[b]; /* T^t S_c T' */
-                add(gl, j, b, gl->pos_ij[k], a, v);                 /* (i, a) row, (j, b) column */
-                add(gl, i, a, gl->pos_ji[k], b, v);                 /* its transpose */
-            }
-    }
-    /* A wall DOF whose walls touch nothing gets the stiffness of one grain-wall contact, as in the
-     * reference iteration. */
-    for (int w = 0; w < NW; w++) {
-        int nw = wall_node(gl, w);
-        double lever = w == W_MEAN ? 0.5 * fmax(sim->ref_width, sim->ref_height) : 1;
-        double kmin = sim->scene->grain_wall.kn * lever * lever;
-        add(gl, nw, 0, entry_of(gl, nw, nw), 0, held[gl->dof0[nw]] ? 1.0 : fmax(kww[w], kmin) * (1 + shift));
-    }
 }
 
 /* The wall DOFs' residuals (force conjugate to each DOF minus its target, METHOD.md section 5):
@@ -601,7 +385,7 @@ static gb_status solve_system(gb_global *gl, const gb_sim *sim, const gb_wall_co
         }
     wall_residuals(gl, sim, wc);
     double shift = fmax(mu, REGULARISE), cap = fmax(1e3 * shift, 1e-3);
-    assemble(gl, sim, shift);
+    gb_global_assemble(gl, sim, shift);
     gl->stats.assemble += gb_clock_seconds() - t0;
     /* UMFPACK's symbolic analysis reads the values too: analyse the assembled matrix. */
     if (new_pattern && (st = analyse(gl, err))) return st;
@@ -619,7 +403,7 @@ static gb_status solve_system(gb_global *gl, const gb_sim *sim, const gb_wall_co
         shift *= 10;
         gl->stats.regularised++;
         t0 = gb_clock_seconds();
-        assemble(gl, sim, shift);
+        gb_global_assemble(gl, sim, shift);
         gl->stats.assemble += gb_clock_seconds() - t0;
     }
     return GB_OK;
@@ -662,7 +446,7 @@ gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const gb_wall_control *wc,
         gl->pattern_of = sim->pairs.rebuilds;
     }
     int n = gl->n, np = gl->np;
-    if ((st = pair_buffers(gl, &sim->pairs, err))) return st;
+    if ((st = gb_global_pair_buffers(gl, &sim->pairs, err))) return st;
     if (new_pattern && sim->pairs.n) memset(gl->unloading, 0, (size_t)sim->pairs.n);
     if (gl->resumed) resume_unloading(gl, &sim->pairs);
     /* A grain with a single contact in the system keeps that contact's kt (see mark_system). */
@@ -671,7 +455,7 @@ gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const gb_wall_control *wc,
         gl->stick[k] = p->d > 0 && (gl->unloading[k] || sim->in_system[p->i] == GB_IN_SYSTEM_NO_ROTATION ||
                                     (p->j >= 0 && sim->in_system[p->j] == GB_IN_SYSTEM_NO_ROTATION));
     }
-    tangents(gl, sim);
+    gb_global_tangents(gl, sim);
     gl->stats.assemble += gb_clock_seconds() - t0;
     if ((st = solve_system(gl, sim, wc, mu, new_pattern, 0, err))) return st;
     /* A sliding contact has no tangential stiffness in K (it slides on), but if the solution moves
@@ -701,7 +485,7 @@ gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const gb_wall_control *wc,
     }
     if (unloaded && unloaded <= PCG_MAX / 2) {
         t0 = gb_clock_seconds();
-        tangents(gl, sim);
+        gb_global_tangents(gl, sim);
         gl->stats.assemble += gb_clock_seconds() - t0;
         if ((st = solve_system(gl, sim, wc, mu, 0, 1, err))) return st;
         gl->stats.corrections++;
@@ -732,7 +516,7 @@ gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const gb_wall_control *wc,
         if (gl->held[d + w]) continue;
         double v = scale * gl->x[d + w];
         for (int wall = 0; wall < GB_N_WALLS; wall++) {
-            double in = v * wall_lever(sim, w, wall);
+            double in = v * gb_global_wall_lever(sim, w, wall);
             if (wall == GB_WALL_LEFT) sim->wall_dx[wall][0] += in;
             if (wall == GB_WALL_RIGHT) sim->wall_dx[wall][0] -= in;
             if (wall == GB_WALL_BOTTOM) sim->wall_dx[wall][1] += in;

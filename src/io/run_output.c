@@ -166,7 +166,7 @@ gb_status gb_run_output_open(const char *dir, const gb_sim *sim, int overwrite, 
         return gb_fail(err, GB_EIO, "%s: %s", path, strerror(errno));
     }
     fprintf(o->steps, "step,stage,e1_minus_e2,e1,e2,ev,s1,s2,stress_ratio,iterations,max_fixing_force,seconds,"
-                      "contacts,width,height,substeps\n");
+                      "contacts,width,height,substeps,trials,factorisations,sweeps\n");
     fflush(o->steps);
     snprintf(path, sizeof path, "%s/micromechanics.csv", dir);
     if (!(o->micro = fopen(path, "w"))) {
@@ -402,9 +402,10 @@ static gb_status checkpoint(gb_run_output *o, const gb_sim *sim, gb_error *err)
 gb_status gb_run_output_step(gb_run_output *o, const gb_sim *sim, const gb_step_report *r, gb_error *err)
 {
     gb_test_kill_point(o->steps);
-    fprintf(o->steps, "%d,%d,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%ld,%.6e,%.6e,%d,%.17g,%.17g,%d\n", r->step,
-            r->stage + 1, r->e1 - r->e2, r->e1, r->e2, r->ev, r->s1, r->s2, r->stress_ratio, r->iterations,
-            r->max_fixing_force, r->seconds, r->n_contacts, r->width, r->height, r->substeps);
+    fprintf(o->steps, "%d,%d,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%ld,%.6e,%.6e,%d,%.17g,%.17g,%d,%ld,%ld,%ld\n",
+            r->step, r->stage + 1, r->e1 - r->e2, r->e1, r->e2, r->ev, r->s1, r->s2, r->stress_ratio, r->iterations,
+            r->max_fixing_force, r->seconds, r->n_contacts, r->width, r->height, r->substeps, r->work.trials,
+            r->work.factorisations, r->work.sweeps);
     if (fflush(o->steps) != 0 || ferror(o->steps)) return gb_fail(err, GB_EIO, "%s/steps.csv: write failed", o->dir);
     gb_micro m;
     gb_micro_measure(sim, &m);

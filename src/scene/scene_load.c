@@ -12,7 +12,7 @@
 
 gb_solver_settings gb_solver_defaults(void)
 {
-    gb_solver_settings s = {0.75, 0.5, 20.0, 20.0, 0.0, 100000, GB_METHOD_REFERENCE, 0, 1.0, 0.1, 4};
+    gb_solver_settings s = {0.75, 0.5, 20.0, 20.0, 0.0, 100000, GB_METHOD_REFERENCE, 0, 1.0, 0.1, 4, GB_NEWTON_DAMPED};
     return s;
 }
 
@@ -86,9 +86,10 @@ static gb_status read_solver(gb_ymap *top, gb_solver_settings *sv, gb_error *err
     gb_status st;
     *sv = gb_solver_defaults();
     if ((st = gb_ymap_map(top, "solver", GB_Y_REQUIRED, &m, err))) return st;
-    char method[32] = "reference", linear[32] = "cholmod";
+    char method[32] = "reference", linear[32] = "", newton[32] = "damped";
     if ((st = gb_ymap_string(&m, "method", 0, method, sizeof method, err)) ||
-        (st = gb_ymap_string(&m, "linear", 0, linear, sizeof linear, err)))
+        (st = gb_ymap_string(&m, "linear", 0, linear, sizeof linear, err)) ||
+        (st = gb_ymap_string(&m, "newton", 0, newton, sizeof newton, err)))
         return st;
     struct fy_node *v;
     if (!strcmp(method, "global")) sv->method = GB_METHOD_GLOBAL;
@@ -97,10 +98,20 @@ static gb_status read_solver(gb_ymap *top, gb_solver_settings *sv, gb_error *err
         return gb_yaml_fail(m.doc, v, err, "solver.method: expected 'reference' (the GEM iteration) or 'global' "
                                            "(one sparse system), found '%s'", method);
     }
-    if (!strcmp(linear, "umfpack")) sv->linear = 1;
-    else if (strcmp(linear, "cholmod")) {
+    if (!strcmp(newton, "line_search")) sv->newton = GB_NEWTON_LINE_SEARCH;
+    else if (strcmp(newton, "damped")) {
+        gb_ymap_find(&m, "newton", 0, &v, err);
+        return gb_yaml_fail(m.doc, v, err, "solver.newton: expected 'damped' or 'line_search', found '%s'", newton);
+    }
+    if (!strcmp(linear, "umfpack") || (!linear[0] && sv->newton == GB_NEWTON_LINE_SEARCH)) sv->linear = 1;
+    else if (linear[0] && strcmp(linear, "cholmod")) {
         gb_ymap_find(&m, "linear", 0, &v, err);
         return gb_yaml_fail(m.doc, v, err, "solver.linear: expected 'cholmod' or 'umfpack', found '%s'", linear);
+    }
+    if (sv->newton == GB_NEWTON_LINE_SEARCH && (sv->method != GB_METHOD_GLOBAL || sv->linear != 1)) {
+        gb_ymap_find(&m, "newton", 0, &v, err);
+        return gb_yaml_fail(m.doc, v, err, "solver.newton: line_search is an iteration of method: global with "
+                                           "linear: umfpack (its exact tangent is not symmetric)");
     }
     if ((st = gb_ymap_number(&m, "global_alpha", GB_Y_POSITIVE, &sv->global_alpha, err)) ||
         (st = gb_ymap_number(&m, "max_move", GB_Y_POSITIVE, &sv->max_move, err)))

@@ -1,4 +1,5 @@
-/* Hard cases for both granular solvers (reference iteration, global CHOLMOD, global UMFPACK): each
+/* Hard cases for both granular solvers (reference iteration, global CHOLMOD, global UMFPACK, and
+ * the global solver's line search, solver.newton: line_search): each
  * either converges to the right answer or stops with a clear non-convergence status; never a
  * hang (every run is capped), never NaN.
  *  - three discs with kn from 1e6 to 1e12 dyn/cm at the same loading (s0 = 1.5e5 dyn/cm);
@@ -17,7 +18,9 @@
 #include "check.h"
 #include "gembem/gem.h"
 
-static const char *const SOLVERS[3] = {"reference", "global CHOLMOD", "global UMFPACK"};
+enum { N_SOLVERS = 4 };
+static const char *const SOLVERS[N_SOLVERS] = {"reference", "global CHOLMOD", "global UMFPACK",
+                                             "global line search"};
 
 typedef struct {
     double last_ratio;
@@ -41,14 +44,15 @@ static gb_status watch(void *user, const gb_sim *sim, const gb_step_report *r, g
 static gb_status run(gb_scene *s, int solver, outcome *o, const char *name)
 {
     s->solver.method = solver ? GB_METHOD_GLOBAL : GB_METHOD_REFERENCE;
-    s->solver.linear = solver == 2;
+    s->solver.linear = solver >= 2;
+    s->solver.newton = solver == 3 ? GB_NEWTON_LINE_SEARCH : GB_NEWTON_DAMPED;
     gb_error err = {0};
     gb_sim *sim = NULL;
     memset(o, 0, sizeof *o);
     o->finite = 1;
     gb_status st = gb_sim_create(s, &sim, &err);
     if (!st) st = gb_sim_run(sim, watch, o, &err);
-    printf("%-28s %-15s: %s%s%s\n", name, SOLVERS[solver], st ? "stopped: " : "converged", st ? err.msg : "",
+    printf("%-28s %-18s: %s%s%s\n", name, SOLVERS[solver], st ? "stopped: " : "converged", st ? err.msg : "",
            o->finite ? "" : " NON-FINITE");
     CHECK(st == GB_OK || st == GB_ENOCONV);
     if (st == GB_ENOCONV) CHECK(strstr(err.msg, "did not converge") != NULL);
@@ -80,7 +84,7 @@ int main(void)
     gb_stage st2[2];
     outcome o;
     char name[64];
-    for (int solver = 0; solver < 3; solver++) {
+    for (int solver = 0; solver < N_SOLVERS; solver++) {
         /* kn over six decades at the same loading: 1e6 makes overlaps of about 40 % of r. */
         for (double kn = 1e6; kn <= 1e12; kn *= 100) {
             gb_scene s = three_discs(kn, 0.7 * kn, 0, st2);

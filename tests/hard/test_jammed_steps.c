@@ -4,7 +4,8 @@
  *  - every solver converges to a = 100 dyn, the global solver in at most 60 iterations per step
  *    (a grain with a single contact once traded its force back and forth with the system: a
  *    two-cycle that took thousands of iterations, see mark_system in src/gem/relax.c);
- *  - the three solvers end at the same box (1e-5 relative: friction makes the answer depend
+ *  - the four solvers (the last: the global solver's line search, solver.newton: line_search) end
+ *    at the same box (1e-5 relative: friction makes the answer depend
  *    slightly on the path, the sizes agree to the springs' deformation), CHOLMOD and UMFPACK to
  *    1e-8 cm (the corrections: conjugate gradients against a new factorisation);
  *    and the walls carry the target stress.
@@ -16,19 +17,22 @@
 #include "check.h"
 #include "gem/sim.h"
 
-static const char *const NAMES[3] = {"reference", "global CHOLMOD", "global UMFPACK"};
+enum { N_SOLVERS = 4 };
+static const char *const NAMES[N_SOLVERS] = {"reference", "global CHOLMOD", "global UMFPACK",
+                                           "global line search"};
 
 int main(int argc, char **argv)
 {
     if (argc < 2) return fprintf(stderr, "usage: %s SCENE.yaml\n", argv[0]), 2;
-    gb_box end[3];
-    for (int solver = 0; solver < 3; solver++) {
+    gb_box end[N_SOLVERS];
+    for (int solver = 0; solver < N_SOLVERS; solver++) {
         gb_error err = {0};
         gb_scene sc;
         gb_sim *sim = NULL;
         CHECK(gb_scene_load(argv[1], &sc, &err) == GB_OK);
         sc.solver.method = solver ? GB_METHOD_GLOBAL : GB_METHOD_REFERENCE;
-        sc.solver.linear = solver == 2 ? GB_LINEAR_UMFPACK : GB_LINEAR_CHOLMOD;
+        sc.solver.linear = solver >= 2 ? GB_LINEAR_UMFPACK : GB_LINEAR_CHOLMOD;
+        sc.solver.newton = solver == 3 ? GB_NEWTON_LINE_SEARCH : GB_NEWTON_DAMPED;
         CHECK(gb_sim_create(&sc, &sim, &err) == GB_OK);
         if (!sim) return fprintf(stderr, "%s\n", err.msg), 1;
         gb_gem_forces(sim);
@@ -53,7 +57,7 @@ int main(int argc, char **argv)
             CHECK_NEAR(s1, wc.s1, 2 * sc.solver.accuracy / W);
             CHECK_NEAR(s2, wc.s2, 2 * sc.solver.accuracy / W);
         }
-        printf("%-15s: at most %ld iterations per step, box %.9f x %.9f\n", NAMES[solver], most,
+        printf("%-18s: at most %ld iterations per step, box %.9f x %.9f\n", NAMES[solver], most,
                sim->box.right - sim->box.left, sim->box.top - sim->box.bottom);
         if (solver) CHECK(most <= 60);
         end[solver] = sim->box;
@@ -65,7 +69,7 @@ int main(int argc, char **argv)
      * accuracy (a / kn = 1e-6 cm on a 13 cm box). */
     CHECK_NEAR(end[1].right - end[1].left, end[2].right - end[2].left, 1e-8);
     CHECK_NEAR(end[1].top - end[1].bottom, end[2].top - end[2].bottom, 1e-8);
-    for (int solver = 1; solver < 3; solver++) {
+    for (int solver = 1; solver < N_SOLVERS; solver++) {
         double W = end[0].right - end[0].left, H = end[0].top - end[0].bottom;
         CHECK_NEAR(end[solver].right - end[solver].left, W, 1e-5 * W);
         CHECK_NEAR(end[solver].top - end[solver].bottom, H, 1e-5 * H);

@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Issue 25, item 4: a converged state is a frictional equilibrium by METHOD.md's law, checked by an
+# independent recomputation (tools/check_equilibrium.py: its own contact detection, pn = kn d from
+# the positions, the stored pt, every grain's force and moment) after an oedometric path from the
+# jammed fixture with each solver (reference, global, global with newton: line_search); and the
+# checker fails on a state that is not one (a grain moved by 1e-5 cm; a tangential force past its
+# Coulomb cap).
+#   check_equilibrium.sh GEMBEM JAMMED_DIR OUT_DIR
+set -euo pipefail
+gembem=$1 jammed=$2 out=$3
+check=$(cd "$(dirname "$0")/../.." && pwd)/tools/check_equilibrium.py
+rm -rf "$out"; mkdir -p "$out"
+fails=0
+ok() { echo "ok: $*"; }
+bad() { echo "FAIL: $*"; fails=$((fails + 1)); }
+for method in reference global line_search; do
+  solver="method: $method"; [ $method = line_search ] && solver="method: global, newton: line_search"
+  sed -e "s|^grains: {file: jammed.csv}|grains: {file: $jammed/jammed.csv}|" \
+      -e "s|^solver: .*|solver: {$solver, accuracy: 100, max_iterations: 2000000}|" \
+      -e '/^loading:/,$d' "$jammed/scene.yaml" > "$out/$method.yaml"
+  printf 'loading:\n  - strain: {de1: 0.0005, de2: 0, steps: 4}\n' >> "$out/$method.yaml"
+  OPENBLAS_NUM_THREADS=1 "$gembem" run "$out/$method.yaml" -o "$out/$method" --quiet > /dev/null
+  if /usr/bin/python3 "$check" "$out/$method"; then ok "$method: the final state is an equilibrium"
+  else bad "$method: the final state is not an equilibrium"; fi
+done
+# Negative controls: the checker must refuse these.
+cp -r "$out/global" "$out/moved"
+awk -F, 'NR == 2 { $1 = sprintf("%.17g", $1 + 1e-5) } 1' OFS=, "$out/global/state_grains.csv" > "$out/moved/state_grains.csv"
+if /usr/bin/python3 "$check" "$out/moved" > "$out/moved.log"; then bad "a grain moved by 1e-5 cm passed"
+else ok "a grain moved by 1e-5 cm fails: $(grep -c FAIL "$out/moved.log") reasons"; fi
+cp -r "$out/global" "$out/slip"
+awk -F, 'NR > 1 && $2 ~ /^[0-9]+$/ && !done { $4 = sprintf("%.17g", 0.47 * $3); done = 1 } 1' OFS=, \
+  "$out/global/state_contacts.csv" > "$out/slip/state_contacts.csv"
+if /usr/bin/python3 "$check" "$out/slip" > "$out/slip.log" || ! grep -q Coulomb "$out/slip.log"; then
+  bad "a tangential force of 0.47 pn (tan 25 deg = 0.466) passed"
+else ok "a tangential force past its Coulomb cap fails"; fi
+[ $fails = 0 ] || { echo "$fails failure(s)"; exit 1; }
