@@ -45,9 +45,26 @@ typedef struct {
  * the run with that error. */
 typedef gb_status (*gb_step_fn)(void *user, const gb_sim *sim, const gb_step_report *rep, gb_error *err);
 
+/* One iteration of a load step (solver.history). */
+typedef struct {
+    int step;                /* the load step it belongs to */
+    int attempt;             /* 1, then 2, 3... for the relaxations of a cut-back step's sub-steps */
+    long iteration;          /* within the attempt, from 1 */
+    double max_fixing_force; /* largest |F| at the iteration's start (K 14) */
+    double wall_residual;    /* the walls' distance from their targets then */
+    double largest_move;     /* largest grain move of the iteration over its radius */
+    double damping;          /* global, newton: damped: the Levenberg-Marquardt damping after it; else 0 */
+    double length;           /* global, newton: line_search: the share of Newton's step taken, 0 when reference
+                                sweeps took over; else 0 */
+} gb_iteration_report;
+
+typedef void (*gb_iteration_fn)(void *user, const gb_iteration_report *rep);
+
 /* The scene must outlive the simulation. */
 gb_status gb_sim_create(const gb_scene *scene, gb_sim **out, gb_error *err);
 void gb_sim_free(gb_sim *sim);
+/* Calls fn after every iteration that did not converge (for solver.history); NULL: none. */
+void gb_sim_on_iteration(gb_sim *sim, gb_iteration_fn fn, void *user);
 
 /* Runs the whole loading program. A step that reaches the iteration cap returns GB_ENOCONV with a
  * message naming the step and its distance from convergence; the simulation then holds the state of

@@ -24,6 +24,9 @@ gb_status gb_run_output_resume_scene(const char *dir, char *path, size_t cap, gb
 /* One row of steps.csv (flushed at once), the snapshots the scene asks for at this step, and the
  * checkpoint when due (output.checkpoint_every, output.checkpoint_minutes). */
 gb_status gb_run_output_step(gb_run_output *o, const gb_sim *sim, const gb_step_report *rep, gb_error *err);
+/* One row of history.csv (solver.history), for gb_sim_on_iteration with o as user. A write error
+ * is reported by the next gb_run_output_step or gb_run_output_close. */
+void gb_run_output_iteration(void *o, const gb_iteration_report *rep);
 /* Writes the final state (state.yaml, state_grains.csv, state_contacts.csv), records the run's
  * status in run_info.yaml and frees o. */
 gb_status gb_run_output_close(gb_run_output *o, const gb_sim *sim, gb_status run_status, const char *message,

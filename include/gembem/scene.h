@@ -72,6 +72,7 @@ typedef struct {
     double max_move;       /* global: largest move per iteration, as a share of the grain's radius */
     int cutbacks;          /* a load step that does not converge is retried in halves, down to 1/2^cutbacks */
     int newton;            /* global: GB_NEWTON_DAMPED or GB_NEWTON_LINE_SEARCH */
+    int history;           /* write each iteration's largest force and move (history.csv) */
 } gb_solver_settings;
 
 enum { GB_METHOD_REFERENCE = 0, GB_METHOD_GLOBAL = 1 };

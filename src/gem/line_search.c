@@ -95,9 +95,13 @@ gb_status gb_gem_line_search_move(gb_sim *sim, const gb_wall_control *wc, double
         sim->work.trials++;
         if ((st = take_move(sim, err))) return st;
         double m1 = gb_gem_merit(sim, sim->in_system, gb_gem_wall_moves(sim, wc));
-        if (m1 <= (1 - ARMIJO * alpha) * m0) return GB_OK;
+        if (m1 <= (1 - ARMIJO * alpha) * m0) {
+            sim->ls_length = alpha;
+            return GB_OK;
+        }
         gb_sim_state_restore(sim, &sim->trial);
         gb_gem_forces(sim);
     }
+    sim->ls_length = 0;
     return sweep_unbalanced(sim, wc, m0, err);
 }

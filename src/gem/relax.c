@@ -379,9 +379,21 @@ int gb_gem_iterate(gb_sim *sim, const gb_wall_control *wc, double *max_force, do
     return 0;
 }
 
+/* solver.history: what iteration `it` of this relaxation did. */
+static void report_iteration(gb_sim *sim, long it, double max_force, double wall_residual)
+{
+    double move = 0;
+    for (int i = 0; i < sim->n; i++) move = fmax(move, hypot(sim->dX[3 * i], sim->dX[3 * i + 1]) / sim->g[i].r);
+    int global = sim->global != NULL, line_search = sim->scene->solver.newton == GB_NEWTON_LINE_SEARCH;
+    gb_iteration_report r = {sim->pos.step + 1, sim->attempt, it, max_force, wall_residual, move,
+                             global && !line_search ? sim->lm_mu : 0, global && line_search ? sim->ls_length : 0};
+    sim->on_iteration(sim->on_iteration_user, &r);
+}
+
 gb_status gb_gem_relax(gb_sim *sim, const gb_wall_control *wc, long cap, long *iterations, double *max_force,
                        double *wall_residual, gb_error *err)
 {
+    sim->attempt++;
     gb_status st = GB_OK;
     sim->lm_best = INFINITY, sim->lm_since = 0; /* the stall detection of global_move, per load step */
     for (long it = 0; it <= cap; it++) {
@@ -393,6 +405,7 @@ gb_status gb_gem_relax(gb_sim *sim, const gb_wall_control *wc, long cap, long *i
             *iterations += it;
             return st;
         }
+        if (sim->on_iteration) report_iteration(sim, it + 1, *max_force, *wall_residual);
     }
     *iterations += cap;
     return GB_ENOCONV;

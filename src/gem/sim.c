@@ -447,6 +447,12 @@ static gb_status cut_back_step(gb_sim *sim, const gb_stage *sg, int k, const dou
     }
 }
 
+void gb_sim_on_iteration(gb_sim *sim, gb_iteration_fn fn, void *user)
+{
+    sim->on_iteration = fn;
+    sim->on_iteration_user = user;
+}
+
 /* The global solver's work since the start of the run. */
 static gb_solver_work solver_work(const gb_sim *sim)
 {
@@ -492,6 +498,7 @@ gb_status gb_sim_run(gb_sim *sim, gb_step_fn on_step, void *user, gb_error *err)
             int substeps = 0;
             step++;
             gb_solver_work work0 = solver_work(sim);
+            sim->attempt = 0;
             st = cut_back_step(sim, sg, k, start, &iters, &substeps, &finest, &max_force, &residual, err);
             sim->iterations_total += iters;
             if (st == GB_ENOCONV) {

@@ -93,6 +93,10 @@ struct gb_sim {
                                  a load step are reported, so a resumed run needs none of it */
     double *ls_dir;           /* solver.newton: line_search: the Newton direction of grains, particles, walls */
     unsigned char *sweep_mask; /* and the grains its sweeps move */
+    double ls_length;         /* the share of Newton's step the last line search took (0: sweeps) */
+    gb_iteration_fn on_iteration; /* solver.history */
+    void *on_iteration_user;
+    int attempt;              /* relaxations in the current load step */
     double detect_seconds;    /* spent on contact detection: the pair list's staleness and rebuilds */
     /* Energy accounts since the start of the run (absolute, force x length). */
     double work_walls;        /* done by the walls: quasi-static, from converged steps' forces */

@@ -26,6 +26,8 @@ struct gb_run_output {
     FILE *steps;
     FILE *micro;  /* micromechanics.csv */
     FILE *host;   /* host_steps.csv (hybrid scenes) */
+    FILE *history; /* history.csv (solver.history) */
+    int history_failed;
     char command[1024];
     char started[64];
     int *snap_steps, n_snaps; /* steps that were written, for the .pvd collection */
@@ -46,6 +48,7 @@ static void list_appended(gb_run_output *o)
                                         "fields/triangles.pvd", "host_steps.csv"};
     o->n_appended = o->scene->host.present ? 5 : 4;
     for (int k = 0; k < o->n_appended; k++) o->appended[k] = names[k];
+    if (o->scene->solver.history) o->appended[o->n_appended++] = "history.csv";
 }
 
 static int dir_is_empty(const char *path)
@@ -190,8 +193,29 @@ gb_status gb_run_output_open(const char *dir, const gb_sim *sim, int overwrite, 
         }
         gb_host_write_steps_header(o->host, scene);
     }
+    if (scene->solver.history) {
+        snprintf(path, sizeof path, "%s/history.csv", dir);
+        if (!(o->history = fopen(path, "w"))) {
+            fclose(o->steps), fclose(o->micro);
+            if (o->host) fclose(o->host);
+            free(o);
+            return gb_fail(err, GB_EIO, "%s: %s", path, strerror(errno));
+        }
+        fprintf(o->history, "step,attempt,iteration,max_fixing_force,wall_residual,largest_move,damping,length\n");
+        fflush(o->history);
+    }
     *out = o;
     return GB_OK;
+}
+
+void gb_run_output_iteration(void *user, const gb_iteration_report *r)
+{
+    gb_run_output *o = user;
+    if (!o->history || o->history_failed) return;
+    gb_test_kill_point(o->history);
+    fprintf(o->history, "%d,%d,%ld,%.6e,%.6e,%.6e,%.6e,%.6e\n", r->step, r->attempt, r->iteration,
+            r->max_fixing_force, r->wall_residual, r->largest_move, r->damping, r->length);
+    if (fflush(o->history) != 0 || ferror(o->history)) o->history_failed = 1;
 }
 
 static int snapshot_due(const gb_scene *s, int step);
@@ -322,10 +346,11 @@ gb_status gb_run_output_resume(const char *dir, gb_sim *sim, const char *command
     if (!st) st = open_append(o, "steps.csv", &o->steps, err);
     if (!st) st = open_append(o, "micromechanics.csv", &o->micro, err);
     if (!st && o->scene->host.present) st = open_append(o, "host_steps.csv", &o->host, err);
+    if (!st && o->scene->solver.history) st = open_append(o, "history.csv", &o->history, err);
     if (!st) st = write_info(o, "running", NULL, err);
     if (st) {
-        FILE *files[3] = {o->steps, o->micro, o->host};
-        for (int k = 0; k < 3; k++)
+        FILE *files[4] = {o->steps, o->micro, o->host, o->history};
+        for (int k = 0; k < 4; k++)
             if (files[k]) fclose(files[k]);
         free(o->snap_steps);
         free(o);
@@ -407,6 +432,7 @@ gb_status gb_run_output_step(gb_run_output *o, const gb_sim *sim, const gb_step_
             r->max_fixing_force, r->seconds, r->n_contacts, r->width, r->height, r->substeps, r->work.trials,
             r->work.factorisations, r->work.sweeps);
     if (fflush(o->steps) != 0 || ferror(o->steps)) return gb_fail(err, GB_EIO, "%s/steps.csv: write failed", o->dir);
+    if (o->history_failed) return gb_fail(err, GB_EIO, "%s/history.csv: write failed", o->dir);
     gb_micro m;
     gb_micro_measure(sim, &m);
     gb_test_kill_point(o->micro);
@@ -466,7 +492,9 @@ gb_status gb_run_output_close(gb_run_output *o, const gb_sim *sim, gb_status run
     if (o->micro && fclose(o->micro) != 0 && !st)
         st = gb_fail(err, GB_EIO, "%s/micromechanics.csv: write failed", o->dir);
     if (o->host && fclose(o->host) != 0 && !st) st = gb_fail(err, GB_EIO, "%s/host_steps.csv: write failed", o->dir);
-    o->steps = o->micro = o->host = NULL;
+    if (o->history && fclose(o->history) != 0 && !st) o->history_failed = 1;
+    if ((o->history_failed) && !st) st = gb_fail(err, GB_EIO, "%s/history.csv: write failed", o->dir);
+    o->steps = o->micro = o->host = o->history = NULL;
     if (!st && sim) st = gb_state_write(o->dir, sim, err);
     if (!st && sim && sim->host) st = gb_host_write_outputs(o->dir, sim, err);
     if (!st) st = write_info(o, run_status == GB_OK ? "completed" : gb_status_name(run_status), message, err);

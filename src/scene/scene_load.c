@@ -12,7 +12,7 @@
 
 gb_solver_settings gb_solver_defaults(void)
 {
-    gb_solver_settings s = {0.75, 0.5, 20.0, 20.0, 0.0, 100000, GB_METHOD_REFERENCE, 0, 1.0, 0.1, 4, GB_NEWTON_DAMPED};
+    gb_solver_settings s = {0.75, 0.5, 20.0, 20.0, 0.0, 100000, GB_METHOD_REFERENCE, 0, 1.0, 0.1, 4, GB_NEWTON_DAMPED, 0};
     return s;
 }
 
@@ -123,6 +123,7 @@ static gb_status read_solver(gb_ymap *top, gb_solver_settings *sv, gb_error *err
         (st = gb_ymap_number(&m, "accuracy", GB_Y_REQUIRED | GB_Y_POSITIVE, &sv->accuracy, err)) ||
         (st = gb_ymap_int(&m, "max_iterations", 0, 1, 2000000000L, &sv->max_iterations, err)))
         return st;
+    if ((st = gb_ymap_bool(&m, "history", 0, &sv->history, err))) return st;
     long cutbacks = sv->cutbacks;
     if ((st = gb_ymap_int(&m, "cutbacks", 0, 0, 20, &cutbacks, err))) return st;
     sv->cutbacks = (int)cutbacks;

@@ -4,7 +4,7 @@
 # the positions, the stored pt, every grain's force and moment) after an oedometric path from the
 # jammed fixture with each solver (reference, global, global with newton: line_search); and the
 # checker fails on a state that is not one (a grain moved by 1e-5 cm; a tangential force past its
-# Coulomb cap).
+# Coulomb cap). The same runs check solver.history's history.csv against steps.csv.
 #   check_equilibrium.sh GEMBEM JAMMED_DIR OUT_DIR
 set -euo pipefail
 gembem=$1 jammed=$2 out=$3
@@ -16,12 +16,21 @@ bad() { echo "FAIL: $*"; fails=$((fails + 1)); }
 for method in reference global line_search; do
   solver="method: $method"; [ $method = line_search ] && solver="method: global, newton: line_search"
   sed -e "s|^grains: {file: jammed.csv}|grains: {file: $jammed/jammed.csv}|" \
-      -e "s|^solver: .*|solver: {$solver, accuracy: 100, max_iterations: 2000000}|" \
+      -e "s|^solver: .*|solver: {$solver, accuracy: 100, max_iterations: 2000000, history: true}|" \
       -e '/^loading:/,$d' "$jammed/scene.yaml" > "$out/$method.yaml"
   printf 'loading:\n  - strain: {de1: 0.0005, de2: 0, steps: 4}\n' >> "$out/$method.yaml"
   OPENBLAS_NUM_THREADS=1 "$gembem" run "$out/$method.yaml" -o "$out/$method" --quiet > /dev/null
   if /usr/bin/python3 "$check" "$out/$method"; then ok "$method: the final state is an equilibrium"
   else bad "$method: the final state is not an equilibrium"; fi
+  # solver.history: one row per iteration that did not converge, the iterations of steps.csv, each
+  # starting above the accuracy, the line search's length in (0, 1].
+  if awk -F, -v m=$method 'FNR == 1 { next } FILENAME ~ /steps/ { its += $10; next }
+      { rows++; if ($4 <= 100) bad = "a row at or below the accuracy";
+        if (m == "line_search" && !($8 >= 0 && $8 <= 1)) bad = "a length outside [0, 1]";
+        if (m == "reference" && ($7 != 0 || $8 != 0)) bad = "damping or length for the reference iteration" }
+      END { if (rows != its) bad = rows " rows for " its " iterations"; if (bad) { print bad; exit 1 } }' \
+      "$out/$method/steps.csv" "$out/$method/history.csv"; then ok "$method: history.csv has a row per iteration"
+  else bad "$method: history.csv"; fi
 done
 # Negative controls: the checker must refuse these.
 cp -r "$out/global" "$out/moved"
