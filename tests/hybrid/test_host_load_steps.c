@@ -20,7 +20,8 @@
  *    and every group's force equal the boundary element module's solution of the body with a
  *    traction-free cavity (gb_bem_solve, 1e-9 of the largest).
  * Then the scene runs again and every step is bit-identical (host u and f0, grains).
- *   test_host_load_steps scene.yaml */
+ *   test_host_load_steps scene.yaml [line_search]
+ * line_search: the global solver's newton: line_search (UMFPACK) instead of the scene's solver. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -198,12 +199,18 @@ static gb_status record(run_log *log, const gb_sim *sim)
     return GB_OK;
 }
 
-static int run(const char *path, run_log *log)
+static int run(const char *path, int line_search, run_log *log)
 {
     gb_error err = {0};
     gb_scene sc;
     gb_sim *sim = NULL;
-    if (gb_scene_load(path, &sc, &err) || gb_sim_create(&sc, &sim, &err)) {
+    gb_status st0 = gb_scene_load(path, &sc, &err);
+    if (!st0 && line_search) {
+        sc.solver.method = GB_METHOD_GLOBAL;
+        sc.solver.linear = GB_LINEAR_UMFPACK;
+        sc.solver.newton = GB_NEWTON_LINE_SEARCH;
+    }
+    if (st0 || gb_sim_create(&sc, &sim, &err)) {
         fprintf(stderr, "%s\n", err.msg);
         return 1;
     }
@@ -220,11 +227,13 @@ static int run(const char *path, run_log *log)
 
 int main(int argc, char **argv)
 {
-    if (argc != 2) return fprintf(stderr, "usage: %s scene.yaml\n", argv[0]), 2;
+    if (argc < 2 || argc > 3 || (argc == 3 && strcmp(argv[2], "line_search")))
+        return fprintf(stderr, "usage: %s scene.yaml [line_search]\n", argv[0]), 2;
+    int line_search = argc == 3;
     run_log a, b;
-    if (run(argv[1], &a)) return 1;
+    if (run(argv[1], line_search, &a)) return 1;
     printf("second run\n");
-    if (run(argv[1], &b)) return 1;
+    if (run(argv[1], line_search, &b)) return 1;
     int same = a.n_steps == b.n_steps && a.per_step == b.per_step &&
                !memcmp(a.rec, b.rec, (size_t)a.n_steps * (size_t)a.per_step * sizeof(double));
     printf("%d steps (%d with an empty granular zone), run twice: %s\n", a.n_steps, a.empty_steps,
