@@ -142,20 +142,46 @@ static double curve_mesh_length(int curve)
     return len;
 }
 
+/* Total length of the current 1D mesh of all curves. */
+static double mesh_length(void)
+{
+    int *dt = NULL, ierr = 0;
+    size_t ndt = 0;
+    double total = 0;
+    gmshModelGetEntities(&dt, &ndt, 1, &ierr);
+    for (size_t i = 0; i + 1 < ndt; i += 2) total += curve_mesh_length(dt[i + 1]);
+    if (dt) gmshFree(dt);
+    return total;
+}
+
+/* A size that asks for more elements than a count may (GB_BEM_MAX_COUNT) is refused before gmsh
+ * meshes with it: a tiny size would mesh for hours and fill the memory. */
+static gb_status check_size(const extract *x, const char *what, double length, double size, gb_error *err)
+{
+    if (!(length / size <= GB_BEM_MAX_COUNT))
+        return gb_fail(err, GB_EINPUT, "%s: an element size of %g on %s (length %g) gives %.3g elements; at most %d",
+                       x->path, size, what, length, length / size, GB_BEM_MAX_COUNT);
+    return GB_OK;
+}
+
 /* Sizes and counts: global size through the mesh size options; per-group size or count through
- * transfinite curves, distributing a count over a group's curves by their lengths. */
+ * transfinite curves, distributing a count over a group's curves by their lengths. Lengths come
+ * from a first mesh with the file's own sizes. */
 static gb_status mesh_geo(extract *x, const gb_bem_mesh_opts *o, gb_error *err)
 {
     int ierr = 0;
-    if (o->size > 0) {
+    gmshModelMeshGenerate(1, &ierr);
+    gb_status st0 = gmsh_check(x->path, "mesh the boundary", ierr, err);
+    if (!st0 && o->size > 0 && !(st0 = check_size(x, "the whole boundary", mesh_length(), o->size, err))) {
         gmshOptionSetNumber("Mesh.MeshSizeFromPoints", 0, &ierr);
         gmshOptionSetNumber("Mesh.MeshSizeFromCurvature", 0, &ierr);
         gmshOptionSetNumber("Mesh.MeshSizeExtendFromBoundary", 0, &ierr);
         gmshOptionSetNumber("Mesh.MeshSizeMin", o->size, &ierr);
         gmshOptionSetNumber("Mesh.MeshSizeMax", o->size, &ierr);
+        gmshModelMeshClear(NULL, 0, &ierr);
+        gmshModelMeshGenerate(1, &ierr);
+        st0 = gmsh_check(x->path, "mesh the boundary", ierr, err);
     }
-    gmshModelMeshGenerate(1, &ierr);
-    gb_status st0 = gmsh_check(x->path, "mesh the boundary", ierr, err);
     if (st0 || o->n_group_sizes == 0) return st0;
     for (int i = 0; i < o->n_group_sizes; i++) {
         const gb_bem_group_size *gs = &o->group_sizes[i];
@@ -171,6 +197,9 @@ static gb_status mesh_geo(extract *x, const gb_bem_mesh_opts *o, gb_error *err)
             return gb_fail(err, GB_ENOMEM, "out of memory");
         }
         for (size_t c = 0; c < nc; c++) total += len[c] = curve_mesh_length(curves[c]);
+        char what[GB_BEM_NAME_MAX + 16];
+        snprintf(what, sizeof what, "group '%s'", gs->group);
+        if (gs->count <= 0) st = check_size(x, what, total, gs->size, err);
         int left = gs->count;
         double left_len = total;
         for (size_t c = 0; c < nc && !st; c++) {
