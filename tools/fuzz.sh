@@ -6,10 +6,11 @@
 #   RUNS=1000000 tools/fuzz.sh 1800          each target until 1e6 executions or 30 minutes
 # Prints per target the executions, the time and the findings (a crash, a sanitizer report, a leak,
 # a timeout of 30 s or more than 2 GB), which libFuzzer writes to build-fuzz/findings/<target>/;
-# exits 1 if there is any. Leaks: libFuzzer checks after every input whose mallocs and frees
-# differ, a full LeakSanitizer scan that gmsh (which keeps memory from one load to the next) would
-# trigger on every input that meshes a host; for the targets that mesh, LeakSanitizer checks once
-# at exit instead (its report names where the leaked block was allocated). libFuzzer stops a target at its first finding. A finding, once fixed, goes to fuzz/regress/<target>/ (ctest replays it).
+# exits 1 if there is any. libFuzzer stops a target at its first finding; once fixed, the input
+# goes to fuzz/regress/<target>/ (ctest replays it). Leaks: libFuzzer checks after every input
+# whose mallocs and frees differ, a full LeakSanitizer scan that gmsh (which keeps memory from one
+# load to the next) would trigger on every input that meshes a host; for the targets that mesh,
+# LeakSanitizer checks once at exit instead (its report names where the leaked block was allocated).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
