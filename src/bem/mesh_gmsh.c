@@ -22,8 +22,9 @@ typedef struct {
     int tags[GB_BEM_MAX_GROUPS];
     seg *segs;
     size_t nseg, capseg;
-    double *coord; /* by node tag: 3 per tag */
-    size_t max_tag;
+    double *coord; /* by node (read_nodes): 3 per node */
+    size_t *tag;   /* by node: its gmsh tag */
+    size_t n_nodes;
 } extract;
 
 static gb_status gmsh_error(const char *path, const char *what, gb_error *err)
@@ -305,6 +306,9 @@ static gb_status read_segments(extract *x, gb_error *err)
     return st;
 }
 
+/* The nodes, numbered densely in the order of their tags (x->tag[k] is node k's gmsh tag), and the
+ * segments renumbered so: a .msh may give any tags (a tag of 2e8 took 5 GB when nodes were
+ * indexed by tag, one near 2^64 / 24 overflowed the allocation). */
 static gb_status read_nodes(extract *x, gb_error *err)
 {
     size_t *tags = NULL, ntags = 0, ncoord = 0, npar = 0;
@@ -312,16 +316,32 @@ static gb_status read_nodes(extract *x, gb_error *err)
     int ierr = 0;
     gmshModelMeshGetNodes(&tags, &ntags, &xyz, &ncoord, &par, &npar, -1, -1, 0, 0, &ierr);
     gb_status st = ierr ? gmsh_error(x->path, "read the mesh nodes", err) : GB_OK;
-    for (size_t i = 0; i < ntags; i++)
-        if (tags[i] > x->max_tag) x->max_tag = tags[i];
+    size_t *order = NULL;
     if (!st) {
-        x->coord = malloc(sizeof(double) * 3 * (x->max_tag + 1));
-        if (!x->coord) st = gb_fail(err, GB_ENOMEM, "out of memory");
+        order = malloc(sizeof(size_t) * 2 * (ntags ? ntags : 1));
+        x->coord = malloc(sizeof(double) * 3 * (ntags ? ntags : 1));
+        x->tag = malloc(sizeof(size_t) * (ntags ? ntags : 1));
+        if (!order || !x->coord || !x->tag) st = gb_fail(err, GB_ENOMEM, "out of memory");
     }
     if (!st) {
-        for (size_t i = 0; i < 3 * (x->max_tag + 1); i++) x->coord[i] = NAN;
-        for (size_t i = 0; i < ntags; i++) memcpy(x->coord + 3 * tags[i], xyz + 3 * i, 3 * sizeof(double));
+        for (size_t i = 0; i < ntags; i++) order[2 * i] = tags[i], order[2 * i + 1] = i;
+        qsort(order, ntags, 2 * sizeof(size_t), cmp_size);
+        for (size_t k = 0; k < ntags; k++) {
+            x->tag[k] = order[2 * k];
+            memcpy(x->coord + 3 * k, xyz + 3 * order[2 * k + 1], 3 * sizeof(double));
+        }
+        x->n_nodes = ntags;
+        for (size_t s = 0; s < x->nseg && !st; s++) {
+            size_t *ends[2] = {&x->segs[s].n0, &x->segs[s].n1};
+            for (int k = 0; k < 2 && !st; k++) {
+                size_t key[2] = {*ends[k], 0};
+                size_t *hit = bsearch(key, order, ntags, 2 * sizeof(size_t), cmp_size);
+                if (!hit) st = gb_fail(err, GB_EINPUT, "%s: an element refers to an unknown node %zu", x->path, *ends[k]);
+                else *ends[k] = (size_t)(hit - order) / 2;
+            }
+        }
     }
+    free(order);
     if (tags) gmshFree(tags);
     if (xyz) gmshFree(xyz);
     if (par) gmshFree(par);
@@ -331,7 +351,7 @@ static gb_status read_nodes(extract *x, gb_error *err)
 /* Chains segments into closed loops: every node must join exactly two segments. */
 static gb_status chain_loops(extract *x, const gb_bem_mesh_opts *o, gb_bem_mesh *mesh, gb_error *err)
 {
-    size_t nt = x->max_tag + 1, n = x->nseg;
+    size_t nt = x->n_nodes, n = x->nseg;
     int *deg = calloc(nt, sizeof(int));
     size_t *adj = malloc(sizeof(size_t) * 2 * nt);
     int *used = calloc(n ? n : 1, sizeof(int));
@@ -344,10 +364,6 @@ static gb_status chain_loops(extract *x, const gb_bem_mesh_opts *o, gb_bem_mesh 
         size_t ends[2] = {x->segs[s].n0, x->segs[s].n1};
         for (int k = 0; k < 2 && !st; k++) {
             size_t v = ends[k];
-            if (v >= nt || isnan(x->coord[3 * v])) {
-                st = gb_fail(err, GB_EINPUT, "%s: an element refers to an unknown node %zu", x->path, v);
-                break;
-            }
             if (deg[v] < 2) adj[2 * v + (size_t)deg[v]] = s;
             deg[v]++;
         }
@@ -360,7 +376,7 @@ static gb_status chain_loops(extract *x, const gb_bem_mesh_opts *o, gb_bem_mesh 
                 st = gb_fail(err, GB_EINPUT,
                              "%s: the boundary is %s at node %zu (%.6g, %.6g) of group '%s': every loop must be closed "
                              "and simple",
-                             x->path, deg[v] == 1 ? "open" : "branching", v, x->coord[3 * v], x->coord[3 * v + 1],
+                             x->path, deg[v] == 1 ? "open" : "branching", x->tag[v], x->coord[3 * v], x->coord[3 * v + 1],
                              x->names[x->segs[s].group]);
         }
     }
@@ -449,5 +465,6 @@ gb_status gb_bem_mesh_load(const char *path, const gb_bem_mesh_opts *opts, gb_be
     if (!st) st = chain_loops(&x, o, mesh, err);
     free(x.segs);
     free(x.coord);
+    free(x.tag);
     return st;
 }

@@ -123,6 +123,20 @@ int main(void)
     CHECK(m.n_loops == 2 && well_oriented(&m));
     gb_bem_mesh_free(&m);
 
+    /* node tags far apart (fuzz/regress/mesh): the same mesh as with gmsh's own tags, read in
+     * milliseconds (nodes were indexed by tag: 2e12 asked for 48 TB, 7.7e17 overflowed) */
+    gb_bem_mesh ref;
+    CHECK(gb_bem_mesh_load("fuzz/corpus/mesh/square_cavity_v2.msh", &o, &ref, &err) == GB_OK);
+    const char *far[2] = {"fuzz/regress/mesh/node_tag_2e12.msh", "fuzz/regress/mesh/node_tag_overflow.msh"};
+    for (int k = 0; k < 2; k++) {
+        CHECK(gb_bem_mesh_load(far[k], &o, &m, &err) == GB_OK);
+        CHECK(m.n == ref.n && m.n_loops == ref.n_loops);
+        for (int e = 0; e < m.n && m.n == ref.n; e++)
+            CHECK(m.p0[2 * e] == ref.p0[2 * e] && m.p1[2 * e + 1] == ref.p1[2 * e + 1]);
+        gb_bem_mesh_free(&m);
+    }
+    gb_bem_mesh_free(&ref);
+
     /* broken input */
     CHECK(refused("meshes/does_not_exist.geo", &o, "cannot open"));
     CHECK(refused(write_tmp("syntax.geo", "Point(1) = {0, 0, 0\nLine(1) = {1, 2};\n"), &o, "gmsh could not read"));
