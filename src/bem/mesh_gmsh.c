@@ -1,5 +1,6 @@
 /* Boundary meshes through the gmsh C API: a .geo meshed to 1D with the requested sizes, or a .msh
  * read as it is. The one place where gmsh is initialised and finalised. */
+#define _POSIX_C_SOURCE 200809L /* strdup, setenv */
 #include <errno.h>
 #include <gmshc.h>
 #include <locale.h>
@@ -419,6 +420,22 @@ static gb_status chain_loops(extract *x, const gb_bem_mesh_opts *o, gb_bem_mesh 
     return st;
 }
 
+/* gmshInitialize appends the program's directory to PATH and PYTHONPATH at every call: the
+ * caller's values are put back (a process that loaded n meshes had them n entries long, and the
+ * fuzz targets ran out of memory on the copies; found by fuzz_contacts). */
+static char *env_save(const char *name)
+{
+    const char *v = getenv(name);
+    return v ? strdup(v) : NULL;
+}
+
+static void env_restore(const char *name, char *saved)
+{
+    if (saved) setenv(name, saved, 1);
+    else unsetenv(name);
+    free(saved);
+}
+
 gb_status gb_bem_mesh_load(const char *path, const gb_bem_mesh_opts *opts, gb_bem_mesh *mesh, gb_error *err)
 {
     memset(mesh, 0, sizeof *mesh);
@@ -445,7 +462,10 @@ gb_status gb_bem_mesh_load(const char *path, const gb_bem_mesh_opts *opts, gb_be
     char saved_numeric[128] = "C";
     const char *cur = setlocale(LC_NUMERIC, NULL);
     if (cur) snprintf(saved_numeric, sizeof saved_numeric, "%s", cur);
+    char *saved_path = env_save("PATH"), *saved_pythonpath = env_save("PYTHONPATH");
     gmshInitialize(0, NULL, 0, &ierr);
+    env_restore("PATH", saved_path);
+    env_restore("PYTHONPATH", saved_pythonpath);
     if (ierr) {
         setlocale(LC_NUMERIC, saved_numeric);
         return gb_fail(err, GB_EINTERNAL, "gmsh could not start");

@@ -3,6 +3,7 @@
 #include <locale.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "check.h"
@@ -88,6 +89,18 @@ int main(void)
     CHECK(nc == 40);
     CHECK(well_oriented(&m));
     gb_bem_mesh_free(&m);
+
+    /* gmshInitialize appends to PATH and PYTHONPATH: the caller's values come back (fuzz_contacts
+     * ran out of memory on them after 20 000 loads) */
+    static const char *const vars[2] = {"PATH", "PYTHONPATH"};
+    char before[2][4096];
+    for (int k = 0; k < 2; k++)
+        snprintf(before[k], sizeof before[k], "%s", getenv(vars[k]) ? getenv(vars[k]) : "(unset)");
+    for (int rep = 0; rep < 2; rep++) {
+        CHECK(gb_bem_mesh_load("tests/bem/annulus_coarse.msh", NULL, &m, &err) == GB_OK);
+        gb_bem_mesh_free(&m);
+    }
+    for (int k = 0; k < 2; k++) CHECK(!strcmp(before[k], getenv(vars[k]) ? getenv(vars[k]) : "(unset)"));
 
     /* gmsh sets LC_NUMERIC to "C": the caller's setting comes back */
     if (setlocale(LC_NUMERIC, "C.UTF-8")) {
