@@ -17,6 +17,10 @@ static int utf8_length(const unsigned char *s, size_t n)
     if ((size_t)len > n) return 0;
     for (int k = 1; k < len; k++)
         if ((s[k] & 0xc0) != 0x80) return 0;
+    /* no overlong forms, surrogates or code points above U+10FFFF (RFC 3629) */
+    if ((s[0] == 0xe0 && s[1] < 0xa0) || (s[0] == 0xed && s[1] > 0x9f) || (s[0] == 0xf0 && s[1] < 0x90) ||
+        (s[0] == 0xf4 && s[1] > 0x8f))
+        return 0;
     return len;
 }
 

@@ -64,6 +64,10 @@ int main(void)
     p = write_tmp("latin1", "a: 1\n%YAML\xe9\n");
     CHECK(gb_yaml_load(p, &doc, &err) == GB_EINPUT);
     CHECK(strstr(err.msg, ":2:6: byte 0xe9 is not UTF-8 text") != NULL);
+    p = write_tmp("overlong", "%\xe0\x9b\x9e\n"); /* a 3-byte form of a 2-byte character: it hung too */
+    CHECK(gb_yaml_load(p, &doc, &err) == GB_EINPUT && strstr(err.msg, ":1:2: byte 0xe0") != NULL);
+    p = write_tmp("surrogate", "%\xed\xa0\x80\n");
+    CHECK(gb_yaml_load(p, &doc, &err) == GB_EINPUT && strstr(err.msg, ":1:2: byte 0xed") != NULL);
     p = write_tmp("truncated", "a: caf\xc3");
     CHECK(gb_yaml_load(p, &doc, &err) == GB_EINPUT && strstr(err.msg, ":1:7: byte 0xc3") != NULL);
     static char big[8200];
