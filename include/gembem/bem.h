@@ -56,6 +56,7 @@ typedef struct {
 } gb_bem_mesh;
 
 /* Meshing options: a global element size and/or a size or element count per physical group. */
+#define GB_BEM_MAX_COUNT 1000000 /* elements a group's count may ask, or a size give (gb_bem_mesh_load) */
 typedef struct {
     char group[GB_BEM_NAME_MAX];
     double size; /* target element length (0: not set) */

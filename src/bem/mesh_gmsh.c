@@ -1,5 +1,6 @@
 /* Boundary meshes through the gmsh C API: a .geo meshed to 1D with the requested sizes, or a .msh
  * read as it is. The one place where gmsh is initialised and finalised. */
+#define _POSIX_C_SOURCE 200809L /* strdup, setenv */
 #include <errno.h>
 #include <gmshc.h>
 #include <locale.h>
@@ -22,8 +23,9 @@ typedef struct {
     int tags[GB_BEM_MAX_GROUPS];
     seg *segs;
     size_t nseg, capseg;
-    double *coord; /* by node tag: 3 per tag */
-    size_t max_tag;
+    double *coord; /* by node (read_nodes): 3 per node */
+    size_t *tag;   /* by node: its gmsh tag */
+    size_t n_nodes;
 } extract;
 
 static gb_status gmsh_error(const char *path, const char *what, gb_error *err)
@@ -142,20 +144,46 @@ static double curve_mesh_length(int curve)
     return len;
 }
 
+/* Total length of the current 1D mesh of all curves. */
+static double mesh_length(void)
+{
+    int *dt = NULL, ierr = 0;
+    size_t ndt = 0;
+    double total = 0;
+    gmshModelGetEntities(&dt, &ndt, 1, &ierr);
+    for (size_t i = 0; i + 1 < ndt; i += 2) total += curve_mesh_length(dt[i + 1]);
+    if (dt) gmshFree(dt);
+    return total;
+}
+
+/* A size that asks for more elements than a count may (GB_BEM_MAX_COUNT) is refused before gmsh
+ * meshes with it: a tiny size would mesh for hours and fill the memory. */
+static gb_status check_size(const extract *x, const char *what, double length, double size, gb_error *err)
+{
+    if (!(length / size <= GB_BEM_MAX_COUNT))
+        return gb_fail(err, GB_EINPUT, "%s: an element size of %g on %s (length %g) gives %.3g elements; at most %d",
+                       x->path, size, what, length, length / size, GB_BEM_MAX_COUNT);
+    return GB_OK;
+}
+
 /* Sizes and counts: global size through the mesh size options; per-group size or count through
- * transfinite curves, distributing a count over a group's curves by their lengths. */
+ * transfinite curves, distributing a count over a group's curves by their lengths. Lengths come
+ * from a first mesh with the file's own sizes. */
 static gb_status mesh_geo(extract *x, const gb_bem_mesh_opts *o, gb_error *err)
 {
     int ierr = 0;
-    if (o->size > 0) {
+    gmshModelMeshGenerate(1, &ierr);
+    gb_status st0 = gmsh_check(x->path, "mesh the boundary", ierr, err);
+    if (!st0 && o->size > 0 && !(st0 = check_size(x, "the whole boundary", mesh_length(), o->size, err))) {
         gmshOptionSetNumber("Mesh.MeshSizeFromPoints", 0, &ierr);
         gmshOptionSetNumber("Mesh.MeshSizeFromCurvature", 0, &ierr);
         gmshOptionSetNumber("Mesh.MeshSizeExtendFromBoundary", 0, &ierr);
         gmshOptionSetNumber("Mesh.MeshSizeMin", o->size, &ierr);
         gmshOptionSetNumber("Mesh.MeshSizeMax", o->size, &ierr);
+        gmshModelMeshClear(NULL, 0, &ierr);
+        gmshModelMeshGenerate(1, &ierr);
+        st0 = gmsh_check(x->path, "mesh the boundary", ierr, err);
     }
-    gmshModelMeshGenerate(1, &ierr);
-    gb_status st0 = gmsh_check(x->path, "mesh the boundary", ierr, err);
     if (st0 || o->n_group_sizes == 0) return st0;
     for (int i = 0; i < o->n_group_sizes; i++) {
         const gb_bem_group_size *gs = &o->group_sizes[i];
@@ -171,6 +199,9 @@ static gb_status mesh_geo(extract *x, const gb_bem_mesh_opts *o, gb_error *err)
             return gb_fail(err, GB_ENOMEM, "out of memory");
         }
         for (size_t c = 0; c < nc; c++) total += len[c] = curve_mesh_length(curves[c]);
+        char what[GB_BEM_NAME_MAX + 16];
+        snprintf(what, sizeof what, "group '%s'", gs->group);
+        if (gs->count <= 0) st = check_size(x, what, total, gs->size, err);
         int left = gs->count;
         double left_len = total;
         for (size_t c = 0; c < nc && !st; c++) {
@@ -276,6 +307,9 @@ static gb_status read_segments(extract *x, gb_error *err)
     return st;
 }
 
+/* The nodes, numbered densely in the order of their tags (x->tag[k] is node k's gmsh tag), and the
+ * segments renumbered so: a .msh may give any tags (a tag of 2e8 took 5 GB when nodes were
+ * indexed by tag, one near 2^64 / 24 overflowed the allocation). */
 static gb_status read_nodes(extract *x, gb_error *err)
 {
     size_t *tags = NULL, ntags = 0, ncoord = 0, npar = 0;
@@ -283,16 +317,32 @@ static gb_status read_nodes(extract *x, gb_error *err)
     int ierr = 0;
     gmshModelMeshGetNodes(&tags, &ntags, &xyz, &ncoord, &par, &npar, -1, -1, 0, 0, &ierr);
     gb_status st = ierr ? gmsh_error(x->path, "read the mesh nodes", err) : GB_OK;
-    for (size_t i = 0; i < ntags; i++)
-        if (tags[i] > x->max_tag) x->max_tag = tags[i];
+    size_t *order = NULL;
     if (!st) {
-        x->coord = malloc(sizeof(double) * 3 * (x->max_tag + 1));
-        if (!x->coord) st = gb_fail(err, GB_ENOMEM, "out of memory");
+        order = malloc(sizeof(size_t) * 2 * (ntags ? ntags : 1));
+        x->coord = malloc(sizeof(double) * 3 * (ntags ? ntags : 1));
+        x->tag = malloc(sizeof(size_t) * (ntags ? ntags : 1));
+        if (!order || !x->coord || !x->tag) st = gb_fail(err, GB_ENOMEM, "out of memory");
     }
     if (!st) {
-        for (size_t i = 0; i < 3 * (x->max_tag + 1); i++) x->coord[i] = NAN;
-        for (size_t i = 0; i < ntags; i++) memcpy(x->coord + 3 * tags[i], xyz + 3 * i, 3 * sizeof(double));
+        for (size_t i = 0; i < ntags; i++) order[2 * i] = tags[i], order[2 * i + 1] = i;
+        qsort(order, ntags, 2 * sizeof(size_t), cmp_size);
+        for (size_t k = 0; k < ntags; k++) {
+            x->tag[k] = order[2 * k];
+            memcpy(x->coord + 3 * k, xyz + 3 * order[2 * k + 1], 3 * sizeof(double));
+        }
+        x->n_nodes = ntags;
+        for (size_t s = 0; s < x->nseg && !st; s++) {
+            size_t *ends[2] = {&x->segs[s].n0, &x->segs[s].n1};
+            for (int k = 0; k < 2 && !st; k++) {
+                size_t key[2] = {*ends[k], 0};
+                size_t *hit = bsearch(key, order, ntags, 2 * sizeof(size_t), cmp_size);
+                if (!hit) st = gb_fail(err, GB_EINPUT, "%s: an element refers to an unknown node %zu", x->path, *ends[k]);
+                else *ends[k] = (size_t)(hit - order) / 2;
+            }
+        }
     }
+    free(order);
     if (tags) gmshFree(tags);
     if (xyz) gmshFree(xyz);
     if (par) gmshFree(par);
@@ -302,7 +352,7 @@ static gb_status read_nodes(extract *x, gb_error *err)
 /* Chains segments into closed loops: every node must join exactly two segments. */
 static gb_status chain_loops(extract *x, const gb_bem_mesh_opts *o, gb_bem_mesh *mesh, gb_error *err)
 {
-    size_t nt = x->max_tag + 1, n = x->nseg;
+    size_t nt = x->n_nodes, n = x->nseg;
     int *deg = calloc(nt, sizeof(int));
     size_t *adj = malloc(sizeof(size_t) * 2 * nt);
     int *used = calloc(n ? n : 1, sizeof(int));
@@ -315,10 +365,6 @@ static gb_status chain_loops(extract *x, const gb_bem_mesh_opts *o, gb_bem_mesh 
         size_t ends[2] = {x->segs[s].n0, x->segs[s].n1};
         for (int k = 0; k < 2 && !st; k++) {
             size_t v = ends[k];
-            if (v >= nt || isnan(x->coord[3 * v])) {
-                st = gb_fail(err, GB_EINPUT, "%s: an element refers to an unknown node %zu", x->path, v);
-                break;
-            }
             if (deg[v] < 2) adj[2 * v + (size_t)deg[v]] = s;
             deg[v]++;
         }
@@ -331,7 +377,7 @@ static gb_status chain_loops(extract *x, const gb_bem_mesh_opts *o, gb_bem_mesh 
                 st = gb_fail(err, GB_EINPUT,
                              "%s: the boundary is %s at node %zu (%.6g, %.6g) of group '%s': every loop must be closed "
                              "and simple",
-                             x->path, deg[v] == 1 ? "open" : "branching", v, x->coord[3 * v], x->coord[3 * v + 1],
+                             x->path, deg[v] == 1 ? "open" : "branching", x->tag[v], x->coord[3 * v], x->coord[3 * v + 1],
                              x->names[x->segs[s].group]);
         }
     }
@@ -374,6 +420,22 @@ static gb_status chain_loops(extract *x, const gb_bem_mesh_opts *o, gb_bem_mesh 
     return st;
 }
 
+/* gmshInitialize appends the program's directory to PATH and PYTHONPATH at every call: the
+ * caller's values are put back (a process that loaded n meshes had them n entries long, and the
+ * fuzz targets ran out of memory on the copies; found by fuzz_contacts). */
+static char *env_save(const char *name)
+{
+    const char *v = getenv(name);
+    return v ? strdup(v) : NULL;
+}
+
+static void env_restore(const char *name, char *saved)
+{
+    if (saved) setenv(name, saved, 1);
+    else unsetenv(name);
+    free(saved);
+}
+
 gb_status gb_bem_mesh_load(const char *path, const gb_bem_mesh_opts *opts, gb_bem_mesh *mesh, gb_error *err)
 {
     memset(mesh, 0, sizeof *mesh);
@@ -400,7 +462,10 @@ gb_status gb_bem_mesh_load(const char *path, const gb_bem_mesh_opts *opts, gb_be
     char saved_numeric[128] = "C";
     const char *cur = setlocale(LC_NUMERIC, NULL);
     if (cur) snprintf(saved_numeric, sizeof saved_numeric, "%s", cur);
+    char *saved_path = env_save("PATH"), *saved_pythonpath = env_save("PYTHONPATH");
     gmshInitialize(0, NULL, 0, &ierr);
+    env_restore("PATH", saved_path);
+    env_restore("PYTHONPATH", saved_pythonpath);
     if (ierr) {
         setlocale(LC_NUMERIC, saved_numeric);
         return gb_fail(err, GB_EINTERNAL, "gmsh could not start");
@@ -420,5 +485,6 @@ gb_status gb_bem_mesh_load(const char *path, const gb_bem_mesh_opts *opts, gb_be
     if (!st) st = chain_loops(&x, o, mesh, err);
     free(x.segs);
     free(x.coord);
+    free(x.tag);
     return st;
 }

@@ -102,7 +102,7 @@ static gb_status read_mesh(const gb_yaml_doc *doc, gb_ymap *root, gb_bem_scene *
             long count = 0;
             if ((st = gb_ymap_open(doc, fy_node_pair_value(p), path, &g, err))) return st;
             if ((st = gb_ymap_number(&g, "size", GB_Y_POSITIVE, &gs->size, err))) return st;
-            if ((st = gb_ymap_int(&g, "count", 0, 1, 1000000, &count, err))) return st;
+            if ((st = gb_ymap_int(&g, "count", 0, 1, GB_BEM_MAX_COUNT, &count, err))) return st;
             if ((st = gb_ymap_close(&g, err))) return st;
             gs->count = (int)count;
             if ((gs->size > 0) == (gs->count > 0))
@@ -122,7 +122,12 @@ static gb_status read_mesh(const gb_yaml_doc *doc, gb_ymap *root, gb_bem_scene *
             if (strstr(msg, needle))
                 return gb_yaml_fail(doc, gnodes[i], err, "mesh.groups: the mesh has no physical curve group named '%s'",
                                     s->mesh_opts.group_sizes[i].group);
+            snprintf(needle, sizeof needle, "on group '%s'", s->mesh_opts.group_sizes[i].group);
+            if (strstr(msg, "an element size of") && strstr(msg, needle))
+                return gb_yaml_fail(doc, gnodes[i], err, "mesh.groups.%s.size: %s", s->mesh_opts.group_sizes[i].group,
+                                    msg);
         }
+        if (strstr(msg, "an element size of")) return gb_yaml_fail(doc, lookup(&m, "size"), err, "mesh.size: %s", msg);
         return gb_yaml_fail(doc, file_node, err, "mesh.file: %s", msg);
     }
     return st;

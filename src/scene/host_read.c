@@ -61,7 +61,7 @@ gb_status gb_host_section_read(gb_ymap *top, gb_host_def *h, gb_error *err)
         memcpy(gs->group, key, len);
         gs->group[len] = '\0';
         long count = 0;
-        if ((st = gb_ymap_int(&counts, gs->group, GB_Y_REQUIRED, 3, 1000000, &count, err))) return st;
+        if ((st = gb_ymap_int(&counts, gs->group, GB_Y_REQUIRED, 3, GB_BEM_MAX_COUNT, &count, err))) return st;
         gs->count = (int)count;
     }
     if ((st = gb_ymap_close(&counts, err))) return st;

@@ -9,13 +9,57 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* Length of the UTF-8 sequence at s (n bytes left), 0 if it is not one. */
+static int utf8_length(const unsigned char *s, size_t n)
+{
+    int len = s[0] < 0x80 ? 1 : s[0] >= 0xc2 && s[0] < 0xe0 ? 2 : s[0] >= 0xe0 && s[0] < 0xf0 ? 3
+            : s[0] >= 0xf0 && s[0] < 0xf5 ? 4 : 0;
+    if ((size_t)len > n) return 0;
+    for (int k = 1; k < len; k++)
+        if ((s[k] & 0xc0) != 0x80) return 0;
+    /* no overlong forms, surrogates or code points above U+10FFFF (RFC 3629) */
+    if ((s[0] == 0xe0 && s[1] < 0xa0) || (s[0] == 0xed && s[1] > 0x9f) || (s[0] == 0xf0 && s[1] < 0x90) ||
+        (s[0] == 0xf4 && s[1] > 0x8f))
+        return 0;
+    return len;
+}
+
+/* YAML is UTF-8 text here, checked before libfyaml sees it: libfyaml 0.7 loops forever on a
+ * directive line ('%') holding a byte that is not UTF-8 (found by fuzzing, fuzz/regress/scene). */
+static gb_status check_utf8(const char *path, FILE *f, gb_error *err)
+{
+    unsigned char buf[4096];
+    size_t have = 0, n;
+    int line = 1, col = 1;
+    while ((n = fread(buf + have, 1, sizeof buf - have, f)) > 0 || have > 0) {
+        size_t end = have + n, i = 0;
+        int last = n == 0; /* no more bytes: what is left must be complete */
+        while (i < end) {
+            if (!last && end - i < 4) break; /* a sequence may continue in the next read */
+            int len = utf8_length(buf + i, end - i);
+            if (!len)
+                return gb_fail(err, GB_EINPUT, "%s:%d:%d: byte 0x%02x is not UTF-8 text; expected a YAML file in UTF-8",
+                               path, line, col, buf[i]);
+            if (buf[i] == '\n') line++, col = 1;
+            else col++;
+            i += (size_t)len;
+        }
+        memmove(buf, buf + i, end - i);
+        have = end - i;
+        if (last) break;
+    }
+    return GB_OK;
+}
+
 gb_status gb_yaml_load(const char *path, gb_yaml_doc *doc, gb_error *err)
 {
     memset(doc, 0, sizeof *doc);
     snprintf(doc->path, sizeof doc->path, "%s", path);
     FILE *probe = fopen(path, "rb");
     if (!probe) return gb_fail(err, GB_EINPUT, "%s: cannot open: %s", path, strerror(errno));
+    gb_status text = check_utf8(path, probe, err);
     fclose(probe);
+    if (text) return text;
 
     /* A fresh diag per parse, collecting errors so that we can report line and column. */
     struct fy_diag_cfg dcfg;

@@ -3,6 +3,7 @@
 #include <locale.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "check.h"
@@ -89,6 +90,18 @@ int main(void)
     CHECK(well_oriented(&m));
     gb_bem_mesh_free(&m);
 
+    /* gmshInitialize appends to PATH and PYTHONPATH: the caller's values come back (fuzz_contacts
+     * ran out of memory on them after 20 000 loads) */
+    static const char *const vars[2] = {"PATH", "PYTHONPATH"};
+    char before[2][4096];
+    for (int k = 0; k < 2; k++)
+        snprintf(before[k], sizeof before[k], "%s", getenv(vars[k]) ? getenv(vars[k]) : "(unset)");
+    for (int rep = 0; rep < 2; rep++) {
+        CHECK(gb_bem_mesh_load("tests/bem/annulus_coarse.msh", NULL, &m, &err) == GB_OK);
+        gb_bem_mesh_free(&m);
+    }
+    for (int k = 0; k < 2; k++) CHECK(!strcmp(before[k], getenv(vars[k]) ? getenv(vars[k]) : "(unset)"));
+
     /* gmsh sets LC_NUMERIC to "C": the caller's setting comes back */
     if (setlocale(LC_NUMERIC, "C.UTF-8")) {
         CHECK(gb_bem_mesh_load("meshes/hole_infinite.geo", NULL, &m, &err) == GB_OK);
@@ -122,6 +135,20 @@ int main(void)
     CHECK(gb_bem_mesh_load("tests/bem/annulus_coarse.msh", &o, &m, &err) == GB_OK);
     CHECK(m.n_loops == 2 && well_oriented(&m));
     gb_bem_mesh_free(&m);
+
+    /* node tags far apart (fuzz/regress/mesh): the same mesh as with gmsh's own tags, read in
+     * milliseconds (nodes were indexed by tag: 2e12 asked for 48 TB, 7.7e17 overflowed) */
+    gb_bem_mesh ref;
+    CHECK(gb_bem_mesh_load("fuzz/corpus/mesh/square_cavity_v2.msh", &o, &ref, &err) == GB_OK);
+    const char *far[2] = {"fuzz/regress/mesh/node_tag_2e12.msh", "fuzz/regress/mesh/node_tag_overflow.msh"};
+    for (int k = 0; k < 2; k++) {
+        CHECK(gb_bem_mesh_load(far[k], &o, &m, &err) == GB_OK);
+        CHECK(m.n == ref.n && m.n_loops == ref.n_loops);
+        for (int e = 0; e < m.n && m.n == ref.n; e++)
+            CHECK(m.p0[2 * e] == ref.p0[2 * e] && m.p1[2 * e + 1] == ref.p1[2 * e + 1]);
+        gb_bem_mesh_free(&m);
+    }
+    gb_bem_mesh_free(&ref);
 
     /* broken input */
     CHECK(refused("meshes/does_not_exist.geo", &o, "cannot open"));

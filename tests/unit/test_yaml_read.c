@@ -58,5 +58,26 @@ int main(void)
     CHECK(gb_yaml_load(p, &doc, &err) == GB_EINPUT);
     CHECK(strstr(err.msg, "syntax error") != NULL);
     CHECK(gb_yaml_load("/nonexistent/scene.yaml", &doc, &err) == GB_EINPUT);
+
+    /* UTF-8 is checked before libfyaml, which looped forever on a directive with a byte that is not
+     * (fuzz/regress/scene): the place of the bad byte; a character split across two reads is fine */
+    p = write_tmp("latin1", "a: 1\n%YAML\xe9\n");
+    CHECK(gb_yaml_load(p, &doc, &err) == GB_EINPUT);
+    CHECK(strstr(err.msg, ":2:6: byte 0xe9 is not UTF-8 text") != NULL);
+    p = write_tmp("overlong", "%\xe0\x9b\x9e\n"); /* a 3-byte form of a 2-byte character: it hung too */
+    CHECK(gb_yaml_load(p, &doc, &err) == GB_EINPUT && strstr(err.msg, ":1:2: byte 0xe0") != NULL);
+    p = write_tmp("surrogate", "%\xed\xa0\x80\n");
+    CHECK(gb_yaml_load(p, &doc, &err) == GB_EINPUT && strstr(err.msg, ":1:2: byte 0xed") != NULL);
+    p = write_tmp("truncated", "a: caf\xc3");
+    CHECK(gb_yaml_load(p, &doc, &err) == GB_EINPUT && strstr(err.msg, ":1:7: byte 0xc3") != NULL);
+    static char big[8200];
+    for (int shift = 0; shift < 4; shift++) {
+        memset(big, 0, sizeof big);
+        memcpy(big, "a: ", 3);
+        memset(big + 3, 'x', 4092 - 3 + (size_t)shift);
+        strcat(big, "\xc3\xa9\xe2\x82\xac\xf0\x9f\x98\x80\n"); /* e acute, euro, an emoji across offset 4096 */
+        CHECK(gb_yaml_load(write_tmp("split", big), &doc, &err) == GB_OK);
+        gb_yaml_free(&doc);
+    }
     TEST_END();
 }
