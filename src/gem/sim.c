@@ -125,7 +125,8 @@ static gb_status add_host(gb_sim *sim, gb_error *err)
  * (README, "Scaling to a million discs"). */
 static double memory_need(const gb_scene *scene)
 {
-    double per_grain = 5.0 * sizeof(gb_grain) + 17.0 * sizeof(double) + sizeof(int) + 1 + 2.0 * 5 * sizeof(gb_pair);
+    double per_grain = 5.0 * sizeof(gb_grain) + 17.0 * sizeof(double) + sizeof(int) + 1;
+    per_grain += 2.0 * 5 * sizeof(gb_pair);
     if (scene->solver.method == GB_METHOD_GLOBAL) per_grain += 5.0e3;
     return per_grain * scene->n_grains;
 }
@@ -345,6 +346,9 @@ static gb_status impose_strain(gb_sim *sim, double de1, double de2, gb_error *er
             sim->dX[3 * i] = -sx * (sim->g[i].x - xc);
             sim->dX[3 * i + 1] = -sy * (sim->g[i].y - yc);
         }
+        /* a move of the grains like an iteration's: the fixing forces' work, by the trapezoid rule */
+        sim->relaxation -= 0.5 * gb_gem_fixing_work(sim);
+        sim->half_pending = 1;
     }
     return gb_gem_apply_moves(sim, err);
 }
