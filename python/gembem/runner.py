@@ -105,6 +105,7 @@ def execute(args, *, gembem=None, progress=print_progress, quiet=False, timeout=
         proc.wait()
     finally:
         os.close(master)
+        proc.stdout.close()
         if proc.poll() is None:   # interrupted (KeyboardInterrupt, timeout): gembem must not run on
             proc.kill()
             proc.wait()

@@ -1,0 +1,126 @@
+#!/usr/bin/python3
+"""Every reader on a hybrid run, and every standard figure drawn from it.
+
+tests/hybrid/load_grains.yaml (27 grains in the cavity of an elastic square, a confining
+pressure, then the top pushed) loaded with Scene.load, its mesh path made absolute, written
+elsewhere with the iteration history and the per-contact files asked for, and run. Checks that
+the readers agree with each other and with mechanics: the grains' forces on the boundary
+particles equal the host's (host_particles.csv), one row per step in steps, localisation and
+fields/, per group in host_steps, one particle per cavity element in the state; the host field's
+mesh is whole. Then each figure of gembem.figures is drawn, saved and its content counted; and
+a torn CSV row is an error naming its line.
+"""
+import os
+import unittest
+
+import numpy as np
+
+import gembem
+import gembem.figures as figures
+from common import RunDirTest
+
+ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
+
+
+class ReadersFigures(RunDirTest):
+    @classmethod
+    def setUpClass(cls):
+        import tempfile
+        cls.dir = tempfile.mkdtemp(prefix="gembem_ReadersFigures_run_")
+        sc = gembem.Scene.load(os.path.join(ROOT, "tests", "hybrid", "load_grains.yaml"))
+        sc.solver = dict(sc.solver, history=True)
+        sc.output = {"contacts_every": 1}
+        cls.rd = gembem.run(sc, os.path.join(cls.dir, "run"), quiet=True)
+
+    @classmethod
+    def tearDownClass(cls):
+        import shutil
+        shutil.rmtree(cls.dir, ignore_errors=True)
+
+    def test_tables(self):
+        run = self.rd
+        n = run.steps.nrows
+        self.assertEqual(n, 1 + 1 + 2 + 2)                         # step 0, relax, 2 + 2 host loads
+        self.assertEqual(list(run.localisation["step"]), list(range(n)))
+        self.assertEqual(list(run.micromechanics["step"]), list(range(n)))
+        self.assertEqual(run.steps_of("fields", "grains"), list(range(n)))
+        self.assertEqual(run.steps_of("contacts", "contacts"), list(range(n)))
+        groups = sorted(set(run.host_steps["group"]))
+        self.assertEqual(groups, ["bottom", "cavity", "left", "right", "top"])
+        self.assertEqual(run.host_steps.nrows, n * len(groups))
+        p = run.host_particles
+        scale = np.abs(p["host_fx"]).max()
+        np.testing.assert_allclose(p["grain_fx"], p["host_fx"], atol=1e-8 * scale)
+        np.testing.assert_allclose(p["grain_fy"], p["host_fy"], atol=1e-8 * scale)
+        self.assertGreater(run.history.nrows, 0)
+        self.assertTrue(set(run.history["step"]) <= set(range(1, n)))
+        self.assertEqual(run.status, "completed")
+        rec = run.steps.records()
+        self.assertEqual(rec["s1"][-1], run.steps["s1"][-1])
+
+    def test_state(self):
+        st = self.rd.state
+        self.assertEqual(st.grains.nrows, 27)
+        self.assertEqual(st.host_particles.nrows, st.host["cavity_elements"])
+        self.assertEqual(st.host["boundary"]["left"], {"pressure": 20})    # 2 steps of +10
+        # The last step's contacts file is the final state's contacts.
+        last = self.rd.contacts(self.rd.steps["step"][-1])
+        np.testing.assert_array_equal(last["pn"], st.contacts["pn"])
+        self.assertTrue(any(j.startswith("p") for j in st.contacts["j"]))  # boundary particles
+
+    def test_host_field(self):
+        m = self.rd.host_field()
+        t = m.triangles()
+        self.assertEqual(t.shape[1], 3)
+        self.assertEqual(t.max(), len(m.points) - 1)
+        self.assertEqual(m.point_data["stress"].shape, (len(m.points), 9))
+        np.testing.assert_array_equal(m.point_data["stress"][:, 0], m.point_data["sxx"])
+
+    def test_figures(self):
+        out = os.path.join(self.dir, "figures")
+        os.makedirs(out, exist_ok=True)
+        run, last = self.rd, int(self.rd.steps["step"][-1])
+        made = {
+            "force_chains": figures.force_chains(run, path=f"{out}/force_chains.png"),
+            "force_chains_step": figures.force_chains(run, step=2, path=f"{out}/force_chains_2.png"),
+            "stress_strain": figures.stress_strain(run, x="ev", y="s1", path=f"{out}/stress_strain.png"),
+            "load_displacement": figures.load_displacement(run, path=f"{out}/load_displacement.png"),
+            "convergence": figures.convergence(run, int(run.history["step"][0]), path=f"{out}/convergence.png"),
+            "rose": figures.rose(run, last, path=f"{out}/rose.png"),
+            "host_stress": figures.host_stress(run, path=f"{out}/host_stress.png"),
+        }
+        for name in made:
+            files = [f for f in os.listdir(out) if f.startswith(name.replace("_step", ""))]
+            self.assertTrue(files, name)
+            for f in files:
+                with open(os.path.join(out, f), "rb") as fh:
+                    self.assertEqual(fh.read(8), b"\x89PNG\r\n\x1a\n", f)
+        # force chains: one line per contact, the widest the largest normal force
+        lines = [c for c in made["force_chains"].axes[0].collections if hasattr(c, "get_segments")]
+        self.assertEqual(len(lines[0].get_segments()), run.state.contacts.nrows)
+        self.assertAlmostEqual(max(lines[0].get_linewidths()), 6.0)
+        # convergence: the step's iterations and its converged force
+        h = run.history
+        step = int(h["step"][0])
+        curve = made["convergence"].axes[0].lines[0].get_ydata()
+        self.assertEqual(len(curve), np.count_nonzero(h["step"] == step) + 1)
+        with self.assertRaises(ValueError):
+            figures.host_stress(run, component="nothing")
+
+    def test_torn_row(self):
+        src = self.rd.file("steps.csv")
+        torn = os.path.join(self.tmp, "steps.csv")
+        with open(src) as f:
+            text = f.read()
+        with open(torn, "w") as f:
+            f.write(text[: text.rindex(",")])        # the last row cut short, as a killed run leaves it
+        with self.assertRaisesRegex(ValueError, r"steps\.csv:7: 18 fields, expected 19"):
+            gembem.read_csv(torn)
+        with self.assertRaisesRegex(KeyError, "no column 'sigma'"):
+            self.rd.steps["sigma"]
+        with self.assertRaisesRegex(FileNotFoundError, "not a run directory"):
+            gembem.Run(self.tmp)
+
+
+if __name__ == "__main__":
+    unittest.main()
