@@ -2,6 +2,7 @@
 
 A study can catch what it expects (a step that did not converge) and let the rest stop it.
 """
+import signal
 
 
 class GembemError(Exception):
@@ -29,5 +30,11 @@ _BY_STATUS = {2: SceneError, 3: ConvergenceError, 4: OutputError}
 
 
 def error_for(returncode, message, command):
-    """The exception for an exit status (GembemError for any status without a class of its own)."""
+    """The exception for an exit status (GembemError for any status without a class of its own;
+    a negative status, as subprocess gives it, is the signal that killed gembem)."""
+    if returncode < 0 and not message.strip():
+        try:
+            message = f"killed by {signal.Signals(-returncode).name} (gembem.resume continues the run)"
+        except ValueError:
+            message = f"killed by signal {-returncode}"
     return _BY_STATUS.get(returncode, GembemError)(returncode, message, command)

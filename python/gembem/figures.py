@@ -10,6 +10,7 @@ from matplotlib.figure import Figure
 from matplotlib.patches import Circle, Rectangle
 
 from .rundir import Run
+from .vtk import read_vtk
 
 
 def _axes(ax, size=(6, 4.5), **kw):
@@ -152,6 +153,35 @@ def rose(run, step, column="count", ax=None, path=None):
     width = np.radians(r["to_deg"] - r["from_deg"])
     ax.bar(np.radians(r["from_deg"]) + width / 2, 100 * v / total, width=width, edgecolor="k", color="0.8")
     ax.set_title(f"contact {column} by direction, step {step} [%]", fontsize=10)
+    return _done(fig, path)
+
+
+def strain_map(run, step, quantity="gamma", ax=None, path=None, cmap="inferno", vmax=None):
+    """The strain increment of one load step on the triangulation of the grain centres
+    (fields/triangles_NNNNNN.vtu: cell data gamma, ev, exx, eyy, exy, rotation; compression
+    positive), the grains at the step's end outlined, the step's localisation index in the title."""
+    run = _runs(run)[0]
+    fig, ax = _axes(ax, size=(6.5, 5.5))
+    m = read_vtk(run.step_file("fields", "triangles", step, "vtu"))
+    if quantity not in m.cell_data:
+        raise ValueError(f"{m.path}: no cell data '{quantity}'; it has {', '.join(m.cell_data)}")
+    tri = m.triangles()
+    pc = ax.tripcolor(m.points[:, 0], m.points[:, 1], tri, facecolors=m.cell_data[quantity], cmap=cmap,
+                      vmax=vmax, edgecolors="none")
+    fig.colorbar(pc, ax=ax, label=f"{quantity} in step {step}")
+    g = run.field("grains", step)
+    r = run.state.grains["r"]    # radii do not change; the state lists the grains in the same order
+    ax.add_collection(PatchCollection([Circle((x, y), rr) for x, y, rr in zip(g["x"], g["y"], r[g["grain"]])],
+                                      facecolor="none", edgecolor="0.6", linewidths=0.4))
+    host = _host_segments(run)
+    if host is not None:
+        ax.add_collection(LineCollection(host, colors="0.4", linewidths=0.8))
+    ax.set_aspect("equal")
+    ax.autoscale_view()
+    loc = run.localisation
+    index = loc["localisation_index"][loc["step"] == step]
+    ax.set_title(f"{quantity} of step {step} on the centres' triangles"
+                 + (f", localisation index {index[0]:.3f}" if len(index) else ""), fontsize=10)
     return _done(fig, path)
 
 

@@ -68,7 +68,8 @@ def run(scene, run_dir, *, overwrite=False, gembem=None, progress=print_progress
     """Runs a scene into run_dir (`gembem run SCENE -o RUN_DIR`) and returns its gembem.rundir.Run.
 
     scene: a Scene (written to RUN_DIR.yaml beside the run directory, which gembem needs again to
-    resume it; grains_file as for Scene.write), or the path of a scene file. progress: called
+    resume it; grains_file as for Scene.write, relative to run_dir's parent: give each run its own
+    name if their grains differ), or the path of a scene file. progress: called
     with each Progress (None: no display). quiet: neither progress nor gembem's summary line.
     timeout: seconds, after which gembem is killed and TimeoutError raised (the run can be
     resumed). env: environment variables added for gembem (e.g. OPENBLAS_NUM_THREADS).
@@ -76,10 +77,20 @@ def run(scene, run_dir, *, overwrite=False, gembem=None, progress=print_progress
     """
     run_dir = os.fspath(run_dir)
     if isinstance(scene, Scene):
-        scene = scene.write(run_dir.rstrip(os.sep) + ".yaml", grains_file=grains_file)
+        path = run_dir.rstrip(os.sep) + ".yaml"
+        if (not overwrite and os.path.isdir(run_dir) and os.path.exists(path)
+                and _text(path) != scene.to_yaml(grains_file)):
+            raise FileExistsError(f"{path}: the scene of an earlier run (a resume needs it), not this scene; "
+                                  "expected overwrite=True to replace that run, or another run_dir")
+        scene = scene.write(path, grains_file=grains_file)
     args = ["run", os.fspath(scene), "-o", run_dir] + (["--overwrite"] if overwrite else [])
     execute(args, gembem=gembem, progress=progress, quiet=quiet, timeout=timeout, env=env)
     return Run(run_dir)
+
+
+def _text(path):
+    with open(path) as f:
+        return f.read()
 
 
 def resume(run_dir, scene=None, *, gembem=None, progress=print_progress, quiet=False, timeout=None, env=None):

@@ -88,6 +88,7 @@ class ReadersFigures(RunDirTest):
             "convergence": figures.convergence(run, int(run.history["step"][0]), path=f"{out}/convergence.png"),
             "rose": figures.rose(run, last, path=f"{out}/rose.png"),
             "host_stress": figures.host_stress(run, path=f"{out}/host_stress.png"),
+            "strain_map": figures.strain_map(run, last, path=f"{out}/strain_map.png"),
         }
         for name in made:
             files = [f for f in os.listdir(out) if f.startswith(name.replace("_step", ""))]
@@ -104,6 +105,9 @@ class ReadersFigures(RunDirTest):
         step = int(h["step"][0])
         curve = made["convergence"].axes[0].lines[0].get_ydata()
         self.assertEqual(len(curve), np.count_nonzero(h["step"] == step) + 1)
+        # strain map: one coloured triangle per triangle of the step's field, the grains outlined
+        faces = made["strain_map"].axes[0].collections[0].get_array()
+        self.assertEqual(len(faces), self.rd.localisation["triangles"][last])
         with self.assertRaises(ValueError):
             figures.host_stress(run, component="nothing")
 
