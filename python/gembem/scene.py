@@ -12,6 +12,9 @@ import pathlib
 from dataclasses import dataclass, field
 
 import numpy as np
+
+from .rundir import Run
+from .state import State
 from .yamlfile import dump_yaml, read_yaml
 
 # The scene keys that name files, which gembem resolves relative to the scene file's directory
@@ -27,8 +30,9 @@ class Scene:
 
     ``grains`` may be an N x 3 or N x 4 array (x, y, r[, rotation]), written inline or, with
     ``write(..., grains_file=NAME)``, as a CSV file beside the scene; or the section's own map
-    (``{"file": ...}``, ``{"list": ...}``). A pathlib.Path anywhere is written as an absolute
-    path; a str is written as given (gembem reads a relative one from the scene's directory).
+    (``{"file": ...}``, ``{"list": ...}``). ``initial_state`` may be a Run or a State (a
+    preparation run whose final state the scene starts from). A pathlib.Path anywhere is written
+    as an absolute path; a str as given (gembem reads a relative one from the scene's directory).
     """
     units: dict = None
     materials: dict = None
@@ -85,6 +89,8 @@ class Scene:
                 continue
             if f.name == "grains" and not isinstance(value, dict):
                 value = {"file": grains_file} if grains_file else {"list": np.asarray(value, dtype=float)}
+            if f.name == "initial_state" and isinstance(value, (Run, State)):
+                value = pathlib.Path(value.file("state.yaml") if isinstance(value, Run) else value.path)
             out[f.name] = value
         out.update(self.extra)
         return _plain(out)

@@ -5,7 +5,9 @@ Two discs of radius 1 on the bottom wall, one resting on both (theta0 = 60 deg),
 kn = 1e10: isotropic compression to 1.5e5 dyn/cm, then shear at constant mean stress. The stress
 ratio of the shear stage at e1 - e2 = 1..5 % (read from steps.csv) must be within 0.0003 of the
 rigid exact solution (validation/three_discs/table2.py's exact_ratio, (K 19)-(K 21)), the bound
-the C test three_discs_case4 holds; the run's progress reaches the caller step by step.
+the C test three_discs_case4 holds; the run's progress reaches the caller step by step. The same
+in two runs, the shear starting from the preparation's final state (initial_state: a Run), gives
+the same stress ratios (restarting is exact).
 """
 import math
 import os
@@ -56,6 +58,14 @@ class ThreeDiscs(RunDirTest):
             got, exact = shear["stress_ratio"][at[0]], exact_ratio(0.01 * k)
             self.assertLess(abs(got - exact), 3e-4, f"e1 - e2 = {k} %: {got} against the exact {exact}")
         np.testing.assert_allclose(shear["s1"] + shear["s2"], 3.0e5, rtol=1e-3)   # constant mean stress
+
+        whole = three_discs(1e10, 1.0)
+        prep = gembem.run(whole.with_value("loading", whole.loading[:1]), f"{self.tmp}/prep", quiet=True)
+        then = gembem.Scene(units=whole.units, materials=whole.materials, initial_state=prep,
+                            solver=whole.solver, loading=whole.loading[1:], output=whole.output)
+        self.assertEqual(then.to_dict()["initial_state"], os.path.realpath(f"{self.tmp}/prep/state.yaml"))
+        sheared = gembem.run(then, f"{self.tmp}/shear", quiet=True)
+        np.testing.assert_allclose(sheared.steps["stress_ratio"][1:], shear["stress_ratio"], rtol=0, atol=1e-12)
 
 
 if __name__ == "__main__":
