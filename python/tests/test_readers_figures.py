@@ -111,6 +111,19 @@ class ReadersFigures(RunDirTest):
         with self.assertRaises(ValueError):
             figures.host_stress(run, component="nothing")
 
+    def test_command_line(self):
+        from gembem.__main__ import main
+        out = os.path.join(self.tmp, "figures")
+        self.assertEqual(main(["figures", self.rd.path, out]), 0)
+        made = sorted(os.listdir(out))
+        last = int(self.rd.steps["step"][-1])
+        for name in ("force_chains.png", "stress_strain.png", "host_stress.png", f"rose_{last:06d}.png",
+                     f"strain_map_{last:06d}.png"):
+            self.assertIn(name, made)
+        self.assertTrue(any(n.startswith("convergence_") for n in made))
+        self.assertTrue(any(n.startswith("load_displacement_") for n in made))
+        self.assertEqual(main(["figures", self.tmp]), 1)      # not a run directory: a message, status 1
+
     def test_torn_row(self):
         src = self.rd.file("steps.csv")
         torn = os.path.join(self.tmp, "steps.csv")

@@ -61,6 +61,14 @@ class RoundTrip(RunDirTest):
         self.check("csv", "grains.csv")
         self.assertTrue(os.path.isfile(f"{self.tmp}/grains.csv"))
 
+    def test_numbers_as_gembem_reads_them(self):
+        # YAML 1.2 floats that PyYAML alone reads as strings: 1.0e8 (unsigned exponent), 1.5e5
+        sc = gembem.Scene.load(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
+                                            "validation", "three_discs", "case1.yaml"))
+        self.assertEqual(sc.materials["grain_grain"]["kn"], 1.0e8)
+        self.assertEqual(sc.loading[0]["isotropic"]["stress"], 1.5e5)
+        self.assertIn("kn: 100000000.0", sc.to_yaml())
+
     def test_with_value(self):
         sc = scene(grains())
         sc2 = sc.with_value("materials.grain_grain.friction_deg", 30).with_value("loading.0.relax.steps", 2)
