@@ -3,7 +3,9 @@
 Every CSV that gembem writes (steps.csv, history.csv, state_grains.csv, contacts/, fields/,
 host_*.csv, ...) has one header line of column names and one row per record. A column whose
 values are all integers becomes int64, all numbers float64, anything else (a contact's `j`,
-`left` or `p9`; a host group's name) an array of str.
+`left` or `p9`; a host group's name) an array of str. gembem writes a whole double without a
+point (`%.17g`: a rotation of 0 is "0"), so a quantity whole in every row reads as int64 too:
+arithmetic promotes it, but in-place float updates need ``.astype(float)`` first.
 """
 import csv
 import os
