@@ -29,7 +29,7 @@ class ReadersFigures(RunDirTest):
         cls.dir = tempfile.mkdtemp(prefix="gembem_ReadersFigures_run_")
         sc = gembem.Scene.load(os.path.join(ROOT, "tests", "hybrid", "load_grains.yaml"))
         sc.solver = dict(sc.solver, history=True)
-        sc.output = {"contacts_every": 1}
+        sc.output = {"contacts_every": 1, "snapshot_every": 2}
         cls.rd = gembem.run(sc, os.path.join(cls.dir, "run"), quiet=True)
 
     @classmethod
@@ -67,6 +67,20 @@ class ReadersFigures(RunDirTest):
         last = self.rd.contacts(self.rd.steps["step"][-1])
         np.testing.assert_array_equal(last["pn"], st.contacts["pn"])
         self.assertTrue(any(j.startswith("p") for j in st.contacts["j"]))  # boundary particles
+
+    def test_snapshots(self):
+        steps = self.rd.steps_of("snapshots", "grains", "vtp")
+        self.assertEqual(steps, [0, 2, 4])
+        pvd = gembem.read_pvd(self.rd.file("grains.pvd"))
+        self.assertEqual([int(t) for t, _ in pvd], steps)
+        self.assertEqual(pvd[-1][1], os.path.join(os.path.abspath(self.rd.path), "snapshots", "grains_000004.vtp"))
+        g, snap = self.rd.grains(4), self.rd.snapshot("grains", 4)
+        np.testing.assert_allclose(snap.points[:, 0], g["x"], rtol=1e-9, atol=1e-12)
+        np.testing.assert_allclose(snap.point_data["radius"], g["r"], rtol=1e-9)
+        c, lines = self.rd.contacts(4), self.rd.snapshot("contacts", 4)
+        contact = lines.cell_data["kind"] != 2                # kind 2: the box's four sides
+        self.assertEqual(len(lines.cells()), c.nrows + 4)
+        np.testing.assert_allclose(np.sort(lines.cell_data["pn"][contact]), np.sort(c["pn"]), rtol=1e-9)
 
     def test_host_field(self):
         m = self.rd.host_field()
