@@ -58,6 +58,20 @@ class ReadersFigures(RunDirTest):
         rec = run.steps.records()
         self.assertEqual(rec["s1"][-1], run.steps["s1"][-1])
 
+    def test_every_file(self):
+        # Every file gembem left is read by one of the package's readers (one CSV reader for all).
+        from gembem.yamlfile import read_yaml
+        readers = {"csv": gembem.read_csv, "vtu": gembem.read_vtk, "vtp": gembem.read_vtk,
+                   "pvd": gembem.read_pvd, "yaml": read_yaml}
+        count = 0
+        for root, _, files in os.walk(self.rd.path):
+            for f in files:
+                ext = f.rsplit(".", 1)[-1]
+                self.assertIn(ext, readers, f"{root}/{f}: no reader for it")
+                readers[ext](os.path.join(root, f))
+                count += 1
+        self.assertGreater(count, 50)
+
     def test_state(self):
         st = self.rd.state
         self.assertEqual(st.grains.nrows, 27)
