@@ -49,14 +49,13 @@ def standard_figures(run, out):
         path = os.path.join(out, "host_stress.png")
         figures.host_stress(run, path=path)
         yield path, "the host's in-plane von Mises stress at the end, under the grains' force chains"
-        h = run.host_steps
-        outer = h.select((h["group"] != "cavity") & (h["step"] == h["step"].max()))
-        if outer.nrows:
-            group = str(outer["group"][np.argmax(np.hypot(outer["fx"], outer["fy"]))])
-            path = os.path.join(out, f"load_displacement_{group}.png")
-            figures.load_displacement(run, group=group, path=path)
-            yield path, f"force on the host's '{group}' (its most loaded group) against its displacement"
-
+        pick = figures.loaded_group(run)
+        if pick is None:
+            return
+        group, axis = pick
+        path = os.path.join(out, f"load_displacement_{group}.png")
+        figures.load_displacement(run, group, axis, path=path)
+        yield path, f"force on the host's '{group}' against its displacement along {axis} (the loaded group)"
 
 def main(argv=None):
     ap = argparse.ArgumentParser(prog="python3 -m gembem", description=__doc__.split("\n")[0])

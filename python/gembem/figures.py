@@ -96,20 +96,46 @@ def stress_strain(runs, x="e1_minus_e2", y="stress_ratio", labels=None, stages=N
     return _done(fig, path)
 
 
-def load_displacement(runs, group="top", component="y", labels=None, ax=None, path=None):
+def loaded_group(run):
+    """The boundary group and axis ('x' or 'y') of a hybrid run that its loading drives: the
+    largest |change of mean displacement| x |change of force| over the run (host_steps.csv);
+    None when no group's displacement and force both change (a fixed body, an unbounded one)."""
+    h = run.host_steps
+    best, pick = 0.0, None
+    for g in sorted(set(h["group"]) - {"cavity"}):
+        rows = h.select(h["group"] == g)
+        for axis in ("x", "y"):
+            u, f = rows["u" + axis], rows["f" + axis]
+            work = abs(u[-1] - u[0]) * abs(f[-1] - f[0])
+            if work > best:
+                best, pick = work, (g, axis)
+    return pick
+
+
+def load_displacement(runs, group=None, component=None, labels=None, ax=None, path=None):
     """A hybrid run's load-displacement curve from host_steps.csv: the force the outside puts on
-    a boundary group against its mean displacement, both along x or y, sign flipped so that a
-    push is positive."""
+    a boundary group against its mean displacement along x or y, both negated when the group
+    is pushed in the negative direction, so that the loading curve rises. group and component
+    None: those of loaded_group (of the first run)."""
     runs = _runs(runs)
     fig, ax = _axes(ax)
+    if group is None or component is None:
+        pick = loaded_group(runs[0])
+        if pick is None:
+            raise ValueError(f"{runs[0].path}: no boundary group is loaded (its displacement and force both "
+                             "changing); expected group= and component=")
+        group, component = group or pick[0], component or pick[1]
     for k, run in enumerate(runs):
         h = run.host_steps
         h = h.select(h["group"] == group)
         if not h.nrows:
             raise ValueError(f"{h.path}: no group '{group}'; its groups are {', '.join(sorted(set(run.host_steps['group'])))}")
-        ax.plot(-h["u" + component], -h["f" + component], marker="o", ms=2.5, label=labels[k] if labels else run.path)
-    ax.set_xlabel(f"-u{component} of {group}")
-    ax.set_ylabel(f"-f{component} on {group}")
+        u, f = h["u" + component], h["f" + component]
+        sign = -1.0 if (u[-1] - u[0]) < 0 else 1.0
+        ax.plot(sign * u, sign * f, marker="o", ms=2.5, label=labels[k] if labels else run.path)
+    sign = "-" if sign < 0 else ""
+    ax.set_xlabel(f"{sign}u{component}: mean displacement of '{group}'")
+    ax.set_ylabel(f"{sign}f{component}: force on '{group}'")
     ax.grid(alpha=0.3)
     if len(runs) > 1 or labels:
         ax.legend(fontsize=8)

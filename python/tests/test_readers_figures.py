@@ -124,6 +124,7 @@ class ReadersFigures(RunDirTest):
             for f in files:
                 with open(os.path.join(out, f), "rb") as fh:
                     self.assertEqual(fh.read(8), b"\x89PNG\r\n\x1a\n", f)
+        self.assertEqual(figures.loaded_group(run), ("top", "y"))   # pushed down by 0.002, sideways by 0.001
         # force chains: one line per contact, the widest the largest normal force
         lines = [c for c in made["force_chains"].axes[0].collections if hasattr(c, "get_segments")]
         self.assertEqual(len(lines[0].get_segments()), run.state.contacts.nrows)
