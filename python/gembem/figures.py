@@ -126,10 +126,10 @@ def load_displacement(runs, group=None, component=None, labels=None, ax=None, pa
                              "changing); expected group= and component=")
         group, component = group or pick[0], component or pick[1]
     for k, run in enumerate(runs):
-        h = run.host_steps
-        h = h.select(h["group"] == group)
+        every = run.host_steps
+        h = every.select(every["group"] == group)
         if not h.nrows:
-            raise ValueError(f"{h.path}: no group '{group}'; its groups are {', '.join(sorted(set(run.host_steps['group'])))}")
+            raise ValueError(f"{h.path}: no group '{group}'; its groups are {', '.join(sorted(set(every['group'])))}")
         u, f = h["u" + component], h["f" + component]
         sign = -1.0 if (u[-1] - u[0]) < 0 else 1.0
         ax.plot(sign * u, sign * f, marker="o", ms=2.5, label=labels[k] if labels else run.path)
