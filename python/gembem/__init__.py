@@ -1,0 +1,23 @@
+"""gembem from Python: build a scene, run it, read its run directory, draw the standard figures.
+
+    import gembem
+    scene = gembem.Scene.load("validation/three_discs/case1.yaml")
+    run = gembem.run(scene.with_value("materials.grain_grain.friction_deg", 25), "runs/phi25")
+    run.steps["stress_ratio"], run.state.contacts["pn"]
+
+Modules: scene (Scene, YAML writing), runner (run, resume, find_gembem, Progress), errors
+(GembemError and one class per exit status), table (read_csv, Table), state (read_state),
+rundir (Run), vtk (read_vtk, read_pvd), figures (matplotlib, imported on demand).
+Dependencies: Debian's python3-numpy, python3-yaml; python3-matplotlib for figures.
+"""
+from .errors import ConvergenceError, GembemError, OutputError, SceneError
+from .rundir import Run
+from .runner import Progress, find_gembem, resume, run
+from .scene import Scene, write_grains_csv
+from .state import State, read_state
+from .table import Table, read_csv
+from .vtk import read_pvd, read_vtk
+
+__all__ = ["ConvergenceError", "GembemError", "OutputError", "SceneError", "Run", "Progress", "find_gembem",
+           "resume", "run", "Scene", "write_grains_csv", "State", "read_state", "Table", "read_csv",
+           "read_pvd", "read_vtk"]

@@ -1,0 +1,138 @@
+"""A run directory (what `gembem run SCENE -o RUN` leaves) as numpy arrays, file by file.
+
+Every CSV goes through the one reader, gembem.table.read_csv; the per-step files are named
+FOLDER/KIND_NNNNNN.csv (contacts/, fields/), VTK files go through gembem.vtk.
+"""
+import functools
+import os
+import re
+
+from .state import read_state
+from .table import read_csv
+from .vtk import read_vtk
+from .yamlfile import read_yaml
+
+# Why a file may be missing: which scene key or scene kind writes it (see the README's outputs).
+_WHY = {
+    "history.csv": "written with `solver: {history: true}`",
+    "contacts": "written every `output.contacts_every` steps and at snapshot steps",
+    "fields": "written every `output.measures_every` steps",
+    "snapshots": "written at `output.snapshot_every` / `snapshot_steps`",
+    "host": "written by hybrid scenes only, those with a `host:` section",
+}
+
+
+def _why(name):
+    key = name.split("/")[0] if "/" in name else name
+    if key.startswith("host_"):
+        key = "host"
+    return _WHY.get(key, "")
+
+
+def _table(name, doc):
+    """A Run attribute that reads NAME when first used."""
+    def get(self):
+        return self.table(name)
+    get.__doc__ = f"{name}: {doc}"
+    return functools.cached_property(get)
+
+
+class Run:
+    """The outputs of one run directory, read when first asked for (and then kept).
+
+    Tables (gembem.table.Table: columns by name): ``steps``, ``history``, ``micromechanics``,
+    ``localisation``, ``host_steps``, ``host_particles``, ``host_boundary``; any other CSV by its
+    path in the directory with ``table(name)``. Per step: ``contacts(step)``, ``grains(step)``,
+    ``rose(step)`` (contacts/), ``field(kind, step)`` (fields/: grains, sliding, host_wall,
+    host_ring), and which steps have them: ``steps_of(folder, kind)``. The final state:
+    ``state`` (gembem.state.State). YAML as dicts: ``scene``, ``run_info``, ``host_info``. VTK:
+    ``host_field()``, ``snapshot(kind, step)``.
+    """
+
+    def __init__(self, path):
+        self.path = os.fspath(path)
+        if not os.path.isfile(os.path.join(self.path, "run_info.yaml")):
+            raise FileNotFoundError(f"{self.path}: not a run directory (no run_info.yaml); "
+                                    "expected the RUNDIR of `gembem run SCENE -o RUNDIR`")
+
+    def __repr__(self):
+        return f"Run({self.path!r})"
+
+    def file(self, name):
+        """The path of a file of the run; a missing one raises FileNotFoundError saying what writes it."""
+        path = os.path.join(self.path, name)
+        if not os.path.exists(path):
+            why = _why(name)
+            raise FileNotFoundError(f"{path}: no such file in the run directory" + (f" ({why})" if why else ""))
+        return path
+
+    def table(self, name):
+        """Any CSV file of the run, by its path relative to the run directory."""
+        return read_csv(self.file(name))
+
+    steps = _table("steps.csv", "one row per load step, step 0 the initial state")
+    history = _table("history.csv", "one row per iteration that did not converge")
+    micromechanics = _table("micromechanics.csv", "fabric, elastic energy, work, dissipation per step")
+    localisation = _table("localisation.csv", "the per-step strain and localisation measures")
+    host_steps = _table("host_steps.csv", "per step and boundary group: displacement and force")
+    host_particles = _table("host_particles.csv", "the boundary particles at the end")
+    host_boundary = _table("host_boundary.csv", "per boundary element at the end")
+
+    @functools.cached_property
+    def state(self):
+        """The final state (state.yaml and its CSV files)."""
+        return read_state(self.file("state.yaml"))
+
+    @functools.cached_property
+    def scene(self):
+        """The run's copy of its scene (scene.yaml), as loaded by yaml."""
+        return read_yaml(self.file("scene.yaml"))
+
+    @functools.cached_property
+    def run_info(self):
+        """run_info.yaml: version, command, status."""
+        return read_yaml(self.file("run_info.yaml"))
+
+    @functools.cached_property
+    def host_info(self):
+        """host_info.yaml: the condensed host stiffness's asymmetry and condition."""
+        return read_yaml(self.file("host_info.yaml"))
+
+    @property
+    def status(self):
+        """run_info.yaml's status: completed, running (or killed), not converged, ... (read afresh)."""
+        return read_yaml(self.file("run_info.yaml")).get("status")
+
+    def step_file(self, folder, kind, step, ext="csv"):
+        return self.file(f"{folder}/{kind}_{int(step):06d}.{ext}")
+
+    def steps_of(self, folder, kind, ext="csv"):
+        """The steps that have a FOLDER/KIND_NNNNNN file, sorted (e.g. steps_of("fields", "grains"))."""
+        d = os.path.join(self.path, folder)
+        pat = re.compile(rf"{re.escape(kind)}_(\d{{6}})\.{ext}$")
+        names = os.listdir(d) if os.path.isdir(d) else []
+        return sorted(int(m.group(1)) for m in map(pat.match, names) if m)
+
+    def contacts(self, step=None):
+        """Contacts at a step (contacts/contacts_NNNNNN.csv), or of the final state (step None)."""
+        return self.state.contacts if step is None else read_csv(self.step_file("contacts", "contacts", step))
+
+    def grains(self, step=None):
+        """Grains at a step (contacts/grains_NNNNNN.csv), or of the final state (step None)."""
+        return self.state.grains if step is None else read_csv(self.step_file("contacts", "grains", step))
+
+    def rose(self, step):
+        """Contact directions by 10-degree sector at a step (contacts/rose_NNNNNN.csv)."""
+        return read_csv(self.step_file("contacts", "rose", step))
+
+    def field(self, kind, step):
+        """fields/KIND_NNNNNN.csv: kind grains, sliding, host_wall or host_ring."""
+        return read_csv(self.step_file("fields", kind, step))
+
+    def host_field(self):
+        """host_field.vtu: the host's interior displacement and stress at the end (gembem.vtk.Mesh)."""
+        return read_vtk(self.file("host_field.vtu"))
+
+    def snapshot(self, kind, step):
+        """snapshots/KIND_NNNNNN.vtp, kind grains or contacts (gembem.vtk.Mesh)."""
+        return read_vtk(self.step_file("snapshots", kind, step, "vtp"))
