@@ -228,28 +228,35 @@ gb_status gb_pairs_rebuild(gb_pair_list *L, const gb_world *w, gb_error *err)
     for (int e = 0; e < np; e++) L->px0[2 * e] = bp->x[e], L->px0[2 * e + 1] = bp->y[e];
     if (box) L->box0 = *box;
     L->rebuilds++;
+    L->generation = ++L->generations;
     return GB_OK;
+}
+
+void gb_pairs_drift(const gb_pair_list *L, const gb_world *w, double *grain, double *wall)
+{
+    const gb_box *box = w->box;
+    *wall = 0;
+    if (box)
+        *wall = fmax(fmax(fabs(box->left - L->box0.left), fabs(box->right - L->box0.right)),
+                     fmax(fabs(box->bottom - L->box0.bottom), fabs(box->top - L->box0.top)));
+    for (int e = 0; w->bp && e < w->bp->n; e++)
+        *wall = fmax(*wall, hypot(w->bp->x[e] - L->px0[2 * e], w->bp->y[e] - L->px0[2 * e + 1]));
+    double max2 = 0;
+    for (int i = 0; i < w->n; i++) max2 = fmax(max2, gb_pairs_grain_drift2(L, w, i));
+    *grain = sqrt(max2);
+}
+
+int gb_pairs_drift_stale(const gb_pair_list *L, double grain, double wall)
+{
+    /* A pair's gap shrinks by at most the sum of both sides' displacements. */
+    return 2 * grain >= L->skin || grain + wall >= L->skin;
 }
 
 int gb_pairs_stale(const gb_pair_list *L, const gb_world *w)
 {
-    const gb_box *box = w->box;
-    const gb_grain *g = w->g;
-    int n = w->n;
-    double wall = 0;
-    if (box)
-        wall = fmax(fmax(fabs(box->left - L->box0.left), fabs(box->right - L->box0.right)),
-                    fmax(fabs(box->bottom - L->box0.bottom), fabs(box->top - L->box0.top)));
-    for (int e = 0; w->bp && e < w->bp->n; e++)
-        wall = fmax(wall, hypot(w->bp->x[e] - L->px0[2 * e], w->bp->y[e] - L->px0[2 * e + 1]));
-    double max2 = 0;
-    for (int i = 0; i < n; i++) {
-        double dx = g[i].x - L->x0[2 * i], dy = g[i].y - L->x0[2 * i + 1], d2 = dx * dx + dy * dy;
-        if (d2 > max2) max2 = d2;
-    }
-    double grain = sqrt(max2);
-    /* A pair's gap shrinks by at most the sum of both sides' displacements. */
-    return 2 * grain >= L->skin || grain + wall >= L->skin;
+    double grain, wall;
+    gb_pairs_drift(L, w, &grain, &wall);
+    return gb_pairs_drift_stale(L, grain, wall);
 }
 
 int gb_pairs_brute_force(const gb_grain *g, int n, double range, int *out_i, int *out_j, int cap)

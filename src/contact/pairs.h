@@ -53,6 +53,9 @@ typedef struct {
     int *cand;            /* per-grain candidate buffer */
     int cand_cap;
     long rebuilds;
+    /* Which rebuild the list's pairs come from, unique within the process: `rebuilds` goes back
+     * when a saved state is restored and may then count a different list, this never repeats. */
+    long generation, generations;
 } gb_pair_list;
 
 void gb_pairs_free(gb_pair_list *L);
@@ -64,6 +67,16 @@ gb_status gb_pairs_rebuild(gb_pair_list *L, const gb_world *w, gb_error *err);
 /* True when some grain or wall has moved far enough since the last rebuild that a new contact
  * could be missing from the list. */
 int gb_pairs_stale(const gb_pair_list *L, const gb_world *w);
+/* The same test in parts, for callers that move few grains: the largest displacement since the
+ * rebuild of a grain (`grain`) and of a wall or particle (`wall`), the test on them, and the
+ * squared displacement of one grain. */
+void gb_pairs_drift(const gb_pair_list *L, const gb_world *w, double *grain, double *wall);
+int gb_pairs_drift_stale(const gb_pair_list *L, double grain, double wall);
+static inline double gb_pairs_grain_drift2(const gb_pair_list *L, const gb_world *w, int i)
+{
+    double dx = w->g[i].x - L->x0[2 * i], dy = w->g[i].y - L->x0[2 * i + 1];
+    return dx * dx + dy * dy;
+}
 
 /* Overlap and normal of a pair at the current positions. A grain behind a boundary particle (on
  * its flat side) does not touch it: its overlap is set negative. */

@@ -1,15 +1,17 @@
 /* The global solver's Newton iteration with a line search (solver.newton: line_search).
  *
  * The direction is Newton's on the exact tangent (src/global/assemble.c: sliding contacts and the
- * contacts' rotation included), solved once per iteration; the step length is found by
- * backtracking on the merit (the squared fixing forces, Armijo's rule), every trial taken from the
- * iteration's start so that the merit along the direction is a function of the length alone
- * (the incremental law, K 6 and 13, sees one move). Where no length lowers the merit (a cluster of
- * grains that must rearrange: the tangent of the start does not know the contacts it will open,
- * close or slide), the reference iteration moves the unbalanced grains and their neighbours
- * (K 9-12: each grain by its own stiffness, no global tangent) until the merit has fallen by a
- * tenth, and Newton resumes from there. docs/solver/research.md records the measurements that led
- * to each part. */
+ * contacts' rotation included), solved once per iteration, and its whole step is taken if it lowers
+ * the merit (the squared fixing forces) by Armijo's rule. If it does not, the step has met contacts
+ * that the tangent of the start does not know (grains that must rearrange: contacts that open,
+ * close or slide), and the reference iteration, which sees them at every sweep, moves the
+ * unbalanced grains and their neighbours (K 9-12: each grain by its own stiffness) until the merit
+ * has fallen to a thousandth (src/gem/sweeps.c); Newton resumes from there. Only where the sweeps
+ * do not lower the merit either (the rest is on boundary particles, which they do not move, or
+ * the cluster needs more than its neighbours) is the step shortened by backtracking (every trial
+ * from the iteration's start, so that the merit along the direction is a function of the length
+ * alone: the incremental law, K 6 and 13, sees one move).
+ * docs/solver/research.md records the measurements that led to each part. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -21,7 +23,7 @@ enum {
     MAX_SWEEPS = 5000   /* reference sweeps per stall; the load step's iteration cap bounds the stalls */
 };
 static const double ARMIJO = 1e-4;          /* sufficient decrease: m1 <= (1 - ARMIJO alpha) m0 */
-static const double SWEEP_DECREASE = 0.81;  /* the sweeps stop when the merit (squared) has fallen to this */
+static const double SWEEP_DECREASE = 1e-3; /* the sweeps stop when the merit (squared) has fallen to this */
 
 /* Grains, particles and walls moved by alpha times the direction; grains outside the system move
  * by their whole reference move (src/global/global.c). */
@@ -46,35 +48,24 @@ static gb_status take_move(gb_sim *sim, gb_error *err)
     return st;
 }
 
-/* Reference iterations (K 9-12) of the grains whose fixing force exceeds the accuracy and of the
- * grains in contact with them, the others held, until the merit falls to SWEEP_DECREASE m0. */
-static gb_status sweep_unbalanced(gb_sim *sim, const gb_wall_control *wc, double m0, gb_error *err)
+/* Backtracking from half of Newton's step: the first length whose merit passes Armijo's rule. */
+static gb_status backtrack(gb_sim *sim, const gb_wall_control *wc, double m0, const double *dir, int *found,
+                           gb_error *err)
 {
-    int n = sim->n;
-    double a2 = sim->scene->solver.accuracy * sim->scene->solver.accuracy;
-    unsigned char *moves = sim->sweep_mask;
-    for (int it = 0; it < MAX_SWEEPS; it++) {
-        double wall_residual = gb_gem_wall_moves(sim, wc);
-        if (gb_gem_merit(sim, sim->in_system, wall_residual) <= SWEEP_DECREASE * m0) return GB_OK;
-        memset(moves, 0, (size_t)n);
-        for (int i = 0; i < n; i++) {
-            const double *F = &sim->F[3 * i];
-            if (F[0] * F[0] + F[1] * F[1] + F[2] * F[2] > a2) moves[i] = 2;
-        }
-        for (int k = 0; k < sim->pairs.n; k++) {
-            const gb_pair *p = &sim->pairs.p[k];
-            if (!(p->d > 0) || p->j < 0) continue;
-            if (moves[p->i] == 2 && !moves[p->j]) moves[p->j] = 1;
-            if (moves[p->j] == 2 && !moves[p->i]) moves[p->i] = 1;
-        }
-        for (int i = 0; i < n; i++) {
-            if (moves[i]) gb_gem_grain_move(sim, i, &sim->dX[3 * i]);
-            else memset(&sim->dX[3 * i], 0, 3 * sizeof(double));
-        }
-        if (sim->bp.n) memset(sim->bp.dx, 0, 2 * (size_t)sim->bp.n * sizeof(double));
-        sim->work.sweeps++;
+    *found = 0;
+    double alpha = 0.5;
+    for (int h = 1; h <= MAX_HALVINGS; h++, alpha *= 0.5) {
+        set_move(sim, dir, alpha);
+        sim->work.trials++;
         gb_status st = take_move(sim, err);
         if (st) return st;
+        if (gb_gem_merit(sim, sim->in_system, gb_gem_wall_moves(sim, wc)) <= (1 - ARMIJO * alpha) * m0) {
+            sim->ls_length = alpha;
+            *found = 1;
+            return GB_OK;
+        }
+        gb_sim_state_restore(sim, &sim->trial);
+        gb_gem_forces(sim);
     }
     return GB_OK;
 }
@@ -89,19 +80,28 @@ gb_status gb_gem_line_search_move(gb_sim *sim, const gb_wall_control *wc, double
     memcpy(dir, sim->dX, 3 * (size_t)n * sizeof(double));
     if (np) memcpy(dir + 3 * n, sim->bp.dx, 2 * (size_t)np * sizeof(double));
     memcpy(dir + 3 * n + 2 * np, sim->wall_dx, sizeof sim->wall_dx);
-    double alpha = 1;
-    for (int h = 0; h <= MAX_HALVINGS; h++, alpha *= 0.5) {
-        set_move(sim, dir, alpha);
-        sim->work.trials++;
-        if ((st = take_move(sim, err))) return st;
-        double m1 = gb_gem_merit(sim, sim->in_system, gb_gem_wall_moves(sim, wc));
-        if (m1 <= (1 - ARMIJO * alpha) * m0) {
-            sim->ls_length = alpha;
-            return GB_OK;
-        }
-        gb_sim_state_restore(sim, &sim->trial);
-        gb_gem_forces(sim);
+    /* Newton's whole step, if it lowers the merit enough. */
+    set_move(sim, dir, 1);
+    sim->work.trials++;
+    if ((st = take_move(sim, err))) return st;
+    if (gb_gem_merit(sim, sim->in_system, gb_gem_wall_moves(sim, wc)) <= (1 - ARMIJO) * m0) {
+        sim->ls_length = 1;
+        return GB_OK;
     }
+    gb_sim_state_restore(sim, &sim->trial);
+    gb_gem_forces(sim);
+    /* If not, the step met contacts that its tangent did not know: the unbalanced clusters are
+     * settled by the reference iteration, which knows them at every sweep. */
     sim->ls_length = 0;
-    return sweep_unbalanced(sim, wc, m0, err);
+    int found;
+    if ((st = gb_gem_sweeps(sim, wc, SWEEP_DECREASE * m0, MAX_SWEEPS, err))) return st;
+    if (gb_gem_merit(sim, sim->in_system, gb_gem_wall_moves(sim, wc)) <= (1 - ARMIJO) * m0) return GB_OK;
+    /* The sweeps did not lower the merit either (what is left is on the particles, which they do
+     * not move, or the cluster needs grains beyond its neighbours): a shorter Newton step, and if
+     * none lowers the merit, the sweeps' configuration after all (the same sweeps again). */
+    gb_sim_state_restore(sim, &sim->trial);
+    gb_gem_forces(sim);
+    if ((st = backtrack(sim, wc, m0, dir, &found, err)) || found) return st;
+    sim->ls_length = 0;
+    return gb_gem_sweeps(sim, wc, SWEEP_DECREASE * m0, MAX_SWEEPS, err);
 }

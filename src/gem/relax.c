@@ -21,6 +21,46 @@ double gb_sim_tan_phi(const gb_sim *sim, int j)
     return GB_IS_PARTICLE(j) ? sim->tan_phi_gb : sim->tan_phi_gw;
 }
 
+void gb_gem_add_contact(gb_sim *sim, const gb_pair *p, double sign)
+{
+    const gb_material *mat = gb_sim_material(sim, p->j);
+    double c = p->nx, s = p->ny, kn = sign * mat->kn, kt = sign * mat->kt;
+    /* (K 8): S = sum T^t S_c T with T = [[c, s, 0], [-s, c, 1]] (K 2) */
+    double s00 = kn * c * c + kt * s * s, s01 = (kn - kt) * c * s, s11 = kn * s * s + kt * c * c;
+    double pn = sign * p->pn, pt = sign * p->pt;
+    double fx = c * pn - s * pt, fy = s * pn + c * pt;
+    int i = p->i, count = sign > 0 ? 1 : -1;
+    double *F = &sim->F[3 * i], *S = &sim->S[6 * i];
+    F[0] += fx, F[1] += fy, F[2] += pt;
+    S[0] += s00, S[1] += s01, S[2] += -kt * s, S[3] += s11, S[4] += kt * c, S[5] += kt;
+    sim->nc[i] += count;
+    if (sign > 0) {
+        double *one = &sim->one[3 * i];
+        one[0] = c, one[1] = s, one[2] = mat->kn;
+    }
+    if (p->j >= 0) {
+        /* B's block T' = [[-c, -s, 0], [s, -c, 1]] (K 25): same moment, opposite force. */
+        int j = p->j;
+        F = &sim->F[3 * j], S = &sim->S[6 * j];
+        F[0] -= fx, F[1] -= fy, F[2] += pt;
+        S[0] += s00, S[1] += s01, S[2] += kt * s, S[3] += s11, S[4] += -kt * c, S[5] += kt;
+        sim->nc[j] += count;
+        if (sign > 0) {
+            double *one = &sim->one[3 * j];
+            one[0] = -c, one[1] = -s, one[2] = mat->kn;
+        }
+    } else if (GB_IS_PARTICLE(p->j)) {
+        /* A boundary particle: the translational part of T' (K 25). */
+        int e = GB_PARTICLE_OF(p->j);
+        sim->bp_F[2 * e] -= fx, sim->bp_F[2 * e + 1] -= fy;
+        sim->bp_S[3 * e] += s00, sim->bp_S[3 * e + 1] += s01, sim->bp_S[3 * e + 2] += s11;
+    } else {
+        int w = -1 - p->j;
+        sim->wall_force[w] += pn;
+        sim->wall_k[w] += kn;
+    }
+}
+
 void gb_gem_forces(gb_sim *sim)
 {
     int n = sim->n;
@@ -38,42 +78,8 @@ void gb_gem_forces(gb_sim *sim)
         sim->F[3 * i] = -sim->body[2 * i];
         sim->F[3 * i + 1] = -sim->body[2 * i + 1];
     }
-    const gb_pair *P = sim->pairs.p;
-    for (int k = 0; k < sim->pairs.n; k++) {
-        const gb_pair *p = &P[k];
-        if (!(p->d > 0)) continue;
-        const gb_material *mat = gb_sim_material(sim, p->j);
-        double c = p->nx, s = p->ny, kn = mat->kn, kt = mat->kt;
-        /* (K 8): S = sum T^t S_c T with T = [[c, s, 0], [-s, c, 1]] (K 2) */
-        double s00 = kn * c * c + kt * s * s, s01 = (kn - kt) * c * s, s11 = kn * s * s + kt * c * c;
-        double fx = c * p->pn - s * p->pt, fy = s * p->pn + c * p->pt;
-        int i = p->i;
-        double *F = &sim->F[3 * i], *S = &sim->S[6 * i];
-        F[0] += fx, F[1] += fy, F[2] += p->pt;
-        S[0] += s00, S[1] += s01, S[2] += -kt * s, S[3] += s11, S[4] += kt * c, S[5] += kt;
-        sim->nc[i]++;
-        double *one = &sim->one[3 * i];
-        one[0] = c, one[1] = s, one[2] = kn;
-        if (p->j >= 0) {
-            /* B's block T' = [[-c, -s, 0], [s, -c, 1]] (K 25): same moment, opposite force. */
-            int j = p->j;
-            F = &sim->F[3 * j], S = &sim->S[6 * j];
-            F[0] -= fx, F[1] -= fy, F[2] += p->pt;
-            S[0] += s00, S[1] += s01, S[2] += kt * s, S[3] += s11, S[4] += -kt * c, S[5] += kt;
-            sim->nc[j]++;
-            one = &sim->one[3 * j];
-            one[0] = -c, one[1] = -s, one[2] = kn;
-        } else if (GB_IS_PARTICLE(p->j)) {
-            /* A boundary particle: the translational part of T' (K 25). */
-            int e = GB_PARTICLE_OF(p->j);
-            sim->bp_F[2 * e] -= fx, sim->bp_F[2 * e + 1] -= fy;
-            sim->bp_S[3 * e] += s00, sim->bp_S[3 * e + 1] += s01, sim->bp_S[3 * e + 2] += s11;
-        } else {
-            int w = -1 - p->j;
-            sim->wall_force[w] += p->pn;
-            sim->wall_k[w] += kn;
-        }
-    }
+    for (int k = 0; k < sim->pairs.n; k++)
+        if (sim->pairs.p[k].d > 0) gb_gem_add_contact(sim, &sim->pairs.p[k], 1);
 }
 
 /* Solves the symmetric 2x2 system [a b; b c] x = f, or returns 0 if it is singular. */

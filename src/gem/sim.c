@@ -23,7 +23,7 @@ void gb_sim_free(gb_sim *sim)
     free(sim->one);
     free(sim->in_system);
     free(sim->ls_dir);
-    free(sim->sweep_mask);
+    gb_gem_sweeps_free(sim);
     gb_sim_state_free(&sim->saved);
     gb_sim_state_free(&sim->trial);
     gb_sim_state_free(&sim->substep);
@@ -220,10 +220,13 @@ gb_status gb_sim_create(const gb_scene *scene, gb_sim **out, gb_error *err)
     }
     if (scene->solver.method == GB_METHOD_GLOBAL && scene->solver.newton == GB_NEWTON_LINE_SEARCH) {
         sim->ls_dir = malloc((3 * nn + 2 * (size_t)sim->bp.n + 2 * GB_N_WALLS) * sizeof(double));
-        sim->sweep_mask = malloc(nn);
-        if (!sim->ls_dir || !sim->sweep_mask) {
+        if (!sim->ls_dir) {
             gb_sim_free(sim);
             return gb_fail(err, GB_ENOMEM, "out of memory for %d grains", n);
+        }
+        if ((st = gb_gem_sweeps_create(sim, err))) {
+            gb_sim_free(sim);
+            return st;
         }
     }
     *out = sim;

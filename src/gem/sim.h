@@ -27,7 +27,7 @@ typedef struct {
     int n_pairs, cap;
     double *x0;          /* the pair list's rebuild positions */
     gb_box box, box0;
-    long rebuilds;
+    long rebuilds, generation;
     double wall_force[GB_N_WALLS];
     double work_walls_iter, dissipation, dissipation_step, relaxation;
     int half_pending;
@@ -46,6 +46,17 @@ typedef struct {
     double start[2];  /* the boundary stresses at the stage's start, where a stress ramp begins */
     int resume;       /* set by a checkpoint: gb_sim_run continues after this step */
 } gb_sim_position;
+
+/* The sweeps' bookkeeping (src/gem/sweeps.c): scratch, rebuilt from the forces at each phase. */
+typedef struct {
+    int *start, *adj;   /* each grain's pairs: adj[start[i] .. start[i + 1]) */
+    int adj_cap;
+    long adj_of;        /* the pair list's generation they were built for */
+    double *f2;         /* squared fixing force per grain */
+    unsigned char *flag;
+    int *movers, *touched, *unbalanced;
+    int n_touched, n_unbalanced;
+} gb_sweep_scratch;
 
 /* What one load step leaves for the next (the state, the accounts, the damping) is in a run's
  * checkpoint (src/io/checkpoint.c): a field added here that outlives a step belongs there too. */
@@ -92,7 +103,7 @@ struct gb_sim {
     gb_solver_work work;      /* the global solver's work since the start of the process: only its changes within
                                  a load step are reported, so a resumed run needs none of it */
     double *ls_dir;           /* solver.newton: line_search: the Newton direction of grains, particles, walls */
-    unsigned char *sweep_mask; /* and the grains its sweeps move */
+    gb_sweep_scratch sweeps;  /* and its sweeps' (src/gem/sweeps.c) */
     double ls_length;         /* the share of Newton's step the last line search took (0: sweeps) */
     gb_iteration_fn on_iteration; /* solver.history */
     void *on_iteration_user;
@@ -126,6 +137,9 @@ double gb_sim_tan_phi(const gb_sim *sim, int j);
 
 /* F, S, contacts per grain and the walls' forces and stiffnesses, from the current contacts. */
 void gb_gem_forces(gb_sim *sim);
+/* Adds sign times a contact's force and stiffness (K 5, 8, 25) to its two ends: grains' F, S and
+ * contact counts (and one[] if sign > 0), a particle's force and stiffness, a wall's. */
+void gb_gem_add_contact(gb_sim *sim, const gb_pair *p, double sign);
 
 /* Moves grains by dX and walls by wall_dx simultaneously, then updates every contact. */
 gb_status gb_gem_apply_moves(gb_sim *sim, gb_error *err);
@@ -148,6 +162,12 @@ double gb_gem_wall_moves(gb_sim *sim, const gb_wall_control *wc);
 /* The global solver's merit: squared fixing forces of the grains in the system, of the boundary
  * particles, and the walls' residual squared. */
 double gb_gem_merit(const gb_sim *sim, const unsigned char *in_system, double wall_residual);
+/* Reference sweeps (K 9-12) of the grains whose fixing force exceeds the accuracy and of their
+ * neighbours in contact, the others held (src/gem/sweeps.c), until the merit is at most `target`
+ * or after max_sweeps, or when every grain and wall is balanced. The forces are current on return. */
+gb_status gb_gem_sweeps(gb_sim *sim, const gb_wall_control *wc, double target, int max_sweeps, gb_error *err);
+gb_status gb_gem_sweeps_create(gb_sim *sim, gb_error *err);
+void gb_gem_sweeps_free(gb_sim *sim);
 /* One iteration of the global solver with solver.newton: line_search (src/gem/line_search.c), from
  * the configuration saved in sim->trial, whose merit is m0. */
 gb_status gb_gem_line_search_move(gb_sim *sim, const gb_wall_control *wc, double m0, gb_error *err);

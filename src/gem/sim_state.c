@@ -47,6 +47,7 @@ gb_status gb_sim_state_save(const gb_sim *sim, gb_sim_state *st, gb_error *err)
     st->box = sim->box;
     st->box0 = sim->pairs.box0;
     st->rebuilds = sim->pairs.rebuilds;
+    st->generation = sim->pairs.generation;
     memcpy(st->wall_force, sim->wall_force, sizeof st->wall_force);
     st->work_walls_iter = sim->work_walls_iter;
     st->dissipation = sim->dissipation;
@@ -82,6 +83,7 @@ void gb_sim_state_restore(gb_sim *sim, const gb_sim_state *st)
     sim->box = st->box;
     sim->pairs.box0 = st->box0;
     sim->pairs.rebuilds = st->rebuilds;
+    sim->pairs.generation = st->generation;
     memcpy(sim->wall_force, st->wall_force, sizeof st->wall_force);
     sim->work_walls_iter = st->work_walls_iter;
     sim->dissipation = st->dissipation;

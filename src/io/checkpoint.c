@@ -410,6 +410,7 @@ static void read_state(cursor *c, const gb_sim *sim, gb_sim_state *st, extras *x
     nums(c, "reference", x->ref, 2);
     expect(c, "counters");
     st->rebuilds = (long)integer(c, 0, (long long)1 << 62);
+    st->generation = 0; /* set to a new one when the list is restored */
     st->half_pending = (int)integer(c, 0, 1);
     x->iterations_total = (long)integer(c, 0, (long long)1 << 62);
     x->lm_next = (int)integer(c, 0, 2147483647LL);
@@ -470,6 +471,7 @@ gb_status gb_checkpoint_read(const char *dir, gb_sim *sim, uint64_t scene_hash, 
         else sim->pairs.p = p, sim->pairs.cap = s.n_pairs;
     }
     if (!c.st) {
+        s.generation = ++sim->pairs.generations; /* a list of its own, not one this process built */
         gb_sim_state_restore(sim, &s);
         if (sim->bp.n) memcpy(sim->pairs.px0, x.px0, 2 * (size_t)sim->bp.n * sizeof(double));
         sim->work_walls = x.work_walls, sim->work_body = x.work_body, sim->energy0 = x.energy0;
