@@ -97,6 +97,11 @@ int gb_bem_mesh_group(const gb_bem_mesh *mesh, const char *name);
 /* 1 if the point lies inside the body (outside every cavity, inside the outer loop if any). */
 int gb_bem_mesh_inside(const gb_bem_mesh *mesh, double x, double y);
 
+/* 1 if the point lies in a cavity bounded by the group: not in the body, and within the group's
+ * bounding box (gb_bem_mesh_group_box: xmin, xmax, ymin, ymax). */
+int gb_bem_mesh_in_cavity(const gb_bem_mesh *mesh, int group, double x, double y);
+void gb_bem_mesh_group_box(const gb_bem_mesh *mesh, int group, double box[4]);
+
 /* Distance from a point to the nearest boundary element. */
 double gb_bem_mesh_distance(const gb_bem_mesh *mesh, double x, double y);
 
