@@ -140,6 +140,8 @@ typedef struct {
     double grain_largest;    /* the largest, over the smaller radius */
     int boundary;            /* grains that cross a wall or the cavity's boundary */
     double boundary_largest; /* the largest crossing, over the grain's radius */
+    int particles;           /* grains that overlap a host's boundary particle (not refused) */
+    double particle_largest; /* the largest such overlap, over the grain's radius */
     double mean_radius;
 } gb_overlaps;
 

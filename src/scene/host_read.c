@@ -164,7 +164,15 @@ gb_status gb_host_section_read(gb_ymap *top, gb_host_def *h, gb_bem_mesh *mesh, 
     if (rs && !h->mesh_opts.unbounded)
         return gb_yaml_fail(m.doc, rs, err, "host.remote_stress: applies to an unbounded host only (host.unbounded: "
                                             "true, a mesh of cavities in an infinite plane)");
-    if ((st = gb_ymap_close(&m, err)) || (st = gb_bem_mesh_load(h->mesh, &h->mesh_opts, mesh, err))) return st;
+    if ((st = gb_ymap_close(&m, err))) return st;
+    if ((st = gb_bem_mesh_load(h->mesh, &h->mesh_opts, mesh, err))) {
+        if (st != GB_EINPUT) return st;
+        char msg[GB_ERROR_MSG_MAX]; /* the mesh's own message, at the scene's host.mesh */
+        snprintf(msg, sizeof msg, "%s", err->msg);
+        struct fy_node *v;
+        gb_ymap_find(&m, "mesh", 0, &v, err);
+        return gb_yaml_fail(m.doc, v, err, "host.mesh: %s", msg);
+    }
     if ((st = check_groups(&m, bcs.node, h, mesh, err))) {
         gb_bem_mesh_free(mesh);
         return st;
