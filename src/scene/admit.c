@@ -140,11 +140,15 @@ static gb_status admit_pairs(gb_scene *s, gb_error *err)
 static void warn_elements(gb_scene *s)
 {
     double ratio = s->host.cavity_max / s->overlaps.mean_radius;
-    if (ratio > GB_ELEMENT_RATIO_WARN)
-        snprintf(s->warning, sizeof s->warning, "the host's longest cavity element (%g) is %.3g mean grain radii "
-                 "(%g) long, more than %g: grains sit in notches between its boundary particles up to %.2g of a "
-                 "radius deep; give the cavity more elements", s->host.cavity_max, ratio, s->overlaps.mean_radius,
-                 GB_ELEMENT_RATIO_WARN, 0.5 * ratio + 1 - sqrt(1 + ratio));
+    if (!(ratio > GB_ELEMENT_RATIO_WARN)) return;
+    char inside[128] = "";
+    if (s->overlaps.particles)
+        snprintf(inside, sizeof inside, ", and %d grains start inside a particle by up to %.2g of their radius",
+                 s->overlaps.particles, s->overlaps.particle_largest);
+    snprintf(s->warning, sizeof s->warning, "the host's longest cavity element (%g) is %.3g mean grain radii (%g) "
+             "long, more than %g: grains sit in notches between its boundary particles up to %.2g of a radius "
+             "deep%s; give the cavity more elements", s->host.cavity_max, ratio, s->overlaps.mean_radius,
+             GB_ELEMENT_RATIO_WARN, 0.5 * ratio + 1 - sqrt(1 + ratio), inside);
 }
 
 gb_status gb_scene_admit(gb_scene *s, const gb_bem_mesh *mesh, gb_error *err)
@@ -159,7 +163,7 @@ gb_status gb_scene_admit(gb_scene *s, const gb_bem_mesh *mesh, gb_error *err)
     /* the cell list differences coordinates: a span beyond the doubles' range has no cells */
     if (!isfinite(4 * (hi[0] - lo[0] + hi[1] - lo[1] + rmax)))
         return gb_fail(err, GB_EINPUT, "%s: the grains span more than a double can hold", s->grains_file);
-    if (mesh) warn_elements(s);
     gb_status st = mesh ? admit_host(s, mesh, err) : admit_box(s, err);
+    if (!st && mesh) warn_elements(s);
     return st ? st : admit_pairs(s, err);
 }

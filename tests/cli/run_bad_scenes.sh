@@ -35,6 +35,14 @@ done
 # The good scene runs (so that the bad ones fail for their own reason).
 "$gembem" run "$dir/good.yaml" -o "$out/good" --quiet || { echo "FAIL good.yaml did not run"; fail=$((fail + 1)); }
 "$gembem" run "$dir/good_host.yaml" -o "$out/good_host" --quiet || { echo "FAIL good_host.yaml did not run"; fail=$((fail + 1)); }
+# A host meshed coarsely against its grains runs, with the warning on stderr and in run_info.yaml.
+msg=$("$gembem" run "$dir/warn_coarse_host.yaml" -o "$out/warn" --quiet 2>&1) || { echo "FAIL warn_coarse_host.yaml did not run"; fail=$((fail + 1)); }
+want="warning: the host's longest cavity element (0.975452) is 2.96 mean grain radii"
+case "$msg" in *"$want"*) ;; *) echo "FAIL warn_coarse_host.yaml: '$msg' lacks '$want'"; fail=$((fail + 1));; esac
+grep -q "^warning: \"the host's longest cavity element" "$out/warn/run_info.yaml" 2>/dev/null ||
+  { echo "FAIL warn_coarse_host.yaml: no warning in run_info.yaml"; fail=$((fail + 1)); }
+grep -q "^  elements: {outer: 40, cavity: 16}" "$out/warn/run_info.yaml" 2>/dev/null ||
+  { echo "FAIL warn_coarse_host.yaml: run_info.yaml lacks the .geo's own 40 + 16 elements"; fail=$((fail + 1)); }
 rm -rf "$out"
 echo "$((n - fail)) of $n bad scenes refused as expected"
 [ $fail -eq 0 ]

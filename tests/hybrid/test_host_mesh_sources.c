@@ -12,7 +12,8 @@
  *    cavity element's K u / length, from every source, within the first-order error of constant
  *    elements, 0.6 / N of it for N cavity elements (measured 0.49 / N at N = 32), and the .geo
  *    with twice the counts closer by a factor 2^(0.7 .. 1.3) (measured 2^1.10);
- *  - run_info's numbers: the counts per group and the cavity's shortest and longest element.
+ *  - run_info's numbers: the counts per group and the cavity's shortest and longest element; the
+ *    warning for cavity elements longer than 2.5 grain radii, and none below.
  * Usage: test_host_mesh_sources SOURCE_DIR MSH_DIR (any working directory). */
 #include <math.h>
 #include <stdio.h>
@@ -144,6 +145,16 @@ int main(int argc, char **argv)
         drop(&other);
     } else {
         CHECK(!"the .geo with counts was read");
+    }
+    /* the warning: 8 cavity elements of 2 sin(pi/8) = 0.765 are 3.83 radii of the 0.2 grain */
+    CHECK(own.sc.warning[0] == '\0');
+    if (!load(argv[2], geo, "  elements: {cavity: 8}\n", &other)) {
+        printf("8 cavity elements: %s\n", other.sc.warning);
+        CHECK(strstr(other.sc.warning, "is 3.83 mean grain radii (0.2) long, more than 2.5") != NULL);
+        CHECK_NEAR(other.sc.host.cavity_max / 0.2, 10 * sin(V_PI / 8), 1e-7); /* gmsh's nodes: 1e-8 */
+        drop(&other);
+    } else {
+        CHECK(!"the .geo with 8 cavity elements was read");
     }
     snprintf(counts, sizeof counts, "  elements: {cavity: %d, outer: %d}\n", 2 * nc, 2 * no);
     if (!load(argv[2], geo, counts, &other)) {
