@@ -64,7 +64,7 @@ static gb_status admit_box(gb_scene *s, gb_error *err)
         int w = 0;
         for (int k = 1; k < 4; k++)
             if (gap[k] < gap[w]) w = k;
-        if ((st = too_large(s, i, b->right - b->left, b->top - b->bottom, "the box", err))) break;
+        if ((st = too_large(s, i, b->right - b->left, b->top - b->bottom, "the box", err))) return st;
         if (!(gap[w] > 0))
             return grain_fail(s, i, err, "has its centre outside the box [%g, %g] x [%g, %g] (beyond %s)", b->left,
                               b->right, b->bottom, b->top, walls[w]);
@@ -101,7 +101,7 @@ static gb_status admit_host(gb_scene *s, const gb_bem_mesh *mesh, gb_error *err)
     for (int i = 0; !st && i < s->n_grains; i++) {
         double p[2];
         gb_host_state_at_rest(&s->host_state, s->grains[i].x, s->grains[i].y, p);
-        if ((st = too_large(s, i, box[1] - box[0], box[3] - box[2], "the host's cavity", err))) break;
+        if ((st = too_large(s, i, box[1] - box[0], box[3] - box[2], "the host's cavity", err))) return st;
         if (!gb_bem_mesh_in_cavity(mesh, cavity, p[0], p[1]))
             return grain_fail(s, i, err, "has its centre outside the host's cavity '%s'%s", s->host.cavity,
                               s->host_state.present ? " (moved back as the state's cavity moved)" : "");
