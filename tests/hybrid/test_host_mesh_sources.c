@@ -12,6 +12,8 @@
  *    cavity element's K u / length, from every source, within the first-order error of constant
  *    elements, 0.6 / N of it for N cavity elements (measured 0.49 / N at N = 32), and the .geo
  *    with twice the counts closer by a factor 2^(0.7 .. 1.3) (measured 2^1.10);
+ *  - a gmsh user's own sizes honoured: a size field that refines towards the cavity (size 0.1 on
+ *    it: 135 elements instead of 16; its .msh gives the same K) and Transfinite Curve in the file (12 per arc: 48);
  *  - run_info's numbers: the counts per group and the cavity's shortest and longest element; the
  *    warning for cavity elements longer than 2.5 grain radii, and none below.
  * Usage: test_host_mesh_sources SOURCE_DIR MSH_DIR (any working directory). */
@@ -30,7 +32,8 @@ typedef struct {
     gb_host *h;
 } source;
 
-/* A scene of the annulus host read from `mesh` (with `elements`, or none), one grain in its cavity. */
+/* A scene of a host with groups outer and cavity read from `mesh` (with `elements`, or none), one
+ * grain in its cavity. */
 static int load(const char *dir, const char *mesh, const char *elements, source *s)
 {
     static int count = 0;
@@ -104,6 +107,44 @@ static void same_mesh(const source *a, const source *b, double tol, const char *
     CHECK(dk <= 1e-12 * kmax);
 }
 
+/* A gmsh user's own sizes are honoured: a size field refining towards the cavity (and the .msh
+ * gmsh wrote of it: the same K), Transfinite Curve in the file. */
+static void gmsh_users_sizes(const char *src, const char *dir)
+{
+    char geo[1100], msh[1100];
+    source field, other;
+    snprintf(geo, sizeof geo, "%s/tests/hybrid/refined_cavity.geo", src);
+    if (!load(dir, geo, "", &field)) {
+        const gb_host_def *h = &field.sc.host;
+        int nc = field.h->m / 2;
+        printf("a size field: %d cavity elements of %.4f to %.4f, %d on the outer boundary\n", nc, h->cavity_min,
+               h->cavity_max, field.h->mesh.n - nc);
+        /* without the field: 16 cavity elements of 0.98 (MeshSizeMax 1); gmsh 4.8 gives 135 of 0.0994
+         * to 0.256 (its 1D mesher samples the field along the closed curve) */
+        CHECK(nc > 100 && fabs(h->cavity_min - 0.1) < 0.002 && h->cavity_max < 0.3 && field.h->mesh.n - nc <= 48);
+        snprintf(msh, sizeof msh, "%s/refined_cavity_msh41_bin.msh", dir);
+        if (!load(dir, msh, "", &other)) {
+            same_mesh(&field, &other, 1e-12, "its msh41_bin");
+            drop(&other);
+        } else {
+            CHECK(!"the size field's .msh was read");
+        }
+        drop(&field);
+    } else {
+        CHECK(!"the .geo with a size field was read");
+    }
+    snprintf(geo, sizeof geo, "%s/tests/hybrid/transfinite_cavity.geo", src);
+    if (!load(dir, geo, "", &other)) {
+        const gb_host_def *h = &other.sc.host;
+        int c = gb_bem_mesh_group(&other.h->mesh, "cavity"), o = gb_bem_mesh_group(&other.h->mesh, "outer");
+        printf("Transfinite Curve: %d cavity and %d outer elements\n", h->group_elements[c], h->group_elements[o]);
+        CHECK(h->group_elements[c] == 48 && h->group_elements[o] == 40);
+        drop(&other);
+    } else {
+        CHECK(!"the .geo with Transfinite Curve was read");
+    }
+}
+
 int main(int argc, char **argv)
 {
     if (argc != 3) {
@@ -166,6 +207,7 @@ int main(int argc, char **argv)
         CHECK(!"the .geo with twice the counts was read");
     }
     drop(&own);
+    gmsh_users_sizes(argv[1], argv[2]);
     (void)v_failures; /* vcommon.h's own counter: this test counts with check.h */
     TEST_END();
 }
