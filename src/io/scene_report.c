@@ -19,6 +19,7 @@ static void write_host_mesh(FILE *f, const gb_scene *s)
     fprintf(f, "host_mesh:   # the boundary elements the host was meshed with\n  source: %s\n  elements: {", source);
     for (int g = 0; g < h->n_groups; g++) fprintf(f, "%s%s: %d", g ? ", " : "", h->group[g], h->group_elements[g]);
     fprintf(f, "}\n  cavity_shortest: %.6g\n  cavity_longest: %.6g\n", h->cavity_min, h->cavity_max);
+    fprintf(f, "  cavity_shortest_over_mean_radius: %.4g\n", h->cavity_min / s->overlaps.mean_radius);
     fprintf(f, "  cavity_longest_over_mean_radius: %.4g   # warned above %g\n", h->cavity_max / s->overlaps.mean_radius,
             GB_ELEMENT_RATIO_WARN);
     fprintf(f, "  grains_overlapping_particles: %d   # the half-disc boundary particles, at the start\n"
