@@ -79,6 +79,8 @@ gb_bem_mesh_opts gb_bem_mesh_opts_default(void);
  * single outer loop enclosing the others. gmsh is global: do not call this from two threads at
  * once. The caller's LC_NUMERIC is restored after gmsh (which sets it to "C"). */
 gb_status gb_bem_mesh_load(const char *path, const gb_bem_mesh_opts *opts, gb_bem_mesh *mesh, gb_error *err);
+/* 1 if gb_bem_mesh_load reads the file as a mesh (.msh), which takes no sizes or counts. */
+int gb_bem_mesh_file_is_msh(const char *path);
 
 /* Builds a mesh from closed polygons: loop k has loop_n[k] vertices (xy, concatenated, 2 per
  * vertex; the closing edge is implied) and edge e of all loops lies in group edge_group[e] (edge

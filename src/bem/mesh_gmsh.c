@@ -58,6 +58,8 @@ static int ends_with(const char *s, const char *suffix)
     return a >= b && !strcmp(s + a - b, suffix);
 }
 
+int gb_bem_mesh_file_is_msh(const char *path) { return ends_with(path, ".msh"); }
+
 /* Physical groups of dimension 1, their names and tags. */
 static gb_status read_groups(extract *x, gb_error *err)
 {
@@ -466,7 +468,7 @@ gb_status gb_bem_mesh_load(const char *path, const gb_bem_mesh_opts *opts, gb_be
     memset(mesh, 0, sizeof *mesh);
     gb_bem_mesh_opts dflt = gb_bem_mesh_opts_default();
     const gb_bem_mesh_opts *o = opts ? opts : &dflt;
-    int is_geo = ends_with(path, ".geo"), is_msh = ends_with(path, ".msh");
+    int is_geo = ends_with(path, ".geo"), is_msh = gb_bem_mesh_file_is_msh(path);
     if (!is_geo && !is_msh) return gb_fail(err, GB_EINPUT, "%s: expected a gmsh .geo or .msh file", path);
     FILE *f = fopen(path, "rb"); /* gmshOpen on a missing file succeeds with an empty model */
     if (!f) return gb_fail(err, GB_EINPUT, "%s: cannot open: %s", path, strerror(errno));

@@ -1,7 +1,5 @@
 #include "io/scene_report.h"
 
-#include <string.h>
-
 static void write_quoted(FILE *f, const char *text)
 {
     fputc('"', f);
@@ -12,10 +10,9 @@ static void write_quoted(FILE *f, const char *text)
 static void write_host_mesh(FILE *f, const gb_scene *s)
 {
     const gb_host_def *h = &s->host;
-    size_t n = strlen(h->mesh);
-    const char *source = h->counts_given                                ? "host.elements (counts per group)"
-                         : n >= 4 && !strcmp(h->mesh + n - 4, ".msh") ? "the .msh as gmsh wrote it"
-                                                                       : "the .geo's own mesh sizes";
+    const char *source = h->counts_given                         ? "host.elements (counts per group)"
+                         : gb_bem_mesh_file_is_msh(h->mesh) ? "the .msh as gmsh wrote it"
+                                                            : "the .geo's own mesh sizes";
     fprintf(f, "host_mesh:   # the boundary elements the host was meshed with\n  source: %s\n  elements: {", source);
     for (int g = 0; g < h->n_groups; g++) fprintf(f, "%s%s: %d", g ? ", " : "", h->group[g], h->group_elements[g]);
     fprintf(f, "}\n  cavity_shortest: %.6g\n  cavity_longest: %.6g\n", h->cavity_min, h->cavity_max);

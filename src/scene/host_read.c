@@ -59,11 +59,9 @@ static gb_status read_counts(gb_ymap *m, gb_host_def *h, gb_error *err)
     gb_ymap counts;
     struct fy_node *node;
     gb_status st;
-    size_t len = strlen(h->mesh);
-    int is_msh = len >= 4 && !strcmp(h->mesh + len - 4, ".msh");
     if ((st = gb_ymap_find(m, "elements", 0, &node, err)) || (st = gb_ymap_map(m, "elements", 0, &counts, err)))
         return st;
-    if (node && is_msh && fy_node_get_type(node) == FYNT_MAPPING && fy_node_mapping_item_count(node) > 0)
+    if (node && gb_bem_mesh_file_is_msh(h->mesh) && fy_node_get_type(node) == FYNT_MAPPING && fy_node_mapping_item_count(node) > 0)
         return gb_yaml_fail(m->doc, node, err, "host.elements: %s is a mesh already (gmsh chose its elements); "
                                                "element counts apply to a .geo file, which gembem meshes: remove "
                                                "host.elements or give the .geo", h->mesh);
