@@ -117,11 +117,7 @@ static gb_status write_info(const gb_run_output *o, const char *status, const ch
     if (o->resumed[0])
         fprintf(a.f, "interrupted: %d   # runs of this directory killed before they ended\nresumed:\n%s",
                 o->interrupted, o->resumed);
-    if (message) {
-        fprintf(a.f, "message: \"");
-        for (const char *c = message; *c; c++) fputc(*c == '"' ? '\'' : *c, a.f);
-        fprintf(a.f, "\"\n");
-    }
+    if (message) gb_info_quoted(a.f, "message", message);
     return gb_atomic_commit(&a, err);
 }
 

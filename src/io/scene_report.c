@@ -1,8 +1,8 @@
 #include "io/scene_report.h"
 
-static void write_quoted(FILE *f, const char *text)
+void gb_info_quoted(FILE *f, const char *key, const char *text)
 {
-    fputc('"', f);
+    fprintf(f, "%s: \"", key);
     for (const char *c = text; *c; c++) fputc(*c == '"' ? '\'' : *c, f);
     fputs("\"\n", f);
 }
@@ -35,8 +35,5 @@ void gb_scene_report_write(FILE *f, const gb_scene *s)
     fprintf(f, "  grains_crossing_boundary: %d   # a wall or the cavity's boundary\n  largest_boundary_crossing: %.4g\n",
             o->boundary, o->boundary_largest);
     if (s->host.present) write_host_mesh(f, s);
-    if (s->warning[0]) {
-        fputs("warning: ", f);
-        write_quoted(f, s->warning);
-    }
+    if (s->warning[0]) gb_info_quoted(f, "warning", s->warning);
 }
