@@ -79,6 +79,8 @@ gb_bem_mesh_opts gb_bem_mesh_opts_default(void);
  * single outer loop enclosing the others. gmsh is global: do not call this from two threads at
  * once. The caller's LC_NUMERIC is restored after gmsh (which sets it to "C"). */
 gb_status gb_bem_mesh_load(const char *path, const gb_bem_mesh_opts *opts, gb_bem_mesh *mesh, gb_error *err);
+/* 1 if gb_bem_mesh_load reads the file as a mesh (.msh), which takes no sizes or counts. */
+int gb_bem_mesh_file_is_msh(const char *path);
 
 /* Builds a mesh from closed polygons: loop k has loop_n[k] vertices (xy, concatenated, 2 per
  * vertex; the closing edge is implied) and edge e of all loops lies in group edge_group[e] (edge
@@ -96,6 +98,11 @@ int gb_bem_mesh_group(const gb_bem_mesh *mesh, const char *name);
 
 /* 1 if the point lies inside the body (outside every cavity, inside the outer loop if any). */
 int gb_bem_mesh_inside(const gb_bem_mesh *mesh, double x, double y);
+
+/* 1 if the point lies in a cavity bounded by the group: not in the body, and within the group's
+ * bounding box (gb_bem_mesh_group_box: xmin, xmax, ymin, ymax). */
+int gb_bem_mesh_in_cavity(const gb_bem_mesh *mesh, int group, double x, double y);
+void gb_bem_mesh_group_box(const gb_bem_mesh *mesh, int group, double box[4]);
 
 /* Distance from a point to the nearest boundary element. */
 double gb_bem_mesh_distance(const gb_bem_mesh *mesh, double x, double y);

@@ -95,6 +95,14 @@ typedef struct {
     gb_bem_bc bc[GB_HOST_MAX_BCS]; /* the other groups: any condition of the BEM module */
     double remote_stress[3];      /* sxx, syy, sxy at infinity (unbounded meshes, mesh_opts.unbounded) */
     int rigid;                    /* the cavity does not deform: boundary particles held (a reference) */
+    /* The mesh as the scene's check read it (run_info.yaml): elements per group, the cavity's
+     * shortest and longest element. counts_given: host.elements gave counts (else the .geo's own
+     * sizes, or a .msh as gmsh wrote it). */
+    int counts_given;
+    int n_groups;
+    char group[GB_BEM_MAX_GROUPS][GB_BEM_NAME_MAX];
+    int group_elements[GB_BEM_MAX_GROUPS];
+    double cavity_min, cavity_max;
 } gb_host_def;
 
 /* A hybrid run's host as a state file left it (`initial_state:` of a scene with a host): the
@@ -119,6 +127,24 @@ typedef struct {
     int next;
 } gb_solver_state;
 
+/* Grains may overlap each other and a wall or the cavity's boundary by at most this share of the
+ * (smaller) radius unless the scene's grains.max_overlap says otherwise (src/scene/admit.c). */
+#define GB_MAX_OVERLAP_DEFAULT 0.5
+/* A host whose longest cavity element is longer than this many mean grain radii is run with a
+ * warning (src/scene/admit.c). */
+#define GB_ELEMENT_RATIO_WARN 2.5
+
+/* The overlaps that the admission of a scene accepted (run_info.yaml). */
+typedef struct {
+    int grain_pairs;         /* pairs of grains that overlap */
+    double grain_largest;    /* the largest, over the smaller radius */
+    int boundary;            /* grains that cross a wall or the cavity's boundary */
+    double boundary_largest; /* the largest crossing, over the grain's radius */
+    int particles;           /* grains that overlap a host's boundary particle (not refused) */
+    double particle_largest; /* the largest such overlap, over the grain's radius */
+    double mean_radius;
+} gb_overlaps;
+
 typedef struct {
     char path[512];          /* the scene file */
     char length_unit[32], force_unit[32];
@@ -129,6 +155,11 @@ typedef struct {
     gb_solver_state solver_state; /* from initial_state */
     int n_grains;
     gb_grain *grains;
+    char grains_file[1024];  /* where the grains were read: the scene, its CSV or a state's CSV */
+    int *grain_line, *grain_col; /* each grain's line and column there (messages) */
+    double max_overlap;      /* grains.max_overlap: the admission's tolerance */
+    gb_overlaps overlaps;    /* what the admission accepted */
+    char warning[512];       /* "" or what the command should say before running (also in run_info.yaml) */
     int n_contacts;
     gb_contact_init *contacts;
     gb_box box;

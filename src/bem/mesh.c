@@ -65,6 +65,25 @@ int gb_bem_mesh_inside(const gb_bem_mesh *m, double x, double y)
     return 1;
 }
 
+int gb_bem_mesh_in_cavity(const gb_bem_mesh *m, int group, double x, double y)
+{
+    if (gb_bem_mesh_inside(m, x, y)) return 0;
+    double box[4];
+    gb_bem_mesh_group_box(m, group, box);
+    return x > box[0] && x < box[1] && y > box[2] && y < box[3];
+}
+
+void gb_bem_mesh_group_box(const gb_bem_mesh *m, int group, double box[4])
+{
+    box[0] = box[2] = HUGE_VAL, box[1] = box[3] = -HUGE_VAL;
+    for (int e = 0; e < m->n; e++)
+        if (m->group[e] == group)
+            for (int c = 0; c < 2; c++) {
+                box[2 * c] = fmin(box[2 * c], fmin(m->p0[2 * e + c], m->p1[2 * e + c]));
+                box[2 * c + 1] = fmax(box[2 * c + 1], fmax(m->p0[2 * e + c], m->p1[2 * e + c]));
+            }
+}
+
 double gb_bem_mesh_distance(const gb_bem_mesh *m, double x, double y)
 {
     double best = INFINITY;

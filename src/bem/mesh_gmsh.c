@@ -58,6 +58,8 @@ static int ends_with(const char *s, const char *suffix)
     return a >= b && !strcmp(s + a - b, suffix);
 }
 
+int gb_bem_mesh_file_is_msh(const char *path) { return ends_with(path, ".msh"); }
+
 /* Physical groups of dimension 1, their names and tags. */
 static gb_status read_groups(extract *x, gb_error *err)
 {
@@ -286,9 +288,11 @@ static gb_status read_segments(extract *x, gb_error *err)
             for (size_t k = 0; k < ntypes && !st; k++)
                 if (types[k] != 1)
                     st = gb_fail(err, GB_EINPUT,
-                                 "%s: curve %d has elements of gmsh type %d; constant boundary elements need 2-node "
-                                 "lines (Mesh.ElementOrder = 1)",
-                                 x->path, curves[c], types[k]);
+                                 "%s: curve %d of group '%s' has elements of gmsh type %d (%s); expected 2-node lines: "
+                                 "gembem's boundary elements are straight, so it refuses second-order meshes rather "
+                                 "than drop their middle nodes (mesh with gmsh -1 -order 1, or Mesh.ElementOrder = 1)",
+                                 x->path, curves[c], x->names[g], types[k],
+                                 types[k] == 8 ? "3-node second-order lines" : "not lines");
             if (types) gmshFree(types);
             size_t *et = NULL, net = 0, *nt = NULL, nnt = 0;
             gmshModelMeshGetElementsByType(1, &et, &net, &nt, &nnt, curves[c], 0, 1, &ierr);
@@ -305,6 +309,28 @@ static gb_status read_segments(extract *x, gb_error *err)
     free(seen);
     free(seen_g);
     return st;
+}
+
+/* A body in the plane z = 0: a boundary node elsewhere is a 3D mesh (or a tilted one), refused. */
+static gb_status check_planar(const extract *x, gb_error *err)
+{
+    double extent = 0;
+    for (size_t k = 0; k < x->n_nodes; k++) extent = fmax(extent, fmax(fabs(x->coord[3 * k]), fabs(x->coord[3 * k + 1])));
+    for (size_t k = 0; k < x->n_nodes; k++)
+        if (!(fabs(x->coord[3 * k + 2]) <= 1e-9 * extent))
+            return gb_fail(err, GB_EINPUT, "%s: node %zu lies at z = %g; expected a 2D body, meshed in the plane z = 0",
+                           x->path, x->tag[k], x->coord[3 * k + 2]);
+    return GB_OK;
+}
+
+/* A mesh of a 3D body: refused before its curves are read as a boundary. */
+static gb_status check_dimension(const extract *x, gb_error *err)
+{
+    int ierr = 0, dim = gmshModelGetDimension(&ierr);
+    if (!ierr && dim == 3)
+        return gb_fail(err, GB_EINPUT, "%s: a 3D model (volumes); expected a 2D body, its boundary curves grouped by "
+                                       "Physical Curve", x->path);
+    return GB_OK;
 }
 
 /* The nodes, numbered densely in the order of their tags (x->tag[k] is node k's gmsh tag), and the
@@ -332,6 +358,7 @@ static gb_status read_nodes(extract *x, gb_error *err)
             memcpy(x->coord + 3 * k, xyz + 3 * order[2 * k + 1], 3 * sizeof(double));
         }
         x->n_nodes = ntags;
+        st = check_planar(x, err);
         for (size_t s = 0; s < x->nseg && !st; s++) {
             size_t *ends[2] = {&x->segs[s].n0, &x->segs[s].n1};
             for (int k = 0; k < 2 && !st; k++) {
@@ -441,7 +468,7 @@ gb_status gb_bem_mesh_load(const char *path, const gb_bem_mesh_opts *opts, gb_be
     memset(mesh, 0, sizeof *mesh);
     gb_bem_mesh_opts dflt = gb_bem_mesh_opts_default();
     const gb_bem_mesh_opts *o = opts ? opts : &dflt;
-    int is_geo = ends_with(path, ".geo"), is_msh = ends_with(path, ".msh");
+    int is_geo = ends_with(path, ".geo"), is_msh = gb_bem_mesh_file_is_msh(path);
     if (!is_geo && !is_msh) return gb_fail(err, GB_EINPUT, "%s: expected a gmsh .geo or .msh file", path);
     FILE *f = fopen(path, "rb"); /* gmshOpen on a missing file succeeds with an empty model */
     if (!f) return gb_fail(err, GB_EINPUT, "%s: cannot open: %s", path, strerror(errno));
@@ -476,6 +503,7 @@ gb_status gb_bem_mesh_load(const char *path, const gb_bem_mesh_opts *opts, gb_be
     gb_status st = GB_OK;
     gmshOpen(path, &ierr);
     st = gmsh_check(path, "read the file", ierr, err);
+    if (!st) st = check_dimension(&x, err);
     if (!st) st = read_groups(&x, err);
     if (!st && is_geo) st = mesh_geo(&x, o, err);
     if (!st) st = read_segments(&x, err);

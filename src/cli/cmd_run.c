@@ -82,6 +82,7 @@ int gb_cli_run(int argc, char **argv)
     if (resume) dir = resume;
     gb_scene scene;
     if (gb_scene_load(scene_path, &scene, &err)) return gb_cli_report(&err);
+    if (scene.warning[0]) fprintf(stderr, "gembem: warning: %s\n", scene.warning);
     gb_sim *sim = NULL;
     if (gb_sim_create(&scene, &sim, &err)) {
         gb_scene_free(&scene);

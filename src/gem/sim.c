@@ -93,25 +93,7 @@ static gb_status add_host(gb_sim *sim, gb_error *err)
         for (int k = 0; k < m; k++) bp->x[k] = hs->xy[2 * k], bp->y[k] = hs->xy[2 * k + 1];
         gb_host_update_f0(hw);
     }
-    /* A grain must lie in the cavity. On a restart the cavity has moved: each grain is taken back by
-     * the displacement of its nearest boundary particle and checked against the cavity at rest
-     * (as it stands, a grain by a wall that has moved by more than its radius lies in the host). */
-    for (int i = 0; i < sim->n; i++) {
-        double x = sim->g[i].x, y = sim->g[i].y;
-        if (hs->present && m > 0) {
-            int near = 0;
-            double d2 = HUGE_VAL;
-            for (int k = 0; k < m; k++) {
-                double dx = bp->x[k] - x, dy = bp->y[k] - y;
-                if (dx * dx + dy * dy < d2) d2 = dx * dx + dy * dy, near = k;
-            }
-            x -= hs->u[2 * near], y -= hs->u[2 * near + 1];
-        }
-        if (!gb_host_in_cavity(h, x, y))
-            return gb_fail(err, GB_EINPUT, "%s: grain %d at (%g, %g) lies outside the host's cavity '%s'%s",
-                           sim->scene->path, i, sim->g[i].x, sim->g[i].y, sim->scene->host.cavity,
-                           hs->present ? " (moved as the state's cavity)" : "");
-    }
+    /* that every grain lies in the cavity was checked when the scene was read (src/scene/admit.c) */
     sim->world.box = NULL;
     sim->world.bp = bp;
     return GB_OK;

@@ -89,20 +89,6 @@ void gb_host_update_force(gb_host *h)
     cblas_dgemv(CblasColMajor, CblasNoTrans, h->m, h->m, 1.0, h->K.K, h->m, h->u, 1, 1.0, h->force, 1);
 }
 
-int gb_host_in_cavity(const gb_host *h, double x, double y)
-{
-    if (gb_bem_mesh_inside(&h->mesh, x, y)) return 0;
-    double xmin = HUGE_VAL, xmax = -HUGE_VAL, ymin = HUGE_VAL, ymax = -HUGE_VAL;
-    for (int k = 0; k < h->m / 2; k++) {
-        int e = h->K.elem[k];
-        xmin = fmin(xmin, fmin(h->mesh.p0[2 * e], h->mesh.p1[2 * e]));
-        xmax = fmax(xmax, fmax(h->mesh.p0[2 * e], h->mesh.p1[2 * e]));
-        ymin = fmin(ymin, fmin(h->mesh.p0[2 * e + 1], h->mesh.p1[2 * e + 1]));
-        ymax = fmax(ymax, fmax(h->mesh.p0[2 * e + 1], h->mesh.p1[2 * e + 1]));
-    }
-    return x > xmin && x < xmax && y > ymin && y < ymax;
-}
-
 gb_status gb_host_solve(const gb_host *h, gb_bem_solution *sol, gb_error *err)
 {
     memset(sol, 0, sizeof *sol);

@@ -64,7 +64,5 @@ void gb_host_group_sum(const gb_host *h, const gb_bem_solution *sol, int group, 
 void gb_host_group_resultant(const gb_host *h, int group, double force[2], double disp[2]);
 /* The same by name, solving for it. */
 gb_status gb_host_group_force(const gb_host *h, const char *group, double force[2], double disp[2], gb_error *err);
-/* 1 if (x, y) lies in the cavity: not in the body, and within the cavity's bounding box. */
-int gb_host_in_cavity(const gb_host *h, double x, double y);
 
 #endif

@@ -15,6 +15,7 @@
 #include "gembem/output.h"
 #include "io/checkpoint.h"
 #include "io/file_util.h"
+#include "io/scene_report.h"
 #include "measure/step_measures.h"
 
 #define GB_STR_(x) #x
@@ -111,15 +112,12 @@ static gb_status write_info(const gb_run_output *o, const char *status, const ch
             sc->measures_every_given ? ""
             : sc->measures_every ? "; the default below " GB_STR(GB_MEASURES_DEFAULT_GRAINS) " grains"
                                  : "; the default from " GB_STR(GB_MEASURES_DEFAULT_GRAINS) " grains up");
+    gb_scene_report_write(a.f, sc);
     fprintf(a.f, "status: %s\n", status);
     if (o->resumed[0])
         fprintf(a.f, "interrupted: %d   # runs of this directory killed before they ended\nresumed:\n%s",
                 o->interrupted, o->resumed);
-    if (message) {
-        fprintf(a.f, "message: \"");
-        for (const char *c = message; *c; c++) fputc(*c == '"' ? '\'' : *c, a.f);
-        fprintf(a.f, "\"\n");
-    }
+    if (message) gb_info_quoted(a.f, "message", message);
     return gb_atomic_commit(&a, err);
 }
 

@@ -118,9 +118,13 @@ gb_status gb_state_write(const char *dir, const gb_sim *sim, gb_error *err)
             "# A scene starts from it with   initial_state: %s\n"
             "gembem_state: 1\n"
             "box: {left: %.17g, right: %.17g, bottom: %.17g, top: %.17g}\n"
-            "grains: {file: state_grains.csv, contacts: state_contacts.csv}\n",
+            "grains: {file: state_grains.csv, contacts: state_contacts.csv",
             gb_version(), sim->host ? ", and the host (the scene gives the same host: section)" : "", path, b.left,
             b.right, b.bottom, b.top);
+    /* a scene that admitted larger overlaps admits its state's too */
+    double mo = sim->scene->max_overlap;
+    if (mo != GB_MAX_OVERLAP_DEFAULT) fprintf(a.f, ", max_overlap: %.15g", mo);
+    fprintf(a.f, "}\n");
     if (sim->host) write_host_yaml(a.f, sim);
     if (sim->global) {
         fprintf(a.f, "solver_state: {damping: %.17g, damping_next: %d, damping_history: [", sim->lm_mu, sim->lm_next);

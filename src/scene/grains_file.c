@@ -42,6 +42,16 @@ static gb_status yaml_grain_fail(void *p, const char *what)
     return gb_yaml_fail(c->doc, c->node, c->err, "grains.list: expected %s", what);
 }
 
+/* Room for the line and column of cap grains. */
+static gb_status grow_where(gb_scene *s, int cap, gb_error *err)
+{
+    int *l = realloc(s->grain_line, (size_t)cap * sizeof(int));
+    if (l) s->grain_line = l;
+    int *c = l ? realloc(s->grain_col, (size_t)cap * sizeof(int)) : NULL;
+    if (c) s->grain_col = c;
+    return l && c ? GB_OK : gb_fail(err, GB_ENOMEM, "out of memory for %d grains", cap);
+}
+
 static gb_status read_list(gb_ymap *m, struct fy_node *list, gb_scene *s, gb_error *err)
 {
     if (fy_node_get_type(list) != FYNT_SEQUENCE)
@@ -49,6 +59,9 @@ static gb_status read_list(gb_ymap *m, struct fy_node *list, gb_scene *s, gb_err
     int n = fy_node_sequence_item_count(list);
     s->grains = calloc((size_t)(n > 0 ? n : 1), sizeof *s->grains);
     if (!s->grains) return gb_fail(err, GB_ENOMEM, "out of memory for %d grains", n);
+    gb_status st0 = grow_where(s, n > 0 ? n : 1, err);
+    if (st0) return st0;
+    snprintf(s->grains_file, sizeof s->grains_file, "%s", m->doc->path);
     for (int i = 0; i < n; i++) {
         struct fy_node *item = fy_node_sequence_get_by_index(list, i);
         int k = fy_node_get_type(item) == FYNT_SEQUENCE ? fy_node_sequence_item_count(item) : 0;
@@ -63,6 +76,7 @@ static gb_status read_list(gb_ymap *m, struct fy_node *list, gb_scene *s, gb_err
         yaml_ctx ctx = {m->doc, fy_node_sequence_get_by_index(item, 2), err};
         gb_status st = grain_check(&g, yaml_grain_fail, &ctx);
         if (st) return st;
+        gb_yaml_where(item, &s->grain_line[s->n_grains], &s->grain_col[s->n_grains]);
         s->grains[s->n_grains++] = g;
     }
     return GB_OK;
@@ -95,6 +109,8 @@ static gb_status read_grains_csv(const char *path, gb_scene *s, gb_error *err)
             st = gb_fail(err, GB_EINPUT, "%s:1:%d: unknown column '%s'; expected x, y, r, rotation", path,
                          csv.column[k], csv.header[k]);
     if (!st && !(s->grains = malloc((size_t)cap * sizeof *s->grains))) st = gb_fail(err, GB_ENOMEM, "out of memory");
+    if (!st) st = grow_where(s, cap, err);
+    snprintf(s->grains_file, sizeof s->grains_file, "%s", path);
     for (int has = 1; !st;) {
         if ((st = gb_csv_next(&csv, &has, err)) || !has) break;
         if (s->n_grains == cap) {
@@ -104,6 +120,7 @@ static gb_status read_grains_csv(const char *path, gb_scene *s, gb_error *err)
                 break;
             }
             s->grains = g;
+            if ((st = grow_where(s, cap, err))) break;
         }
         double v[4] = {0, 0, 0, 0};
         for (int c = 0; c < 4 && !st; c++)
@@ -112,6 +129,8 @@ static gb_status read_grains_csv(const char *path, gb_scene *s, gb_error *err)
         gb_grain g = {v[0], v[1], v[2], v[3]};
         csv_ctx ctx = {&csv, col[2], err};
         if ((st = grain_check(&g, csv_grain_fail, &ctx))) break;
+        s->grain_line[s->n_grains] = csv.line;
+        s->grain_col[s->n_grains] = csv.column[col[0]];
         s->grains[s->n_grains++] = g;
     }
     gb_csv_close(&csv);
@@ -205,6 +224,15 @@ gb_status gb_grains_section_read(gb_ymap *m, gb_scene *s, gb_error *err)
         if ((st = read_grains_csv(path, s, err))) return st;
     }
     if (s->n_grains == 0) return gb_yaml_fail(m->doc, m->node, err, "%s: expected at least one grain", m->name);
+    /* jammed inputs may overlap more than the default admits (src/scene/admit.c) */
+    struct fy_node *mo;
+    s->max_overlap = GB_MAX_OVERLAP_DEFAULT;
+    if ((st = gb_ymap_find(m, "max_overlap", 0, &mo, err)) ||
+        (st = gb_ymap_number(m, "max_overlap", GB_Y_POSITIVE, &s->max_overlap, err)))
+        return st;
+    if (!(s->max_overlap <= 1))
+        return gb_yaml_fail(m->doc, mo, err, "%s.max_overlap: expected a share of the smaller radius in (0, 1] (1: "
+                                             "a centre on the other grain's edge or on the wall)", m->name);
     name[0] = '\0';
     if ((st = gb_ymap_string(m, "contacts", 0, name, sizeof name, err))) return st;
     if (name[0]) {
@@ -246,14 +274,6 @@ static double overlap(const gb_scene *s, const gb_contact_init *c)
 
 gb_status gb_grains_check(const gb_scene *s, const char *where, gb_error *err)
 {
-    for (int i = 0; i < s->n_grains; i++) {
-        const gb_grain *g = &s->grains[i];
-        if (!(g->x > s->box.left && g->x < s->box.right && g->y > s->box.bottom && g->y < s->box.top))
-            return gb_fail(err, GB_EINPUT,
-                           "%s: grain %d at (%g, %g) lies outside the box [%g, %g] x [%g, %g]; expected every "
-                           "centre inside the box",
-                           where, i, g->x, g->y, s->box.left, s->box.right, s->box.bottom, s->box.top);
-    }
     for (int k = 0; k < s->n_contacts; k++) {
         const gb_contact_init *c = &s->contacts[k];
         if (!(overlap(s, c) > 0))

@@ -9,7 +9,7 @@
 gb_status gb_grains_section_read(gb_ymap *m, gb_scene *s, gb_error *err);
 /* Reads a `box:` section. */
 gb_status gb_box_read(gb_ymap *parent, gb_box *box, gb_error *err);
-/* Checks that every grain centre lies inside the box and every initial contact overlaps.
+/* Checks that every initial contact overlaps (the grains themselves: src/scene/admit.c).
  * `where` names the file for the messages. */
 gb_status gb_grains_check(const gb_scene *s, const char *where, gb_error *err);
 

@@ -5,8 +5,10 @@
 #include "gembem/scene.h"
 #include "scene/yaml_read.h"
 
-/* Reads top's `host:` mapping: mesh, elements per group, material, boundary of the other groups,
- * the cavity group. The mesh itself is loaded when the simulation is created. */
-gb_status gb_host_section_read(gb_ymap *top, gb_host_def *h, gb_error *err);
+/* Reads top's `host:` mapping: mesh, elements per group (optional: a .geo's own sizes; refused for
+ * a .msh), material, boundary of the other groups, the cavity group; meshes the host into *mesh
+ * (the caller frees it) to check its groups and record its elements (h->group_elements, ...). The
+ * simulation meshes it again when it is created. */
+gb_status gb_host_section_read(gb_ymap *top, gb_host_def *h, gb_bem_mesh *mesh, gb_error *err);
 
 #endif

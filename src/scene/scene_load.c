@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "gembem/scene.h"
+#include "scene/admit.h"
 #include "scene/grains_file.h"
 #include "scene/host_read.h"
 #include "scene/state_read.h"
@@ -20,6 +21,8 @@ void gb_scene_free(gb_scene *s)
 {
     if (!s) return;
     free(s->grains);
+    free(s->grain_line);
+    free(s->grain_col);
     free(s->contacts);
     free(s->stages);
     free(s->snapshot_steps);
@@ -354,7 +357,8 @@ static gb_status read_initial_state(gb_ymap *top, gb_scene *s, gb_error *err)
     return st;
 }
 
-static gb_status load(const gb_yaml_doc *doc, gb_scene *s, gb_error *err)
+/* mesh: the host's, as the scene's check meshed it (the caller frees it) */
+static gb_status load(const gb_yaml_doc *doc, gb_scene *s, gb_bem_mesh *mesh, gb_error *err)
 {
     gb_ymap top, units;
     gb_status st;
@@ -394,7 +398,7 @@ static gb_status load(const gb_yaml_doc *doc, gb_scene *s, gb_error *err)
             return gb_yaml_fail(doc, state, err, "initial_state: gives the grains and the box; do not also give "
                                                  "'grains' or 'box'");
         /* a hybrid state: the scene gives the host, the state where it was */
-        if (host && (st = gb_host_section_read(&top, &s->host, err))) return st;
+        if (host && (st = gb_host_section_read(&top, &s->host, mesh, err))) return st;
         if ((st = read_initial_state(&top, s, err))) return st;
     } else {
         gb_ymap g;
@@ -406,7 +410,7 @@ static gb_status load(const gb_yaml_doc *doc, gb_scene *s, gb_error *err)
         if ((st = gb_ymap_map(&top, "grains", GB_Y_REQUIRED, &g, err)) || (st = gb_grains_section_read(&g, s, err)))
             return st;
         if (host) {
-            if ((st = gb_host_section_read(&top, &s->host, err))) return st;
+            if ((st = gb_host_section_read(&top, &s->host, mesh, err))) return st;
             /* The box only bounds the grains for reports; the host's cavity holds them. */
             s->box.left = s->box.bottom = HUGE_VAL;
             s->box.right = s->box.top = -HUGE_VAL;
@@ -436,7 +440,8 @@ static gb_status load(const gb_yaml_doc *doc, gb_scene *s, gb_error *err)
                 return gb_yaml_fail(doc, sv, err, "loading[%d]: a scene with a host has no walls; expected 'relax', "
                                                   "'host_displacement' or 'host_load'", k);
     }
-    return gb_ymap_close(&top, err);
+    if ((st = gb_ymap_close(&top, err))) return st;
+    return gb_scene_admit(s, s->host.present ? mesh : NULL, err);
 }
 
 gb_status gb_scene_load(const char *path, gb_scene *out, gb_error *err)
@@ -446,7 +451,10 @@ gb_status gb_scene_load(const char *path, gb_scene *out, gb_error *err)
     gb_yaml_doc doc;
     gb_status st = gb_yaml_load(path, &doc, err);
     if (st) return st;
-    st = load(&doc, out, err);
+    gb_bem_mesh mesh;
+    memset(&mesh, 0, sizeof mesh);
+    st = load(&doc, out, &mesh, err);
+    gb_bem_mesh_free(&mesh);
     gb_yaml_free(&doc);
     if (st) gb_scene_free(out);
     return st;

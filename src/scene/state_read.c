@@ -158,6 +158,18 @@ gb_status gb_state_host_read(gb_ymap *top, gb_scene *s, gb_error *err)
     return st;
 }
 
+void gb_host_state_at_rest(const gb_host_state *hs, double x, double y, double out[2])
+{
+    int near = -1;
+    double d2 = HUGE_VAL;
+    for (int k = 0; hs->present && k < hs->n_cavity; k++) {
+        double dx = hs->xy[2 * k] - x, dy = hs->xy[2 * k + 1] - y;
+        if (dx * dx + dy * dy < d2) d2 = dx * dx + dy * dy, near = k;
+    }
+    out[0] = near < 0 ? x : x - hs->u[2 * near];
+    out[1] = near < 0 ? y : y - hs->u[2 * near + 1];
+}
+
 gb_status gb_state_solver_read(gb_ymap *top, gb_scene *s, gb_error *err)
 {
     gb_ymap m;

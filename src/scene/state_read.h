@@ -16,4 +16,10 @@ gb_status gb_state_host_presence(gb_ymap *state, const gb_scene *s, gb_error *er
 /* The state's `solver_state:` (the global solver's damping), if any, into s->solver_state. */
 gb_status gb_state_solver_read(gb_ymap *state, gb_scene *s, gb_error *err);
 
+/* Where a grain of a restarted hybrid run lies with the cavity at rest: moved back by the
+ * displacement of its nearest boundary particle (checked as it stands, a grain by a wall that has
+ * moved by more than its radius would lie in the host, and a long loading could not go on).
+ * Without a host state, (x, y) itself. */
+void gb_host_state_at_rest(const gb_host_state *hs, double x, double y, double out[2]);
+
 #endif

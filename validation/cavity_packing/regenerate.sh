@@ -11,6 +11,8 @@ import re, sys
 text = open(sys.argv[1]).read().replace("../../meshes/", sys.argv[1].rsplit("/", 3)[0] + "/meshes/")
 text = re.sub(r"\[(-?[0-9.]+), (-?[0-9.]+), (0\.[35])\]",
               lambda m: f"[{m.group(1)}, {m.group(2)}, {float(m.group(3)) * 1.15:.4f}]", text)
+# G and H then overlap by 0.61 of the small radius, more than the admission's default 0.5
+text = text.replace("\ngrains:\n", "\ngrains:\n  max_overlap: 0.7\n", 1)
 open(sys.argv[2], "w").write("# scene.yaml with every radius x 1.15: the grains press on the cavity.\n" + text)
 PY
 for case in placed confined; do
