@@ -2,13 +2,20 @@
  * clusters that Newton's step does not settle (src/gem/line_search.c).
  *
  * A sweep moves the grains whose fixing force exceeds the accuracy and the grains in contact with
- * them, each by its own stiffness, the others held. On a loading path of 1e3-1e4 grains a stall
- * takes thousands of sweeps of a few hundred grains: a sweep that updated every contact and summed
- * every force would cost the whole packing each time (most of the solver's time on such paths). So
- * with the walls held a sweep updates only the moved grains' contacts, taking each one's old force
- * and stiffness out of its two ends and the new in (K 5, 8), and keeps the unbalanced list, the
- * squared forces and the merit up to date from the grains those contacts touch: its cost follows
- * the clusters, not the packing. The forces are summed afresh when the sweeps end. */
+ * them, each by its own case of K section 2.5, the others held. A stall on a loading path of a
+ * packing that gembem did not make takes 1e4-1e5 sweeps of tens to hundreds of grains, so:
+ * - a sweep updates only the moved grains' contacts, taking each one's old force and stiffness out
+ *   of its two ends and the new in (K 5, 8), and keeps the unbalanced list, the squared forces and
+ *   the merit up to date from the grains those contacts touch: its cost follows the clusters, not
+ *   the packing (the forces are summed afresh when the sweeps end);
+ * - with the walls held it is a Gauss-Seidel sweep, over-relaxed: each grain moves from the forces
+ *   its predecessors' moves left, by SOR times its reference move at alpha = 1. On the issue's
+ *   1e3-disc oedometric path (tools/bench_solver.sh's packing, one start; docs/solver/research.md)
+ *   the solver took 14.7 s with Jacobi sweeps at the paper's alpha = 0.75, and with Gauss-Seidel at
+ *   0.56, 0.75, 1.0, 1.35, 1.5, 1.65, 1.88 times the reference move: 33.7, 25.8, 16.6, 10.6, 5.8,
+ *   6.3, 12.1 s; 1.65 also took the perturbed packing's path from 548 Newton iterations to 62.
+ * Servo walls move with every sweep (K section 2.6), and then every contact may change: a Jacobi
+ * sweep (every mover from the same forces) with the walls' move and every contact updated. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -17,6 +24,7 @@
 #include "gem/sim.h"
 
 enum { MOVER = 1, TOUCHED = 2, UNBALANCED = 4 };
+static const double SOR = 1.65; /* a grain's move in a held sweep, times its reference move at alpha = 1 */
 
 /* The squared fixing force of grain i and of particle e. */
 static double grain_f2(const gb_sim *sim, int i)
@@ -125,9 +133,38 @@ static void touch(gb_sweep_scratch *w, int i)
     if (!(w->flag[i] & TOUCHED)) w->flag[i] |= TOUCHED, w->touched[w->n_touched++] = i;
 }
 
-/* The movers' contacts updated (each pair once: from its first end if that one moves, else from
- * its second), their forces moved between the ends; the merit follows. */
-static void update_contacts(gb_sim *sim, int count, double a2, double *merit)
+/* A grain left with a single contact moves by it (case c): one[] must be that contact's. */
+static void fix_single(gb_sim *sim, int i)
+{
+    const gb_sweep_scratch *w = &sim->sweeps;
+    for (int q = w->start[i]; q < w->start[i + 1] && sim->nc[i] == 1; q++) {
+        const gb_pair *p = &sim->pairs.p[w->adj[q]];
+        if (!(p->d > 0)) continue;
+        double sign = p->i == i ? 1 : -1;
+        sim->one[3 * i] = sign * p->nx, sim->one[3 * i + 1] = sign * p->ny;
+        sim->one[3 * i + 2] = gb_sim_material(sim, p->j)->kn;
+    }
+}
+
+/* The touched grains' squared forces, the merit and the unbalanced list brought up to date. */
+static void finish_touched(gb_sim *sim, double a2, double *merit)
+{
+    gb_sweep_scratch *w = &sim->sweeps;
+    for (int t = 0; t < w->n_touched; t++) {
+        int i = w->touched[t];
+        fix_single(sim, i);
+        double f2 = grain_f2(sim, i);
+        if (sim->in_system[i]) *merit += f2 - w->f2[i];
+        w->f2[i] = f2;
+        w->flag[i] &= ~TOUCHED;
+        if (f2 > a2 && !(w->flag[i] & UNBALANCED)) w->flag[i] |= UNBALANCED, w->unbalanced[w->n_unbalanced++] = i;
+    }
+}
+
+/* One Gauss-Seidel sweep of the movers (walls held): each grain moves by its own case (K 9-12)
+ * from the forces its predecessors' moves left, and its contacts follow at once. Returns 0, or
+ * 1 + the grain whose move makes the pair list stale (its dX set, not applied). */
+static int gauss_seidel(gb_sim *sim, int count, double a2, double omega, double *merit, double *grain, double wall)
 {
     gb_sweep_scratch *w = &sim->sweeps;
     int particles_count = !sim->scene->host.rigid;
@@ -135,9 +172,24 @@ static void update_contacts(gb_sim *sim, int count, double a2, double *merit)
     w->n_touched = 0;
     for (int m = 0; m < count; m++) {
         int i = w->movers[m];
+        double *d = &sim->dX[3 * i], *F = &sim->F[3 * i];
+        gb_gem_grain_move(sim, i, d);
+        for (int q = 0; q < 3; q++) d[q] *= omega;
+        gb_grain *g = &sim->g[i];
+        g->x += d[0], g->y += d[1];
+        double drift = sqrt(gb_pairs_grain_drift2(&sim->pairs, &sim->world, i));
+        if (gb_pairs_drift_stale(&sim->pairs, fmax(*grain, drift), wall)) {
+            g->x -= d[0], g->y -= d[1]; /* moved by the caller, with the rebuild */
+            sim->dissipation += diss;
+            sim->dissipation_step += diss;
+            finish_touched(sim, a2, merit);
+            return i + 1;
+        }
+        *grain = fmax(*grain, drift);
+        g->rot += d[2] / g->r;
+        sim->relaxation -= 0.5 * (F[0] * d[0] + F[1] * d[1] + F[2] * d[2]);
         for (int q = w->start[i]; q < w->start[i + 1]; q++) {
             gb_pair *p = &sim->pairs.p[w->adj[q]];
-            if (p->i != i && (w->flag[p->i] & MOVER)) continue;
             int e = GB_IS_PARTICLE(p->j) ? GB_PARTICLE_OF(p->j) : -1;
             if (e >= 0 && particles_count) *merit -= particle_f2(sim, e);
             if (p->d > 0) gb_gem_add_contact(sim, p, -1);
@@ -148,25 +200,20 @@ static void update_contacts(gb_sim *sim, int count, double a2, double *merit)
             touch(w, p->i);
             if (p->j >= 0) touch(w, p->j);
         }
+        sim->relaxation -= 0.5 * (F[0] * d[0] + F[1] * d[1] + F[2] * d[2]);
+        memset(d, 0, 3 * sizeof(double));
+        /* the grains this one's contacts touched now see their new forces (case c needs one[]) */
+        for (int q = w->start[i]; q < w->start[i + 1]; q++) {
+            const gb_pair *p = &sim->pairs.p[w->adj[q]];
+            int o = p->i == i ? p->j : p->i;
+            if (o >= 0) fix_single(sim, o);
+        }
+        fix_single(sim, i);
     }
     sim->dissipation += diss;
     sim->dissipation_step += diss;
-    for (int t = 0; t < w->n_touched; t++) {
-        int i = w->touched[t];
-        /* A grain left with a single contact moves by it (case c): one[] must be that contact's. */
-        for (int q = w->start[i]; q < w->start[i + 1] && sim->nc[i] == 1; q++) {
-            const gb_pair *p = &sim->pairs.p[w->adj[q]];
-            if (!(p->d > 0)) continue;
-            double sign = p->i == i ? 1 : -1;
-            sim->one[3 * i] = sign * p->nx, sim->one[3 * i + 1] = sign * p->ny;
-            sim->one[3 * i + 2] = gb_sim_material(sim, p->j)->kn;
-        }
-        double f2 = grain_f2(sim, i);
-        if (sim->in_system[i]) *merit += f2 - w->f2[i];
-        w->f2[i] = f2;
-        w->flag[i] &= ~TOUCHED;
-        if (f2 > a2 && !(w->flag[i] & UNBALANCED)) w->flag[i] |= UNBALANCED, w->unbalanced[w->n_unbalanced++] = i;
-    }
+    finish_touched(sim, a2, merit);
+    return 0;
 }
 
 gb_status gb_gem_sweeps(gb_sim *sim, const gb_wall_control *wc, double target, int max_sweeps, gb_error *err)
@@ -176,50 +223,44 @@ gb_status gb_gem_sweeps(gb_sim *sim, const gb_wall_control *wc, double target, i
     double a = sim->scene->solver.accuracy, a2 = a * a, merit, grain, wall;
     memset(sim->dX, 0, 3 * (size_t)n * sizeof(double));
     if (sim->bp.n) memset(sim->bp.dx, 0, 2 * (size_t)sim->bp.n * sizeof(double));
+    int held = wc->mode == GB_WALLS_FIXED;
     gb_status st = start_phase(sim, a2, &merit, &grain, &wall, err);
     for (int it = 0; !st && it < max_sweeps; it++) {
-        /* Servo walls move with every sweep (K section 2.6), and then every contact may change. */
         double wall_residual = gb_gem_wall_moves(sim, wc);
-        int held = wc->mode == GB_WALLS_FIXED;
         if (!held) merit = gb_gem_merit(sim, sim->in_system, wall_residual);
         if (merit <= target) break;
         int count = pick_movers(sim, a2);
         if (!count && wall_residual <= a) break; /* what is left is on the particles */
+        if (held) {
+            sim->work.sweeps++;
+            int stale = gauss_seidel(sim, count, a2, SOR / sim->scene->solver.alpha, &merit, &grain, wall);
+            for (int m = 0; m < count; m++) w->flag[w->movers[m]] &= ~MOVER;
+            if (!stale) continue;
+            /* that grain's move with the general one, which rebuilds the pair list */
+            const double *d = &sim->dX[3 * (stale - 1)], *F = &sim->F[3 * (stale - 1)];
+            sim->relaxation -= 0.5 * (F[0] * d[0] + F[1] * d[1] + F[2] * d[2]);
+            if ((st = gb_gem_apply_moves(sim, err))) break;
+            gb_gem_forces(sim);
+            sim->relaxation -= 0.5 * (F[0] * d[0] + F[1] * d[1] + F[2] * d[2]);
+            memset(&sim->dX[3 * (stale - 1)], 0, 3 * sizeof(double));
+            st = start_phase(sim, a2, &merit, &grain, &wall, err);
+            continue;
+        }
+        /* servo walls: the Jacobi sweep */
         for (int m = 0; m < count; m++) gb_gem_grain_move(sim, w->movers[m], &sim->dX[3 * w->movers[m]]);
         sim->work.sweeps++;
         sim->relaxation -= 0.5 * movers_work(sim, count);
-        for (int m = 0; m < count; m++) {
-            gb_grain *g = &sim->g[w->movers[m]];
-            const double *d = &sim->dX[3 * w->movers[m]];
-            g->x += d[0], g->y += d[1], g->rot += d[2] / g->r;
-            grain = fmax(grain, sqrt(gb_pairs_grain_drift2(&sim->pairs, &sim->world, w->movers[m])));
-        }
-        if (held && !gb_pairs_drift_stale(&sim->pairs, grain, wall)) {
-            update_contacts(sim, count, a2, &merit);
-        } else {
-            /* Walls that move, or a pair list to rebuild: the general move (the held grains' dX are
-             * zero) and every force summed again. */
-            for (int m = 0; m < count; m++) {
-                gb_grain *g = &sim->g[w->movers[m]];
-                const double *d = &sim->dX[3 * w->movers[m]];
-                g->x -= d[0], g->y -= d[1], g->rot -= d[2] / g->r;
-            }
-            if (!(st = gb_gem_apply_moves(sim, err))) {
-                gb_gem_forces(sim);
-                if (held) st = start_phase(sim, a2, &merit, &grain, &wall, err);
-                else
-                    for (int i = 0; i < n; i++) w->f2[i] = grain_f2(sim, i);
-            }
-        }
+        if ((st = gb_gem_apply_moves(sim, err))) break;
+        gb_gem_forces(sim);
+        for (int i = 0; i < n; i++) w->f2[i] = grain_f2(sim, i);
         sim->relaxation -= 0.5 * movers_work(sim, count);
         for (int m = 0; m < count; m++) {
             memset(&sim->dX[3 * w->movers[m]], 0, 3 * sizeof(double));
             w->flag[w->movers[m]] &= ~MOVER;
         }
-        if (!held) /* the unbalanced list from scratch: any grain may have changed */
-            for (int i = 0; i < n; i++)
-                if (w->f2[i] > a2 && !(w->flag[i] & UNBALANCED))
-                    w->flag[i] |= UNBALANCED, w->unbalanced[w->n_unbalanced++] = i;
+        for (int i = 0; i < n; i++) /* the unbalanced list from scratch: any grain may have changed */
+            if (w->f2[i] > a2 && !(w->flag[i] & UNBALANCED))
+                w->flag[i] |= UNBALANCED, w->unbalanced[w->n_unbalanced++] = i;
     }
     sim->half_pending = 0;
     /* The forces summed afresh: Newton resumes from the same numbers whatever the sweeps' order. */
