@@ -413,14 +413,14 @@ static gb_status solve_system(gb_global *gl, const gb_sim *sim, const gb_wall_co
  * one they were saved for (no rebuild since), as if the pattern had never been lost. */
 static void resume_unloading(gb_global *gl, const gb_pair_list *P)
 {
-    if (gl->resumed_of == P->rebuilds && P->n) memcpy(gl->unloading, gl->resumed, (size_t)P->n);
+    if (gl->resumed_of == P->generation && P->n) memcpy(gl->unloading, gl->resumed, (size_t)P->n);
     free(gl->resumed);
     gl->resumed = NULL;
 }
 
 const unsigned char *gb_global_unloading(const gb_global *gl, const gb_pair_list *P)
 {
-    return gl->pattern_of == P->rebuilds && P->n ? gl->unloading : NULL;
+    return gl->pattern_of == P->generation && P->n ? gl->unloading : NULL;
 }
 
 gb_status gb_global_resume(gb_global *gl, const gb_pair_list *P, const unsigned char *unloading, gb_error *err)
@@ -431,7 +431,7 @@ gb_status gb_global_resume(gb_global *gl, const gb_pair_list *P, const unsigned 
     if (!unloading || !P->n) return GB_OK;
     if (!(gl->resumed = malloc((size_t)P->n))) return gb_fail(err, GB_ENOMEM, "out of memory");
     memcpy(gl->resumed, unloading, (size_t)P->n);
-    gl->resumed_of = P->rebuilds;
+    gl->resumed_of = P->generation;
     return GB_OK;
 }
 
@@ -440,10 +440,10 @@ gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const gb_wall_control *wc,
     gb_status st;
     double t0 = gb_clock_seconds();
     gl->stats.moves++;
-    int new_pattern = gl->pattern_of != sim->pairs.rebuilds;
+    int new_pattern = gl->pattern_of != sim->pairs.generation;
     if (new_pattern) {
         if ((st = build_pattern(gl, &sim->pairs, err))) return st;
-        gl->pattern_of = sim->pairs.rebuilds;
+        gl->pattern_of = sim->pairs.generation;
     }
     int n = gl->n, np = gl->np;
     if ((st = gb_global_pair_buffers(gl, &sim->pairs, err))) return st;

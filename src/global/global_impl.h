@@ -21,7 +21,7 @@ struct gb_global {
     gb_linear_kind kind;
     int n, np;                /* grains, boundary particles */
     int nodes, ndof;
-    long pattern_of;          /* pairs.rebuilds the pattern was built for (-1: none) */
+    long pattern_of;          /* pairs.generation the pattern was built for (-1: none) */
     int *dof0;                /* per node: its first DOF */
     int *adj_start, *adj;     /* per node: adjacent nodes adj[adj_start[v] .. adj_start[v + 1]) */
     int *adj_off;             /* per adjacency entry: row offset of that node within the column */
@@ -44,7 +44,7 @@ struct gb_global {
     unsigned char *unloading; /* per pair: a sliding contact that a solution unloaded: kt in K until one
                                  loads it again (reset with the pattern) */
     int kt_cap;
-    unsigned char *resumed;   /* unloading flags from a checkpoint, for the pattern of pairs.rebuilds resumed_of */
+    unsigned char *resumed;   /* unloading flags from a checkpoint, for the pattern of pairs.generation resumed_of */
     long resumed_of;
     cholmod_common cc;
     cholmod_sparse *A;
