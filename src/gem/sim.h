@@ -32,6 +32,7 @@ typedef struct {
     double work_walls_iter, dissipation, dissipation_step, relaxation;
     int half_pending;
     double *bp_xy;       /* boundary particles' centres, 2 per particle */
+    double *px0;         /* and at the pair list's rebuild */
     double *host_u;      /* the host's cavity displacements */
     double *host_f0;     /* and its f0, which follows the host's prescribed boundary values */
     double host_bc[GB_BEM_MAX_GROUPS][2];

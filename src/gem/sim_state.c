@@ -11,6 +11,7 @@ void gb_sim_state_free(gb_sim_state *st)
     free(st->p);
     free(st->x0);
     free(st->bp_xy);
+    free(st->px0);
     free(st->host_u);
     free(st->host_f0);
     memset(st, 0, sizeof *st);
@@ -29,10 +30,12 @@ gb_status gb_sim_state_save(const gb_sim *sim, gb_sim_state *st, gb_error *err)
     }
     if (sim->host && !st->bp_xy &&
         (!(st->bp_xy = malloc((size_t)sim->host->m * sizeof(double))) ||
+         !(st->px0 = malloc((size_t)sim->host->m * sizeof(double))) ||
          !(st->host_u = malloc((size_t)sim->host->m * sizeof(double))) ||
          !(st->host_f0 = malloc((size_t)sim->host->m * sizeof(double)))))
         return gb_fail(err, GB_ENOMEM, "out of memory for a copy of the host");
     for (int e = 0; e < sim->bp.n; e++) st->bp_xy[2 * e] = sim->bp.x[e], st->bp_xy[2 * e + 1] = sim->bp.y[e];
+    if (sim->bp.n) memcpy(st->px0, sim->pairs.px0, 2 * (size_t)sim->bp.n * sizeof(double));
     if (sim->host) {
         memcpy(st->host_u, sim->host->u, (size_t)sim->host->m * sizeof(double));
         memcpy(st->host_f0, sim->host->K.f0, (size_t)sim->host->m * sizeof(double));
@@ -79,6 +82,9 @@ void gb_sim_state_restore(gb_sim *sim, const gb_sim_state *st)
     memcpy(sim->g, st->g, (size_t)sim->n * sizeof *st->g);
     if (st->n_pairs > 0) memcpy(sim->pairs.p, st->p, (size_t)st->n_pairs * sizeof *st->p);
     memcpy(sim->pairs.x0, st->x0, 2 * (size_t)sim->n * sizeof(double));
+    /* the particles' places at the restored list's rebuild, which its staleness test measures from
+     * (a checkpoint's state has none: its reader sets them) */
+    if (sim->bp.n && st->px0) memcpy(sim->pairs.px0, st->px0, 2 * (size_t)sim->bp.n * sizeof(double));
     sim->pairs.n = st->n_pairs;
     sim->box = st->box;
     sim->pairs.box0 = st->box0;
