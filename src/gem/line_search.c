@@ -90,10 +90,7 @@ gb_status gb_gem_line_search_move(gb_sim *sim, const gb_wall_control *wc, double
      * 1 000 with sweeps at once). */
     int unbalanced = 0, found;
     double a2 = sim->scene->solver.accuracy * sim->scene->solver.accuracy;
-    for (int i = 0; i < n; i++) {
-        const double *F = &sim->F[3 * i];
-        unbalanced += F[0] * F[0] + F[1] * F[1] + F[2] * F[2] > a2;
-    }
+    for (int i = 0; i < n; i++) unbalanced += gb_gem_force2(sim, i) > a2;
     int first = unbalanced > n / 10 ? GLOBAL_HALVINGS : 0;
     if ((st = backtrack(sim, wc, m0, dir, 0, first, &found, err)) || found) return st;
     /* If not, the step met contacts that its tangent did not know: the unbalanced clusters are

@@ -138,6 +138,18 @@ double gb_sim_tan_phi(const gb_sim *sim, int j);
 
 /* F, S, contacts per grain and the walls' forces and stiffnesses, from the current contacts. */
 void gb_gem_forces(gb_sim *sim);
+/* The squared fixing force of grain i, and the fixing forces' work F.dX of its current move. */
+static inline double gb_gem_force2(const gb_sim *sim, int i)
+{
+    const double *F = &sim->F[3 * i];
+    return F[0] * F[0] + F[1] * F[1] + F[2] * F[2];
+}
+static inline double gb_gem_grain_work(const gb_sim *sim, int i)
+{
+    const double *F = &sim->F[3 * i], *d = &sim->dX[3 * i];
+    return F[0] * d[0] + F[1] * d[1] + F[2] * d[2];
+}
+
 /* Adds sign times a contact's force and stiffness (K 5, 8, 25) to its two ends: grains' F, S and
  * contact counts (and one[] if sign > 0), a particle's force and stiffness, a wall's. */
 void gb_gem_add_contact(gb_sim *sim, const gb_pair *p, double sign);

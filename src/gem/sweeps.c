@@ -26,13 +26,7 @@
 enum { MOVER = 1, TOUCHED = 2, UNBALANCED = 4 };
 static const double SOR = 1.65; /* a grain's move in a held sweep, times its reference move at alpha = 1 */
 
-/* The squared fixing force of grain i and of particle e. */
-static double grain_f2(const gb_sim *sim, int i)
-{
-    const double *F = &sim->F[3 * i];
-    return F[0] * F[0] + F[1] * F[1] + F[2] * F[2];
-}
-
+/* The squared fixing force of particle e. */
 static double particle_f2(const gb_sim *sim, int e)
 {
     return sim->bp_F[2 * e] * sim->bp_F[2 * e] + sim->bp_F[2 * e + 1] * sim->bp_F[2 * e + 1];
@@ -85,7 +79,7 @@ static gb_status start_phase(gb_sim *sim, double a2, double *merit, double *grai
     if (st) return st;
     w->n_unbalanced = 0;
     for (int i = 0; i < sim->n; i++) {
-        w->f2[i] = grain_f2(sim, i);
+        w->f2[i] = gb_gem_force2(sim, i);
         w->flag[i] = 0;
         if (w->f2[i] > a2) w->flag[i] = UNBALANCED, w->unbalanced[w->n_unbalanced++] = i;
     }
@@ -123,8 +117,7 @@ static int pick_movers(gb_sim *sim, double a2)
 static double movers_work(const gb_sim *sim, int count)
 {
     double work = 0;
-    for (int m = 0; m < count; m++)
-        for (int k = 3 * sim->sweeps.movers[m]; k < 3 * sim->sweeps.movers[m] + 3; k++) work += sim->F[k] * sim->dX[k];
+    for (int m = 0; m < count; m++) work += gb_gem_grain_work(sim, sim->sweeps.movers[m]);
     return work;
 }
 
@@ -152,8 +145,7 @@ static void finish_touched(gb_sim *sim, double a2, double *merit)
     gb_sweep_scratch *w = &sim->sweeps;
     for (int t = 0; t < w->n_touched; t++) {
         int i = w->touched[t];
-        fix_single(sim, i);
-        double f2 = grain_f2(sim, i);
+        double f2 = gb_gem_force2(sim, i);
         if (sim->in_system[i]) *merit += f2 - w->f2[i];
         w->f2[i] = f2;
         w->flag[i] &= ~TOUCHED;
@@ -172,7 +164,7 @@ static int gauss_seidel(gb_sim *sim, int count, double a2, double omega, double 
     w->n_touched = 0;
     for (int m = 0; m < count; m++) {
         int i = w->movers[m];
-        double *d = &sim->dX[3 * i], *F = &sim->F[3 * i];
+        double *d = &sim->dX[3 * i];
         gb_gem_grain_move(sim, i, d);
         for (int q = 0; q < 3; q++) d[q] *= omega;
         gb_grain *g = &sim->g[i];
@@ -187,7 +179,7 @@ static int gauss_seidel(gb_sim *sim, int count, double a2, double omega, double 
         }
         *grain = fmax(*grain, drift);
         g->rot += d[2] / g->r;
-        sim->relaxation -= 0.5 * (F[0] * d[0] + F[1] * d[1] + F[2] * d[2]);
+        sim->relaxation -= 0.5 * gb_gem_grain_work(sim, i);
         for (int q = w->start[i]; q < w->start[i + 1]; q++) {
             gb_pair *p = &sim->pairs.p[w->adj[q]];
             int e = GB_IS_PARTICLE(p->j) ? GB_PARTICLE_OF(p->j) : -1;
@@ -200,7 +192,7 @@ static int gauss_seidel(gb_sim *sim, int count, double a2, double omega, double 
             touch(w, p->i);
             if (p->j >= 0) touch(w, p->j);
         }
-        sim->relaxation -= 0.5 * (F[0] * d[0] + F[1] * d[1] + F[2] * d[2]);
+        sim->relaxation -= 0.5 * gb_gem_grain_work(sim, i);
         memset(d, 0, 3 * sizeof(double));
         /* the grains this one's contacts touched now see their new forces (case c needs one[]) */
         for (int q = w->start[i]; q < w->start[i + 1]; q++) {
@@ -237,11 +229,10 @@ gb_status gb_gem_sweeps(gb_sim *sim, const gb_wall_control *wc, double target, i
             for (int m = 0; m < count; m++) w->flag[w->movers[m]] &= ~MOVER;
             if (!stale) continue;
             /* that grain's move with the general one, which rebuilds the pair list */
-            const double *d = &sim->dX[3 * (stale - 1)], *F = &sim->F[3 * (stale - 1)];
-            sim->relaxation -= 0.5 * (F[0] * d[0] + F[1] * d[1] + F[2] * d[2]);
+            sim->relaxation -= 0.5 * gb_gem_grain_work(sim, stale - 1);
             if ((st = gb_gem_apply_moves(sim, err))) break;
             gb_gem_forces(sim);
-            sim->relaxation -= 0.5 * (F[0] * d[0] + F[1] * d[1] + F[2] * d[2]);
+            sim->relaxation -= 0.5 * gb_gem_grain_work(sim, stale - 1);
             memset(&sim->dX[3 * (stale - 1)], 0, 3 * sizeof(double));
             st = start_phase(sim, a2, &merit, &grain, &wall, err);
             continue;
@@ -252,7 +243,7 @@ gb_status gb_gem_sweeps(gb_sim *sim, const gb_wall_control *wc, double target, i
         sim->relaxation -= 0.5 * movers_work(sim, count);
         if ((st = gb_gem_apply_moves(sim, err))) break;
         gb_gem_forces(sim);
-        for (int i = 0; i < n; i++) w->f2[i] = grain_f2(sim, i);
+        for (int i = 0; i < n; i++) w->f2[i] = gb_gem_force2(sim, i);
         sim->relaxation -= 0.5 * movers_work(sim, count);
         for (int m = 0; m < count; m++) {
             memset(&sim->dX[3 * w->movers[m]], 0, 3 * sizeof(double));
