@@ -2,8 +2,7 @@
 # Fuzzes the readers (issue 14) with libFuzzer: builds fuzz/'s targets with clang, ASan and UBSan
 # in build-fuzz/, then runs each in turn (one core) for SECONDS (default 60), starting from its
 # seed corpus fuzz/corpus/<target> and what earlier runs kept in build-fuzz/corpus/<target>.
-#   tools/fuzz.sh [seconds] [target ...]     targets: scene grains contacts state bem (the default),
-#                                            mesh (gmsh itself crashes on some .msh: fuzz/gmsh_crash)
+#   tools/fuzz.sh [seconds] [target ...]     targets: scene grains contacts state bem mesh (the default)
 #   RUNS=1000000 tools/fuzz.sh 1800          each target until 1e6 executions or 30 minutes
 # Prints per target the executions, the time and the findings (a crash, a sanitizer report, a leak,
 # a timeout of 30 s or more than 2 GB), which libFuzzer writes to build-fuzz/findings/<target>/;
@@ -17,7 +16,7 @@ cd "$(dirname "$0")/.."
 seconds=${1:-60}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(scene grains contacts state bem)
+[ ${#targets[@]} -gt 0 ] || targets=(scene grains contacts state bem mesh)
 tools/setup.sh
 if ! command -v clang >/dev/null; then # Debian's clang brings libFuzzer and the sanitizers
   sudo=""; [ "$(id -u)" -eq 0 ] || sudo="sudo"
