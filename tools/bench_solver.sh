@@ -59,6 +59,7 @@ timer=/usr/bin/time
 tag=$SOLVER; [ "$SOLVER" = global ] && tag=$SOLVER-$LINEAR
 [ "$SOLVER" = global ] && [ "$NEWTON" = line_search ] && tag=$tag-line_search
 [ -n "${PERTURB:-}" ] && tag=$tag-p$PERTURB
+[ -n "${TAG:-}" ] && tag=$tag-$TAG # an experiment's own directory
 
 echo "machine: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), $(nproc --all) cores, $(free -g | awk '/Mem:/ {print $2}') GiB; $(date -u '+%Y-%m-%d %H:%M UTC')"
 echo "threads: OPENBLAS_NUM_THREADS=$OPENBLAS_NUM_THREADS, OMP_NUM_THREADS=$OMP_NUM_THREADS; OPENBLAS_CORETYPE=${OPENBLAS_CORETYPE:-unset (detected)}; load average $(cut -d' ' -f1-3 /proc/loadavg)"
