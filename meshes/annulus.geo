@@ -1,4 +1,4 @@
-// Annulus a < r < b (thick cylinder, METHOD.md section 12): inner radius a = 1, outer b = 2.
+// Annulus a < r < b (thick cylinder, docs/method.md section 12): inner radius a = 1, outer b = 2.
 // Physical groups: "cavity" (r = a) and "outer" (r = b). Sizes and counts come from the scene.
 a = 1; b = 2; lc = 0.2;
 Point(1) = {0, 0, 0, lc};

@@ -1,5 +1,5 @@
 // Square body 10 x 10 with a circular cavity of radius 2.5 at its centre (the hybrid paper's host,
-// METHOD.md section 11). Physical groups: "outer" (the four sides) and "cavity".
+// docs/method.md section 11). Physical groups: "outer" (the four sides) and "cavity".
 L = 10; R = 2.5; lc = 1.0;
 Point(1) = {-L/2, -L/2, 0, lc}; Point(2) = {L/2, -L/2, 0, lc};
 Point(3) = {L/2, L/2, 0, lc};   Point(4) = {-L/2, L/2, 0, lc};

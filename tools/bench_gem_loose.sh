@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The first benchmark protocol (not a test), kept because README.md quotes it: random packings of the paper's three sizes
+# The first benchmark protocol (not a test), kept because docs/benchmarks.md quotes it: random packings of the paper's three sizes
 # (Table 3: diameters 0.6, 0.9, 1.2 cm, equal area per size, kn, kt = 1e8, 7e7 dyn/cm, phi = 25 deg,
 # a = 100 dyn) made by gb_packgen at its densest deposition (porosity about 0.27, not jammed),
 # prepared by isotropic stress control at s0/2 (at most PREP_CAP iterations), then STEPS load steps

@@ -6,7 +6,7 @@
 Reads RUN_DIR/scene.yaml (materials, accuracy, body force), RUN_DIR/state.yaml (the box) and the
 state's grains and contacts CSV files, and recomputes from the positions alone, with its own
 contact detection (a k-d tree, scipy): every overlap d = r_i + r_j - |x_j - x_i| (or the distance
-into a wall), the normal force pn = kn d of METHOD.md section 3 (K 3), and from the stored
+into a wall), the normal force pn = kn d of docs/method.md section 3 (K 3), and from the stored
 tangential forces pt (one per contact: K 6 is path-dependent, so pt cannot be recomputed from
 the positions) each grain's fixing force (K 5): sum over its contacts of pn n + pt t (n from the
 grain to the other side, t = (-ny, nx)) minus its body force, and its moment over its radius,

@@ -3,7 +3,7 @@
 # gb_packgen, every disc resting on others, its radii enlarged by 1e-9 so that the touching pairs
 # are contacts (with forces of 1e-9 kn r), and a scene that lets it settle under its own weight
 # between fixed walls (Table 3 constants: kn, kt = 1e8, 7e7 dyn/cm, phi = 25 deg; density 2.65
-# g/cm^3, g = 981 cm/s^2), run by build/bench_settle: the README's known limit (the global solver
+# g/cm^3, g = 981 cm/s^2), run by build/bench_settle: a known limit of docs/limits.md (the global solver
 # does not converge on it, the reference iteration does).
 #   [KEEP=1] tools/settle_packing.sh BUILD_DIR OUT_DIR N SEED
 # Writes OUT_DIR/deposit.csv (+ .box.yaml), settle.csv and scene.yaml; KEEP=1 reuses settle.csv.

@@ -4,7 +4,7 @@ validation/SPEED_VS_ERROR.md with its own PNG:
 
   three_discs  the three-disc shear test of Kishino (1989) run over kn, the accuracy a, alpha and
                the solver; the error is the largest distance of the stress ratio from the rigid
-               exact solution (METHOD.md section 7) at e1 - e2 = 1..5 %
+               exact solution (docs/method.md section 7) at e1 - e2 = 1..5 %
   bem          the boundary element module: Lame's annulus and Kirsch's hole refined
                (build/speed_error_bem)
   cavity       the 27-grain hybrid cavity packing (validation/cavity_packing), confined and as
@@ -160,7 +160,7 @@ def three_discs_section():
         "",
         f"Measured {datetime.date.today()}; the fastest of 3 runs.",
         "",
-        "Error: the largest distance of the stress ratio from the rigid exact solution (METHOD.md",
+        "Error: the largest distance of the stress ratio from the rigid exact solution (docs/method.md",
         "section 7) at e1 - e2 = 1, 2, 3, 4, 5 %. kt = 0.7 kn, s0 = 1.5e5 dyn/cm, 110 load steps.",
         "",
         "![error against seconds](speed_vs_error_three_discs.png)",

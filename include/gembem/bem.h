@@ -1,4 +1,4 @@
-/* The elastic host: a 2D elastostatic boundary element module (H 1-7; METHOD.md sections 9, 12).
+/* The elastic host: a 2D elastostatic boundary element module (H 1-7; docs/method.md sections 9, 12).
  *
  * A body (bounded, or an infinite plane with cavities) is described by its boundary only: closed
  * polygonal loops of straight constant elements, one displacement and one traction per element,
@@ -156,7 +156,7 @@ typedef struct {
     double remote_stress[3];         /* sxx, syy, sxy at infinity (unbounded bodies only) */
 } gb_bem_problem;
 
-/* The degenerate-scale guard (METHOD.md section 9; defaults from gb_bem_guard_default, and NULL
+/* The degenerate-scale guard (docs/method.md section 9; defaults from gb_bem_guard_default, and NULL
  * means the defaults). A system holding G columns whose reciprocal condition (dgecon, 1-norm,
  * columns equilibrated) is below rcond_min is rebuilt at lengths where the body's half-diagonal
  * is 1/4 (exact scaling of G, no reassembly) and the better conditioned one is solved. */

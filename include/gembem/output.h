@@ -13,7 +13,7 @@ typedef struct gb_run_output gb_run_output;
  * hash, for resuming, is taken from its initial state). `command` is recorded in run_info.yaml. */
 gb_status gb_run_output_open(const char *dir, const gb_sim *sim, int overwrite, const char *command,
                              gb_run_output **out, gb_error *err);
-/* Reopens the run directory of an interrupted run (README.md, "Checkpoints and resume"): its
+/* Reopens the run directory of an interrupted run (docs/run-directory.md, "Checkpoints and resume"): its
  * checkpoint into sim (just created from the same scene: refused, GB_EINPUT, if the scene changed),
  * the appended files cut back to the checkpoint, run_info.yaml told of the resume. gb_sim_run then
  * continues after the checkpoint's step. Nothing is changed if the checkpoint cannot be used. */

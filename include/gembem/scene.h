@@ -83,7 +83,7 @@ enum { GB_METHOD_REFERENCE = 0, GB_METHOD_GLOBAL = 1 };
  * (src/gem/line_search.c). */
 enum { GB_NEWTON_DAMPED = 0, GB_NEWTON_LINE_SEARCH = 1 };
 
-/* An elastic host with a cavity that holds the grains (the hybrid method, METHOD.md sections 9-11). */
+/* An elastic host with a cavity that holds the grains (the hybrid method, docs/method.md sections 9-11). */
 typedef struct {
     int present;
     char mesh[1024];              /* the .geo or .msh file */

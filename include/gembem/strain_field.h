@@ -4,7 +4,7 @@
  * non-affine displacement of each grain (D2min, Falk & Langer 1998) and a localisation index.
  * Pure functions on arrays of positions (2 per point: x, y), so that they can be tested alone.
  *
- * Signs follow the papers' soil mechanics (METHOD.md section 2): strains compression positive.
+ * Signs follow the papers' soil mechanics (docs/method.md section 2): strains compression positive.
  * The strain is Green-Lagrange's, E = (F^t F - I)/2 with F = I + grad u the deformation gradient
  * (reported as e = -E): to first order the small strain -(grad u + grad u^t)/2, and exactly zero
  * for a rigid motion of any size. */

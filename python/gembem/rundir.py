@@ -12,7 +12,7 @@ from .table import read_csv
 from .vtk import read_vtk
 from .yamlfile import read_yaml
 
-# Why a file may be missing: which scene key or scene kind writes it (see the README's outputs).
+# Why a file may be missing: which scene key or scene kind writes it (see docs/run-directory.md).
 _WHY = {
     "history.csv": "written with `solver: {history: true}`",
     "contacts": "written every `output.contacts_every` steps and at snapshot steps",

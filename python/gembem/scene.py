@@ -1,7 +1,7 @@
 """Scenes built from Python objects and written as YAML (PyYAML's safe dumper, no templating).
 
 The C reader is the authority on what a scene may hold: nothing here checks keys, types or
-values. A scene is its top-level sections as plain dicts and lists (the README's table), numpy
+values. A scene is its top-level sections as plain dicts and lists (docs/scene.md), numpy
 arrays and numbers welcome; a bad scene is refused by `gembem run` with file:line:column, which
 gembem.runner raises as gembem.errors.SceneError.
 """
@@ -78,7 +78,7 @@ class Scene:
         return new
 
     def to_dict(self, grains_file=None):
-        """The scene as plain Python objects, in the order gembem's README lists the sections.
+        """The scene as plain Python objects, in the order docs/scene.md lists the sections.
 
         grains_file: the name the grains' CSV will have (see write); None writes them inline.
         """

@@ -6,7 +6,7 @@
 
 /* Closed forms of int u* and int p* (2x2 row-major [l][k]) over [a, b] seen from x, exact for any
  * x off the element (no quadrature, so nearly singular points lose nothing). self = 1: x is the
- * element's own midpoint; g gets the singular closed form (METHOD.md section 9) and h the
+ * element's own midpoint; g gets the singular closed form (docs/method.md section 9) and h the
  * principal value, which is zero (the jump 1/2 I is not included). */
 void gb_bem_segment_gh(const gb_bem_kconst *k, const double x[2], const double a[2], const double b[2], int self,
                        double g[4], double h[4]);

@@ -5,7 +5,7 @@
 
 #include "gembem/scene.h"
 
-/* Boundary particles (the hybrid method, METHOD.md section 10): one half-disc on each element of
+/* Boundary particles (the hybrid method, docs/method.md section 10): one half-disc on each element of
  * a host's cavity, of diameter the element's length, centred on its midpoint and bulging into the
  * cavity; it moves with its element (2 DOFs, no rotation). In a pair it is j = GB_PARTICLE_J(e). */
 #define GB_PARTICLE_J(e) (-1 - GB_N_WALLS - (e))
@@ -90,7 +90,7 @@ static inline double gb_pair_du_t(const gb_pair *p, const double a[3], const dou
 }
 
 /* Contact forces after a move (K 6, 13): the normal force follows the overlap, pn = kn d (a new
- * contact starts at kn d, see METHOD.md section 3); the tangential force is incremental,
+ * contact starts at kn d, see docs/method.md section 3); the tangential force is incremental,
  * pt += kt du_t with du_t from (K 25) in the tangent of the previous configuration; a contact
  * that opens (d <= 0) drops both forces; |pt| is capped at pn tan(phi) + c.
  * dX holds (dx, dy, r dw) per grain, wall_dx the translation (dx, dy) of each wall, w->bp->dx

@@ -51,7 +51,7 @@ static gb_pair *find_pair(gb_pair_list *L, int i, int j)
 }
 
 /* The host of a hybrid scene and its boundary particles: one half-disc per cavity element, of
- * diameter the element's length, on its midpoint, bulging into the cavity (METHOD.md section 10).
+ * diameter the element's length, on its midpoint, bulging into the cavity (docs/method.md section 10).
  * The grains touch these instead of walls. */
 static gb_status add_host(gb_sim *sim, gb_error *err)
 {
@@ -104,7 +104,7 @@ static gb_status add_host(gb_sim *sim, gb_error *err)
  * simulation's and three saved states), its arrays (body force, F, S, dX, the last contact, the
  * contact count, the system flag), at least two candidate pairs in the list, its rebuild buffer
  * and the three saved states; with the global solver, its sparse factor, 5.3 GB at 1e6 discs
- * (README, "Scaling to a million discs"). */
+ * (docs/benchmarks.md, "Scaling to a million discs"). */
 static double memory_need(const gb_scene *scene)
 {
     double per_grain = 5.0 * sizeof(gb_grain) + 17.0 * sizeof(double) + sizeof(int) + 1;

@@ -271,7 +271,7 @@ static int factor_solve(gb_global *gl, gb_error *err, gb_status *st)
     return 0;
 }
 
-/* The wall DOFs' residuals (force conjugate to each DOF minus its target, METHOD.md section 5):
+/* The wall DOFs' residuals (force conjugate to each DOF minus its target, docs/method.md section 5):
  * stress control, (F_left + F_right) - 2 s2 H and (F_bottom + F_top) - 2 s1 W; constant mean
  * stress, ((s1 + s2)/2 - m0) (W H_ref + H W_ref), the mean-stress error times the area change per
  * unit isotropic strain. Unused DOFs (and all of them without walls) are held. */

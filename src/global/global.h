@@ -1,5 +1,5 @@
 /* The global solver for granular scenes: every grain's move from one sparse system, the contact
- * stiffness assembled over all contacts (3 DOFs per grain, METHOD.md section 3), K dX = -F, solved
+ * stiffness assembled over all contacts (3 DOFs per grain, docs/method.md section 3), K dX = -F, solved
  * with CHOLMOD (symmetric) or UMFPACK; the symbolic analysis is reused while the candidate-pair
  * list (the sparsity pattern) stays the same. */
 #ifndef GB_GLOBAL_H

@@ -1,4 +1,4 @@
-/* The elastic host of a hybrid scene (METHOD.md sections 9-10; hybrid paper H 1-7): its boundary
+/* The elastic host of a hybrid scene (docs/method.md sections 9-10; hybrid paper H 1-7): its boundary
  * meshed by gmsh, condensed by the boundary element module to the stiffness of its cavity,
  * F = K u + f0 (forces F = L t that the grains must put on the cavity's elements for element
  * displacements u), and the boundary particles that carry those DOFs. */

@@ -1,4 +1,4 @@
-/* Checkpoints of a run directory (README.md, "Checkpoints and resume"): everything a completed load
+/* Checkpoints of a run directory (docs/run-directory.md, "Checkpoints and resume"): everything a completed load
  * step leaves that the next one reads, exactly (hex floats), so that `gembem run --resume` goes on
  * as if the run had never stopped; and the lengths of the files the run appends to, so that what
  * an interrupted run wrote after its last checkpoint is cut off before the resumed run appends. */

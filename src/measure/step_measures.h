@@ -50,7 +50,7 @@ typedef struct {
 gb_status gb_host_measure(const gb_sim *sim, int wall_only, gb_host_measures *m, gb_error *err);
 void gb_host_measures_free(gb_host_measures *m);
 
-/* The step's measures in the run directory `dir` (see README.md, "Measures per step"): one row of
+/* The step's measures in the run directory `dir` (see docs/measures.md): one row of
  * localisation.csv (created at step 0) and, with `fields`, the files of fields/ for this step.
  * The step's increment runs from the step's start (the simulation's saved state) to its end. */
 gb_status gb_measure_write_step(const char *dir, const gb_sim *sim, int step, int fields, gb_error *err);

@@ -75,7 +75,7 @@ static gb_status admit_box(gb_scene *s, gb_error *err)
 
 /* The grain's overlap with the boundary particles of the cavity (half-discs of diameter the
  * element's length on its midpoint, bulging into the cavity): reported, not refused; the run
- * relaxes it, but a coarse cavity makes it large (README, the hybrid host). */
+ * relaxes it, but a coarse cavity makes it large (docs/hybrid.md, "Meshes"). */
 static void particle_overlap(gb_scene *s, const gb_bem_mesh *mesh, int cavity, int i, const double p[2])
 {
     double worst = 0, r = s->grains[i].r;

@@ -1,4 +1,4 @@
-/* Rigid-body motions (METHOD.md section 12): for a closed bounded body, H times a rigid
+/* Rigid-body motions (docs/method.md section 12): for a closed bounded body, H times a rigid
  * translation vanishes to round-off (the element integrals are exact, so the identity
  * c + int p* = 0 holds exactly for the polygon); for a cavity in an infinite plane the same
  * sum is the identity (c = 1/2 I plus the cavity's 1/2 I). A rigid rotation is not constant on

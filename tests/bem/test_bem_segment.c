@@ -1,6 +1,6 @@
 /* Closed-form element integrals of u* and p* against adaptive Gauss quadrature of the point
  * kernels, from far, near (down to 1e-6 element lengths) and nearly singular points; the
- * singular diagonal against METHOD.md's closed form; the stress kernels against finite
+ * singular diagonal against docs/method.md's closed form; the stress kernels against finite
  * differences of the displacement kernel. */
 #include <math.h>
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# output.measures_every (README, "Measures per step"): the files of fields/ only at the steps that
+# output.measures_every (docs/measures.md): the files of fields/ only at the steps that
 # are multiples of k (step 0 included), localisation.csv a row at every step whatever k, and its
 # rows the same as with the fields at every step (byte for byte: the row does not depend on k).
 # 1. The three discs (110 steps), k = 3: fields at 0, 3, ..., 108 only; 111 rows.

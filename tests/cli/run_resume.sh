@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Checkpoints and resume (src/io/checkpoint.c, README.md "Checkpoints and resume"). Per scene: the
+# Checkpoints and resume (src/io/checkpoint.c, docs/run-directory.md "Checkpoints and resume"). Per scene: the
 # run once uninterrupted, and once killed with SIGKILL again and again, each time resumed with
 # `gembem run --resume` (or started again when no checkpoint existed yet), until it completes. The
 # kills land at GB_TEST_KILL_AT=N, the N-th output write of the process (an appended row, which it

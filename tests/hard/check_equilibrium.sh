@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue 25, item 4: a converged state is a frictional equilibrium by METHOD.md's law, checked by an
+# Issue 25, item 4: a converged state is a frictional equilibrium by docs/method.md's law, checked by an
 # independent recomputation (tools/check_equilibrium.py: its own contact detection, pn = kn d from
 # the positions, the stored pt, every grain's force and moment) after an oedometric path from the
 # jammed fixture with each solver (reference, global, global with newton: line_search); and the

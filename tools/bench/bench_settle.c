@@ -1,5 +1,5 @@
 /* The equilibrium of a deposit under its own weight (not a test; tools/settle_packing.sh makes the
- * scene; README "Known limits": the global solver does not converge on it).
+ * scene; docs/limits.md: the global solver does not converge on it).
  *   bench_settle SCENE.yaml reference|cholmod|umfpack [CAP (1000000)] [ACCURACY]
  * ACCURACY: a in force units, or "target" for 1e-6 kn r_mean (default: the scene's).
  * The scene holds a deposit (gb_packgen: every disc resting on others, no force yet) and a body

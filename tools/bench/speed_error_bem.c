@@ -2,7 +2,7 @@
  * circle, the seconds of meshing, assembly and solution, and the error against
  *   Lame's annulus 1 < r < 2, inner pressure, outer fixed, plane strain, nu = 0.3: u_r on the cavity;
  *   Kirsch, a hole of radius 1 in an infinite plane under remote s_xx = 1: the hoop stress at
- *   r = 1.5 on the vertical axis, from interior points (analytic 1.9630, METHOD.md section 12).
+ *   r = 1.5 on the vertical axis, from interior points (analytic 1.9630, docs/method.md section 12).
  * Prints CSV lines: case,N,seconds,error. Run from the repository root. */
 #define _POSIX_C_SOURCE 199309L
 #include "bench_clock.h"

@@ -1,4 +1,4 @@
-/* Validation: the degenerate scale (METHOD.md section 9). For a circle of radius a, uniform
+/* Validation: the degenerate scale (docs/method.md section 9). For a circle of radius a, uniform
  * traction has zero integral of the log kernel near a = exp(1 / (2 (3 - 4 nu))) (plane strain),
  * where G is singular. Two Dirichlet problems that invert G:
  *   disk:      a bounded disk given a uniform normal displacement d: s_rr = 2 (lam + mu) d / a;

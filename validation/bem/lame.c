@@ -1,4 +1,4 @@
-/* Validation: Lamé's thick cylinder (METHOD.md section 12), annulus 1 < r < 2 meshed by gmsh
+/* Validation: Lamé's thick cylinder (docs/method.md section 12), annulus 1 < r < 2 meshed by gmsh
  * (meshes/annulus.geo), plane strain and plane stress, outer boundary fixed or traction-free.
  *   pressure problem:     cavity pressure p, error of u_r on the cavity;
  *   displacement problem: cavity displaced by the exact u_r(a), error of s_rr on the cavity

@@ -2,7 +2,7 @@
  * pressure, Lamé) whose wall is a fraction of an element long, so that every collocation point
  * has the other boundary within 0.1 to 1 element length. The closed-form element integrals stay
  * at the discretisation error of a thick wall; for contrast, the same system with a fixed 4-point
- * Gauss rule for the off-diagonal elements (what METHOD.md warns against).
+ * Gauss rule for the off-diagonal elements (what docs/method.md warns against).
  * Usage: bem_ligament [--full] */
 #include <lapacke.h>
 

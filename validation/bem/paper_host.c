@@ -1,4 +1,4 @@
-/* Validation: the hybrid paper's host (METHOD.md section 11): a 10 x 10 cm square with a cavity
+/* Validation: the hybrid paper's host (docs/method.md section 11): a 10 x 10 cm square with a cavity
  * of radius 2.5 cm, mu = 95000 kgf/cm^2, nu = 0.1, plane strain, outer boundary fixed, the
  * cavity's condensed stiffness K. The paper used 20 elements outside and 24 on the cavity; how far
  * is that from the converged host? Modal stiffnesses of the cavity, k = u^t K u / sum L |u|^2, for
@@ -16,7 +16,7 @@ typedef struct {
     double sym_err[2]; /* |u_sym - u| / |u| under a pressure and under one element's normal force */
 } modal;
 
-/* u = K^-1 F against u_sym = ((K + K^t) / 2)^-1 F: what symmetrising the host costs (METHOD.md 10) */
+/* u = K^-1 F against u_sym = ((K + K^t) / 2)^-1 F: what symmetrising the host costs (docs/method.md 10) */
 static double sym_error(const gb_bem_stiffness *K, const double *F)
 {
     size_t m = (size_t)K->m;

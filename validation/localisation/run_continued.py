@@ -4,7 +4,7 @@ step that does not converge.
 
 Segment 0 is the case's scene (study.py scene NAME). When a segment stops (gembem exit 3: a load
 step did not converge in max_iterations), a bridge segment starts from the last converged state
-(`initial_state:`; restarting is exact, README "Restarting a hybrid run") and goes over the next
+(`initial_state:`; restarting is exact, docs/hybrid.md "Restarting a hybrid run") and goes over the next
 HALVED steps' worth of travel in steps half as long; a bridge that stops without a step done is
 tried again one level further (BRIDGES: steps / 4, then also the accuracy a 4 and 16 times
 looser); a bridge that stops after some steps is followed by a level-1 bridge from there. After a

@@ -1,5 +1,5 @@
 /* The exact solution for three rigid frictionless discs (Kishino 1989, eqs. 15-21, with the
- * correction of METHOD.md section 7: eq. 20 without its spurious factor 2). */
+ * correction of docs/method.md section 7: eq. 20 without its spurious factor 2). */
 #ifndef GB_THREE_DISCS_EXACT_H
 #define GB_THREE_DISCS_EXACT_H
 

@@ -2,7 +2,7 @@
 """Table 2 of Kishino (1989) next to gembem's runs.
 
 usage: table2.py RUNDIR_CASE1 [RUNDIR_CASE2 RUNDIR_CASE3 RUNDIR_CASE4]
-Prints a Markdown table: e1-e2, the exact rigid solution (computed, METHOD.md section 7), and for
+Prints a Markdown table: e1-e2, the exact rigid solution (computed, docs/method.md section 7), and for
 each case the paper's value and gembem's (the stress ratio in RUNDIR/steps.csv at that strain).
 """
 import csv

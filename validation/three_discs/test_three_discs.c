@@ -63,7 +63,7 @@ int main(int argc, char **argv)
         CHECK_NEAR(a.ratio[k], TABLE2[c - 1][k], tol);
         if (exact_tol > 0) CHECK_NEAR(a.ratio[k], exact, exact_tol);
     }
-    /* The exact solution itself reproduces the paper's "Exact" column (METHOD.md section 7). */
+    /* The exact solution itself reproduces the paper's "Exact" column (docs/method.md section 7). */
     const double EXACT[5] = {0.5164, 0.5053, 0.4942, 0.4829, 0.4716};
     for (int k = 0; k < 5; k++) CHECK_NEAR(three_discs_exact_ratio(0.01 * (k + 1), theta0), EXACT[k], 0.00005);
     gb_sim_free(sim);
