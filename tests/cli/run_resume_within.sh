@@ -1,0 +1,79 @@
+#!/usr/bin/env bash
+# Checkpoints within a load step (README.md "Checkpoints and resume"): runs whose steps take tens to
+# thousands of iterations, with a checkpoint every N iterations (the test hook
+# GB_TEST_CHECKPOINT_ITERATIONS=N instead of output.checkpoint_minutes, so that no clock decides),
+# killed with SIGKILL at seeded output writes (GB_TEST_KILL_AT: history.csv rows, the checkpoints
+# themselves, the steps' rows and files) and resumed until they complete (tests/cli/resume_lib.sh);
+# the run directories must equal the uninterrupted run's, which took no checkpoint within a step.
+# Before each resume the checkpoint is read: the test counts the resumes from within a step and
+# fails if there are too few, so that it cannot pass with kills that all fell between steps; and
+# it requires, per scene, the places the issue names:
+#  - reference: the 122-disc shear_mean_stress (reference iteration, 1 500-3 200 iterations a step,
+#    solver.history on, so that kills land at any iteration): resumes in the second relaxation
+#    (mean-stress control) of a step;
+#  - cutback: the same with max_iterations 1 200, so that every step is cut back (2 to 4 sub-steps,
+#    no history: most writes are checkpoints): resumes inside a cut-back sub-step (h < 1), resumes
+#    inside an attempt that later fails and is undone (the sub-step's start read from the
+#    checkpoint), and kills during a checkpoint's own writing within a step;
+#  - global: the same shear with the global solver (CHOLMOD, damped Newton), 50-110 iterations a step;
+#  - hybrid_history: a host (UMFPACK) with grains in its cavity, host_load stages (the host's load
+#    increment is applied once, before the checkpoint), solver.history on.
+set -u
+source "$(dirname "$0")/resume_lib.sh"
+
+sed -e 's/solver: {/solver: {history: true, /' -e 's/steps: 7/steps: 4/' "$out/scenes/ref.yaml" > "$out/scenes/ref_history.yaml"
+sed -e 's/max_iterations: 1000000/max_iterations: 1200/' -e 's/steps: 7/steps: 4/' "$out/scenes/ref.yaml" \
+  > "$out/scenes/cutback.yaml"
+sed -e 's/solver: {/solver: {history: true, /' "$out/scenes/hybrid.yaml" > "$out/scenes/hybrid_history.yaml"
+
+# Before a resume: the checkpoint's step in progress, if any, as "STEP H CUTS PHASE" in $d/within.
+on_resume() {
+  grep -q "^within_step 1" run/checkpoint.txt || return 0
+  awk '$1 == "step" { s = $4; h = $8 } $1 == "progress" { print s, h, $2, $5 }' run/checkpoint.txt >> "$d/within"
+}
+# After a kill: killed while writing a checkpoint within a step (its temporary file is whole).
+on_kill() {
+  grep -qs "^within_step 1" run/checkpoint.txt.tmp && echo >> "$d/in_write"
+  return 0
+}
+count() { [ -f "$1" ] && wc -l < "$1" || echo 0; }
+
+# NAME EVERY ATTEMPTS MAX_N MIN_RESUMES: kill_case with a checkpoint every EVERY iterations, and at
+# least MIN_RESUMES resumes from within a step.
+within_case() {
+  local name=$1 d=$out/$1
+  extra_env="GB_TEST_CHECKPOINT_ITERATIONS=$2"
+  kill_case "$name" "$out/scenes/$name.yaml" "$3" "$4"
+  local k=$(count "$d/within")
+  [ "$k" -ge "$5" ] && ok "$name: $k resumes from within a step" \
+    || bad "$name: $k resumes from within a step, expected $5 or more"
+  local listed=$(grep -c "within_step: true, iterations_done: [1-9]" "$d/kill/run/run_info.yaml")
+  [ "$listed" = "$k" ] && ok "$name: run_info.yaml lists the $k resumes within a step" \
+    || bad "$name: run_info.yaml lists $listed resumes within a step, expected $k"
+}
+
+within_case ref_history 400 12 1500 4
+k=$(awk '$4 == 2' "$out/ref_history/within" 2>/dev/null | wc -l)
+[ "$k" -ge 1 ] && ok "ref_history: $k resumes in a step's second relaxation (mean stress)" \
+  || bad "ref_history: no resume in a step's second relaxation"
+
+within_case cutback 150 14 60 4
+# the steps' sub-steps, from the uninterrupted run
+subs=$(cut -d, -f1,16 "$out/cutback/ref/run/steps.csv" | tail -n +2 | tr '\n' ' ')
+k=$(awk '$2 != "0x1p+0"' "$out/cutback/within" 2>/dev/null | wc -l)
+[ "$k" -ge 1 ] && ok "cutback: $k resumes inside a cut-back sub-step" || bad "cutback: no resume inside a cut-back sub-step"
+k=$(awk -v subs="$subs" 'BEGIN { n = split(subs, a, " "); for (i = 1; i <= n; i++) { split(a[i], b, ","); s[b[1]] = b[2] } }
+  $2 == "0x1p+0" && s[$1] > 1' "$out/cutback/within" 2>/dev/null | wc -l)
+[ "$k" -ge 1 ] && ok "cutback: $k resumes inside an attempt that then failed and was undone" \
+  || bad "cutback: no resume inside an attempt that later failed"
+k=$(count "$out/cutback/in_write")
+[ "$k" -ge 1 ] && ok "cutback: $k kills while a checkpoint within a step was being written" \
+  || bad "cutback: no kill while a checkpoint within a step was being written"
+
+within_case global 7 10 40 4
+within_case hybrid_history 5 10 60 4
+
+cd "$out/.."
+[ $fail -eq 0 ] && rm -rf "$out" || echo "outputs kept in $out"
+echo "$passed passed, $fail failed"
+[ $fail -eq 0 ]
