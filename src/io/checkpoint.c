@@ -501,8 +501,8 @@ static void get_step(cursor *c, const gb_sim *sim, extras *x)
     s->iters = (long)integer(c, 0, (long long)1 << 62);
     s->phase = (gb_step_phase)integer(c, GB_PHASE_RELAX, sg && sg->kind == GB_STAGE_SHEAR_MEAN ? GB_PHASE_MEAN
                                                                                                : GB_PHASE_RELAX);
-    s->phase_iters = (long)integer(c, 0, sc->solver.max_iterations);
-    s->relax_iters = (long)integer(c, 1, sc->solver.max_iterations);
+    s->phase_iters = (long)integer(c, 0, s->phase == GB_PHASE_MEAN ? sc->solver.max_iterations : 0);
+    s->relax_iters = (long)integer(c, 1, sc->solver.max_iterations - s->phase_iters);
     x->attempt = (int)integer(c, 1, 2147483647LL);
     expect(c, "work");
     x->work.trials = (long)integer(c, 0, (long long)1 << 62);

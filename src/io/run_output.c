@@ -429,7 +429,8 @@ static gb_status checkpoint(gb_run_output *o, const gb_sim *sim, gb_error *err)
 /* A checkpoint is due when output.checkpoint_minutes have passed since the last one (checkpoints on). */
 static int checkpoint_time(const gb_run_output *o)
 {
-    return o->scene->checkpoint_every > 0 && gb_clock_seconds() - o->last_checkpoint >= 60 * o->scene->checkpoint_minutes;
+    const gb_scene *sc = o->scene;
+    return sc->checkpoint_every > 0 && gb_clock_seconds() - o->last_checkpoint >= 60 * sc->checkpoint_minutes;
 }
 
 gb_status gb_run_output_within_step(void *user, const gb_sim *sim, gb_error *err)

@@ -8,6 +8,13 @@ gembem=$(cd "$(dirname "$1")" && pwd)/$(basename "$1"); root=$(cd "$(dirname "$0
 out=$(mktemp -d); fail=0; passed=0
 ok() { passed=$((passed + 1)); echo "ok   $1"; }
 bad() { fail=$((fail + 1)); echo "FAIL $1"; }
+# The test's end: its outputs removed if it passed; its exit status.
+finish() {
+  cd "$out/.."
+  [ $fail -eq 0 ] && rm -rf "$out" || echo "outputs kept in $out"
+  echo "$passed passed, $fail failed"
+  [ $fail -eq 0 ]
+}
 export OPENBLAS_NUM_THREADS=1
 
 seed=12345

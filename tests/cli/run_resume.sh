@@ -81,7 +81,4 @@ if "$gembem" run --resume run --quiet; then
     || bad "disk full: run_info.yaml does not list the resume"
 else bad "disk full: the resume failed"; fi
 
-cd "$out/.."
-[ $fail -eq 0 ] && rm -rf "$out" || echo "outputs kept in $out"
-echo "$passed passed, $fail failed"
-[ $fail -eq 0 ]
+finish

@@ -73,7 +73,21 @@ k=$(count "$out/cutback/in_write")
 within_case global 7 10 40 4
 within_case hybrid_history 5 10 60 4
 
-cd "$out/.."
-[ $fail -eq 0 ] && rm -rf "$out" || echo "outputs kept in $out"
-echo "$passed passed, $fail failed"
-[ $fail -eq 0 ]
+# A checkpoint of format 1 (before checkpoints within steps), its checksum made right: refused.
+d=$out/format1; mkdir -p "$d"; cd "$d"
+n=30; extra_env="GB_TEST_CHECKPOINT_ITERATIONS=7"; start "$out/scenes/global.yaml" -o run
+if [ -f run/checkpoint.txt ]; then
+  /usr/bin/python3 - run/checkpoint.txt <<'PY'
+import sys
+text = open(sys.argv[1], 'rb').read()
+body = text[:text.rindex(b'end ')].replace(b'gembem_checkpoint 2', b'gembem_checkpoint 1', 1)
+h = 0xcbf29ce484222325
+for b in body: h = ((h ^ b) * 0x100000001b3) % 2**64
+open(sys.argv[1], 'wb').write(body + b'end %016x\n' % h)
+PY
+  msg=$("$gembem" run --resume run 2>&1 >/dev/null); code=$?
+  [ $code -eq 2 ] && [[ $msg =~ "a checkpoint of format 1, this gembem reads format 2" ]] && ok "format 1: refused: $msg" \
+    || bad "format 1: exit $code, '$msg'"
+else bad "format 1: the run left no checkpoint"; fi
+
+finish
