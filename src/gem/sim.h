@@ -84,8 +84,10 @@ typedef struct {
     int n_touched, n_unbalanced;
 } gb_sweep_scratch;
 
-/* What one load step leaves for the next (the state, the accounts, the damping) is in a run's
- * checkpoint (src/io/checkpoint.c): a field added here that outlives a step belongs there too. */
+/* What one load step leaves for the next (the state, the accounts, the damping), and within a step
+ * what an iteration leaves for the next and for the rest of the step (sim->cur, the last move, the
+ * states a failure goes back to, the stall detection), is in a run's checkpoint
+ * (src/io/checkpoint.c): a field added here that outlives an iteration belongs there too. */
 struct gb_sim {
     const gb_scene *scene;
     int n;
