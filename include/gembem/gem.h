@@ -60,11 +60,18 @@ typedef struct {
 
 typedef void (*gb_iteration_fn)(void *user, const gb_iteration_report *rep);
 
+/* Called between two iterations of a load step's relaxation (not after the last one allowed), where
+ * the run can take a checkpoint within the step (docs/run-directory.md, "Checkpoints and resume"). A non-OK
+ * status fails the step with that error. */
+typedef gb_status (*gb_within_step_fn)(void *user, const gb_sim *sim, gb_error *err);
+
 /* The scene must outlive the simulation. */
 gb_status gb_sim_create(const gb_scene *scene, gb_sim **out, gb_error *err);
 void gb_sim_free(gb_sim *sim);
 /* Calls fn after every iteration that did not converge (for solver.history); NULL: none. */
 void gb_sim_on_iteration(gb_sim *sim, gb_iteration_fn fn, void *user);
+/* Calls fn between the iterations of every relaxation; NULL: none. */
+void gb_sim_on_within_step(gb_sim *sim, gb_within_step_fn fn, void *user);
 
 /* Runs the whole loading program. A step that reaches the iteration cap returns GB_ENOCONV with a
  * message naming the step and its distance from convergence; the simulation then holds the state of

@@ -27,6 +27,10 @@ gb_status gb_run_output_step(gb_run_output *o, const gb_sim *sim, const gb_step_
 /* One row of history.csv (solver.history), for gb_sim_on_iteration with o as user. A write error
  * is reported by the next gb_run_output_step or gb_run_output_close. */
 void gb_run_output_iteration(void *o, const gb_iteration_report *rep);
+/* For gb_sim_on_within_step with o as user: checkpoint.txt within the load step in progress when
+ * output.checkpoint_minutes have passed since the last checkpoint (docs/run-directory.md, "Checkpoints and
+ * resume"); a history.csv that could not be written stops the run here. */
+gb_status gb_run_output_within_step(void *o, const gb_sim *sim, gb_error *err);
 /* Writes the final state (state.yaml, state_grains.csv, state_contacts.csv), records the run's
  * status in run_info.yaml and frees o. */
 gb_status gb_run_output_close(gb_run_output *o, const gb_sim *sim, gb_status run_status, const char *message,

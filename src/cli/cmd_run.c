@@ -97,6 +97,7 @@ int gb_cli_run(int argc, char **argv)
         return gb_cli_report(&err);
     }
     if (scene.solver.history) gb_sim_on_iteration(sim, gb_run_output_iteration, ctx.out);
+    gb_sim_on_within_step(sim, gb_run_output_within_step, ctx.out);
     gb_status st = gb_sim_run(sim, on_step, &ctx, &err);
     if (ctx.progress && !quiet) fprintf(stderr, "\n");
     gb_error close_err = {0};

@@ -399,20 +399,27 @@ static void report_iteration(gb_sim *sim, long it, double max_force, double wall
 gb_status gb_gem_relax(gb_sim *sim, const gb_wall_control *wc, long cap, long *iterations, double *max_force,
                        double *wall_residual, gb_error *err)
 {
-    sim->attempt++;
-    gb_status st = GB_OK;
-    sim->lm_best = INFINITY, sim->lm_since = 0; /* the stall detection of global_move, per load step */
-    for (long it = 0; it <= cap; it++) {
-        if (gb_gem_iterate(sim, wc, max_force, wall_residual, err, &st)) {
-            *iterations += it;
-            return GB_OK;
-        }
-        if (st) {
-            *iterations += it;
-            return st;
-        }
-        if (sim->on_iteration) report_iteration(sim, it + 1, *max_force, *wall_residual);
+    long it = sim->cur.relax_iters;
+    if (!it) {
+        sim->attempt++;
+        sim->lm_best = INFINITY, sim->lm_since = 0; /* the stall detection of global_move, per load step */
     }
-    *iterations += cap;
-    return GB_ENOCONV;
+    gb_status st = GB_OK;
+    for (; it <= cap; it++) {
+        if (gb_gem_iterate(sim, wc, max_force, wall_residual, err, &st) || st) break;
+        if (sim->on_iteration) report_iteration(sim, it + 1, *max_force, *wall_residual);
+        sim->cur.relax_iters = it + 1;
+        /* not after the last iteration allowed: its failed attempt is undone at once */
+        if (it < cap && sim->on_within_step && (st = sim->on_within_step(sim->on_within_step_user, sim, err))) {
+            it++;
+            break;
+        }
+    }
+    sim->cur.relax_iters = 0;
+    if (it > cap) {
+        *iterations += cap;
+        return GB_ENOCONV;
+    }
+    *iterations += it;
+    return st;
 }

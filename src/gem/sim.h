@@ -39,7 +39,8 @@ typedef struct {
     double host_remote[3];
 } gb_sim_state;
 
-/* Where gb_sim_run stands: the last completed load step (a checkpoint's place in the program). */
+/* Where gb_sim_run stands: the last completed load step (a checkpoint's place in the program; one
+ * taken within a step holds that step in sim->cur too). */
 typedef struct {
     int stage;        /* its stage (0 with step 0, the initial state) */
     int stage_step;   /* its number in the stage, 1-based (0: none of the stage's steps yet) */
@@ -47,6 +48,30 @@ typedef struct {
     double start[2];  /* the boundary stresses at the stage's start, where a stress ramp begins */
     int resume;       /* set by a checkpoint: gb_sim_run continues after this step */
 } gb_sim_position;
+
+/* Where the load step in progress stands (src/gem/program.c), all that a checkpoint within it must
+ * hold beyond the states (src/io/checkpoint.c). A step's sub-step applies its loads (phase LOAD),
+ * then relaxes (RELAX), and a shear_mean_stress step relaxes a second time under mean-stress control
+ * (MEAN): a sub-step resumed past LOAD does not apply its loads again. */
+typedef enum { GB_PHASE_LOAD = 0, GB_PHASE_RELAX, GB_PHASE_MEAN } gb_step_phase;
+
+typedef struct {
+    int active;           /* a load step is in progress: the fields below are its */
+    int stage, stage_step, step; /* as in gb_sim_position */
+    double start[2];      /* the stage's start stresses */
+    double t, h;          /* the sub-step: from fraction t of the step's increment, h of it (powers of two) */
+    int cuts;             /* cut-backs left; > 0: sim->substep holds the sub-step's start */
+    int substeps;         /* sub-steps converged */
+    double finest;        /* the smallest sub-step tried */
+    long iters;           /* iterations of the step's attempts that ended */
+    gb_step_phase phase;
+    long phase_iters;     /* iterations of the sub-step's relaxations that ended (shear_mean_stress: the first) */
+    long relax_iters;     /* iterations done by the relaxation in progress (gb_gem_relax); 0 outside one */
+    gb_solver_work work0; /* the solver's work counters of this process at the step's start */
+} gb_sim_step;
+
+/* The iterations a step has done so far. */
+static inline long gb_sim_step_iterations(const gb_sim_step *c) { return c->iters + c->phase_iters + c->relax_iters; }
 
 /* The sweeps' bookkeeping (src/gem/sweeps.c): scratch, rebuilt from the forces at each phase. */
 typedef struct {
@@ -59,8 +84,10 @@ typedef struct {
     int n_touched, n_unbalanced;
 } gb_sweep_scratch;
 
-/* What one load step leaves for the next (the state, the accounts, the damping) is in a run's
- * checkpoint (src/io/checkpoint.c): a field added here that outlives a step belongs there too. */
+/* What one load step leaves for the next (the state, the accounts, the damping), and within a step
+ * what an iteration leaves for the next and for the rest of the step (sim->cur, the last move, the
+ * states a failure goes back to, the stall detection), is in a run's checkpoint
+ * (src/io/checkpoint.c): a field added here that outlives an iteration belongs there too. */
 struct gb_sim {
     const gb_scene *scene;
     int n;
@@ -120,7 +147,19 @@ struct gb_sim {
     double dissipation_step;  /* of the current load step */
     double energy0;           /* elastic energy of the initial state */
     gb_sim_position pos;
+    gb_sim_step cur;          /* the load step in progress */
+    gb_within_step_fn on_within_step; /* between two iterations of a relaxation (checkpoints) */
+    void *on_within_step_user;
 };
+
+/* The global solver's work since the start of the process (all zero for the reference iteration),
+ * and a difference of two such counts. */
+gb_solver_work gb_sim_solver_work(const gb_sim *sim);
+static inline gb_solver_work gb_solver_work_minus(gb_solver_work a, gb_solver_work b)
+{
+    gb_solver_work d = {a.trials - b.trials, a.factorisations - b.factorisations, a.sweeps - b.sweeps};
+    return d;
+}
 
 gb_status gb_sim_state_save(const gb_sim *sim, gb_sim_state *st, gb_error *err);
 void gb_sim_state_restore(gb_sim *sim, const gb_sim_state *st);
@@ -157,7 +196,10 @@ void gb_gem_add_contact(gb_sim *sim, const gb_pair *p, double sign);
 /* Moves grains by dX and walls by wall_dx simultaneously, then updates every contact. */
 gb_status gb_gem_apply_moves(gb_sim *sim, gb_error *err);
 
-/* Relaxes to equilibrium under the wall control, at most `cap` iterations. */
+/* Relaxes to equilibrium under the wall control, at most `cap` iterations. A relaxation resumed from
+ * a checkpoint within it (sim->cur.relax_iters > 0) goes on from there: its iterations, attempt and
+ * the global solver's stall detection are those it had. Between two iterations (not after the last
+ * allowed one) it calls sim->on_within_step, whose error ends it. */
 gb_status gb_gem_relax(gb_sim *sim, const gb_wall_control *wc, long cap, long *iterations, double *max_force,
                        double *wall_residual, gb_error *err);
 

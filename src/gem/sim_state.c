@@ -82,8 +82,7 @@ void gb_sim_state_restore(gb_sim *sim, const gb_sim_state *st)
     memcpy(sim->g, st->g, (size_t)sim->n * sizeof *st->g);
     if (st->n_pairs > 0) memcpy(sim->pairs.p, st->p, (size_t)st->n_pairs * sizeof *st->p);
     memcpy(sim->pairs.x0, st->x0, 2 * (size_t)sim->n * sizeof(double));
-    /* the particles' places at the restored list's rebuild, which its staleness test measures from
-     * (a checkpoint's state has none: its reader sets them) */
+    /* the particles' places at the restored list's rebuild, which its staleness test measures from */
     if (sim->bp.n && st->px0) memcpy(sim->pairs.px0, st->px0, 2 * (size_t)sim->bp.n * sizeof(double));
     sim->pairs.n = st->n_pairs;
     sim->box = st->box;

@@ -6,6 +6,7 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <inttypes.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -16,7 +17,9 @@
 #include "gem/sim.h"
 #include "io/file_util.h"
 
-enum { FORMAT = 1 };
+/* 2: the load step in progress (a checkpoint within a step) and its states; 1 (before): between
+ * steps only, not read. */
+enum { FORMAT = 2 };
 
 static uint64_t fnv(uint64_t h, const void *data, size_t n)
 {
@@ -111,10 +114,65 @@ static void put(FILE *f, const char *label, const double *v, int n)
     fputc('\n', f);
 }
 
-static void write_body(FILE *f, const gb_sim *sim, const gb_checkpoint_meta *m)
+/* A state of the simulation (src/gem/sim_state.c) as a block: the current one, the step's start
+ * and the sub-step's start are all written by this; un: the global solver's unloading flags of its
+ * pairs, or NULL. */
+static void put_state(FILE *f, const char *name, const gb_sim *sim, const gb_sim_state *st, const unsigned char *un)
 {
-    const gb_pair_list *P = &sim->pairs;
     int np = sim->bp.n, hm = sim->host ? sim->host->m : 0;
+    fprintf(f, "state %s %d %ld %ld %d\n", name, st->n_pairs, st->generation, st->rebuilds, st->half_pending);
+    double box[4] = {st->box.left, st->box.right, st->box.bottom, st->box.top};
+    double box0[4] = {st->box0.left, st->box0.right, st->box0.bottom, st->box0.top};
+    put(f, "box", box, 4);
+    put(f, "box0", box0, 4);
+    put(f, "wall_force", st->wall_force, GB_N_WALLS);
+    double e[4] = {st->work_walls_iter, st->dissipation, st->dissipation_step, st->relaxation};
+    put(f, "energies", e, 4);
+    if (hm) {
+        double v[2 * GB_BEM_MAX_GROUPS + 3];
+        for (int g = 0; g < GB_BEM_MAX_GROUPS; g++) v[2 * g] = st->host_bc[g][0], v[2 * g + 1] = st->host_bc[g][1];
+        memcpy(&v[2 * GB_BEM_MAX_GROUPS], st->host_remote, 3 * sizeof(double));
+        put(f, "host_values", v, 2 * GB_BEM_MAX_GROUPS + 3);
+    }
+    fprintf(f, "grains\n");
+    for (int i = 0; i < sim->n; i++) {
+        const gb_grain *g = &st->g[i];
+        fprintf(f, "%a %a %a %a %a %a\n", g->x, g->y, g->r, g->rot, st->x0[2 * i], st->x0[2 * i + 1]);
+    }
+    fprintf(f, "pairs %d\n", un != NULL);
+    for (int q = 0; q < st->n_pairs; q++) {
+        const gb_pair *p = &st->p[q];
+        fprintf(f, "%d %d %a %a %a %a %a %a %d\n", p->i, p->j, p->nx, p->ny, p->d, p->pn, p->pt, p->diss,
+                un ? un[q] : 0);
+    }
+    fprintf(f, "particles\n");
+    for (int e2 = 0; e2 < np; e2++)
+        fprintf(f, "%a %a %a %a\n", st->bp_xy[2 * e2], st->bp_xy[2 * e2 + 1], st->px0[2 * e2], st->px0[2 * e2 + 1]);
+    fprintf(f, "host\n");
+    for (int k = 0; k < hm; k++) fprintf(f, "%a %a\n", st->host_u[k], st->host_f0[k]);
+}
+
+/* The load step in progress (sim->cur), for a checkpoint within it: its place and cut-back
+ * bookkeeping, the solver's work and stall detection so far, the last move (its fixing forces'
+ * work is half accounted: half_pending), and the states its failure would go back to. */
+static void put_step(FILE *f, const gb_sim *sim)
+{
+    const gb_sim_step *c = &sim->cur;
+    fprintf(f, "step %d %d %d %a %a %a %a %a\n", c->stage, c->stage_step, c->step, c->start[0], c->start[1], c->t,
+            c->h, c->finest);
+    fprintf(f, "progress %d %d %ld %d %ld %ld %d\n", c->cuts, c->substeps, c->iters, (int)c->phase, c->phase_iters,
+            c->relax_iters, sim->attempt);
+    gb_solver_work w = gb_solver_work_minus(gb_sim_solver_work(sim), c->work0);
+    fprintf(f, "work %ld %ld %ld\n", w.trials, w.factorisations, w.sweeps);
+    fprintf(f, "stall %ld %a\n", sim->lm_since, sim->lm_best); /* "inf" before the solver's first move */
+    fprintf(f, "moves\n");
+    for (int i = 0; i < sim->n; i++) fprintf(f, "%a %a %a\n", sim->dX[3 * i], sim->dX[3 * i + 1], sim->dX[3 * i + 2]);
+    put_state(f, "step_start", sim, &sim->saved, NULL);
+    if (c->cuts > 0) put_state(f, "substep", sim, &sim->substep, NULL);
+}
+
+static gb_status write_body(FILE *f, const gb_sim *sim, const gb_checkpoint_meta *m, gb_error *err)
+{
     fprintf(f, "gembem_checkpoint %d\nversion %s\nscene %s\nscene_hash %016" PRIx64 "\nfiles %d\n", FORMAT,
             gb_version(), m->scene_path, m->scene_hash, m->n_files);
     for (int k = 0; k < m->n_files; k++) {
@@ -125,44 +183,21 @@ static void write_body(FILE *f, const gb_sim *sim, const gb_checkpoint_meta *m)
     }
     const gb_sim_position *pos = &sim->pos;
     fprintf(f, "position %d %d %d %a %a\n", pos->stage, pos->stage_step, pos->step, pos->start[0], pos->start[1]);
-    fprintf(f, "counts %d %d %d %d\n", sim->n, P->n, np, hm);
-    double box[4] = {sim->box.left, sim->box.right, sim->box.bottom, sim->box.top};
-    double box0[4] = {P->box0.left, P->box0.right, P->box0.bottom, P->box0.top};
-    put(f, "box", box, 4);
-    put(f, "box0", box0, 4);
-    put(f, "wall_force", sim->wall_force, GB_N_WALLS);
-    double e[7] = {sim->work_walls_iter, sim->dissipation, sim->dissipation_step, sim->relaxation,
-                   sim->work_walls, sim->work_body, sim->energy0};
-    put(f, "energies", e, 7);
-    double ref[2] = {sim->ref_width, sim->ref_height};
+    fprintf(f, "counts %d %d %d\n", sim->n, sim->bp.n, sim->host ? sim->host->m : 0);
+    double ref[2] = {sim->ref_width, sim->ref_height}, acc[3] = {sim->work_walls, sim->work_body, sim->energy0};
     put(f, "reference", ref, 2);
-    fprintf(f, "counters %ld %d %ld %d\n", P->rebuilds, sim->half_pending, sim->iterations_total, sim->lm_next);
+    put(f, "accounts", acc, 3);
+    fprintf(f, "counters %ld %d\n", sim->iterations_total, sim->lm_next);
     put(f, "damping", &sim->lm_mu, 1);
     put(f, "damping_history", sim->lm_history, LM_MEMORY);
-    if (sim->host) {
-        double v[2 * GB_BEM_MAX_GROUPS + 3];
-        for (int g = 0; g < GB_BEM_MAX_GROUPS; g++)
-            v[2 * g] = sim->host->prob.bc[g].value[0], v[2 * g + 1] = sim->host->prob.bc[g].value[1];
-        memcpy(&v[2 * GB_BEM_MAX_GROUPS], sim->host->prob.remote_stress, 3 * sizeof(double));
-        put(f, "host_values", v, 2 * GB_BEM_MAX_GROUPS + 3);
-    }
-    fprintf(f, "grains\n");
-    for (int i = 0; i < sim->n; i++) {
-        const gb_grain *g = &sim->g[i];
-        fprintf(f, "%a %a %a %a %a %a\n", g->x, g->y, g->r, g->rot, P->x0[2 * i], P->x0[2 * i + 1]);
-    }
-    const unsigned char *un = sim->global ? gb_global_unloading(sim->global, P) : NULL;
-    fprintf(f, "pairs %d\n", un != NULL);
-    for (int q = 0; q < P->n; q++) {
-        const gb_pair *p = &P->p[q];
-        fprintf(f, "%d %d %a %a %a %a %a %a %d\n", p->i, p->j, p->nx, p->ny, p->d, p->pn, p->pt, p->diss,
-                un ? un[q] : 0);
-    }
-    fprintf(f, "particles\n");
-    for (int e2 = 0; e2 < np; e2++)
-        fprintf(f, "%a %a %a %a\n", sim->bp.x[e2], sim->bp.y[e2], P->px0[2 * e2], P->px0[2 * e2 + 1]);
-    fprintf(f, "host\n");
-    for (int k = 0; k < hm; k++) fprintf(f, "%a %a\n", sim->host->u[k], sim->host->K.f0[k]);
+    gb_sim_state now;
+    memset(&now, 0, sizeof now);
+    gb_status st = gb_sim_state_save(sim, &now, err);
+    if (!st) put_state(f, "current", sim, &now, sim->global ? gb_global_unloading(sim->global, &sim->pairs) : NULL);
+    gb_sim_state_free(&now);
+    fprintf(f, "within_step %d\n", sim->cur.active);
+    if (!st && sim->cur.active) put_step(f, sim);
+    return st;
 }
 
 gb_status gb_checkpoint_write(const char *dir, const gb_sim *sim, const gb_checkpoint_meta *m, gb_error *err)
@@ -174,13 +209,14 @@ gb_status gb_checkpoint_write(const char *dir, const gb_sim *sim, const gb_check
     size_t len = 0;
     FILE *mem = open_memstream(&buf, &len);
     if (!mem) return gb_fail(err, GB_ENOMEM, "out of memory for a checkpoint");
-    write_body(mem, sim, m);
-    if (fclose(mem) != 0 || !buf) {
+    gb_status st = write_body(mem, sim, m, err);
+    if ((fclose(mem) != 0 || !buf) && !st) st = gb_fail(err, GB_ENOMEM, "out of memory for a checkpoint");
+    if (st) {
         free(buf);
-        return gb_fail(err, GB_ENOMEM, "out of memory for a checkpoint");
+        return st;
     }
     gb_atomic_file a;
-    gb_status st = gb_atomic_open(&a, path, err);
+    st = gb_atomic_open(&a, path, err);
     if (!st) {
         fwrite(buf, 1, len, a.f);
         fprintf(a.f, "end %016" PRIx64 "\n", fnv(FNV0, buf, len));
@@ -311,8 +347,13 @@ static gb_status load(const char *dir, char *path, size_t cap, char **text, gb_e
 static void read_meta(cursor *c, gb_checkpoint_meta *m)
 {
     expect(c, "gembem_checkpoint");
-    if (integer(c, 0, 1000) != FORMAT) fail(c, "a checkpoint of another format; resume it with the gembem that "
-                                              "wrote it");
+    long long format = integer(c, 0, 1000);
+    if (!c->st && format != FORMAT) {
+        char what[160];
+        snprintf(what, sizeof what, "a checkpoint of format %lld, this gembem reads format %d; resume it with the "
+                 "gembem that wrote it", format, FORMAT);
+        fail(c, what);
+    }
     expect(c, "version");
     word(c);
     expect(c, "scene");
@@ -358,64 +399,58 @@ gb_status gb_checkpoint_read_meta(const char *dir, gb_checkpoint_meta *m, gb_err
     return c.st;
 }
 
-/* The state part: into st (allocated here) and the simulation's own accounts in *x. */
+/* What a checkpoint holds beyond its header, read whole before any of it goes into the simulation. */
 typedef struct {
     gb_sim_position pos;
-    double work_walls, work_body, energy0, ref[2], lm_mu, lm_history[LM_MEMORY], *px0;
+    double work_walls, work_body, energy0, ref[2], lm_mu, lm_history[LM_MEMORY];
     long iterations_total;
-    int lm_next, has_unloading;
-    unsigned char *unloading;
+    int lm_next;
+    gb_sim_state now;          /* the current state */
+    unsigned char *unloading;  /* the global solver's flags of its pairs, or NULL */
+    /* a checkpoint within a step: the step (sim->cur), the solver's work in it, the last move, the
+     * step's and the sub-step's start (sim->saved, sim->substep) */
+    gb_sim_step cur;
+    int attempt;
+    long lm_since;
+    double lm_best;
+    gb_solver_work work;
+    double *dX;
+    gb_sim_state start, sub;
+    long gen[3];               /* the lists' generations as written: now, start, sub */
 } extras;
 
-static void read_state(cursor *c, const gb_sim *sim, gb_sim_state *st, extras *x)
+static void *alloc(cursor *c, size_t n, size_t size)
 {
-    expect(c, "position");
-    x->pos.stage = (int)integer(c, 0, sim->scene->n_stages > 0 ? sim->scene->n_stages - 1 : 0);
-    int steps = c->st || !sim->scene->n_stages ? 0 : sim->scene->stages[x->pos.stage].steps;
-    x->pos.stage_step = (int)integer(c, 0, steps);
-    x->pos.step = (int)integer(c, 0, gb_scene_total_steps(sim->scene));
-    x->pos.start[0] = num(c), x->pos.start[1] = num(c);
-    x->pos.resume = 1;
-    expect(c, "counts");
-    int np = sim->bp.n, hm = sim->host ? sim->host->m : 0;
-    long long n_grains = integer(c, 0, 1 << 30);
+    void *p = c->st ? NULL : malloc((n > 0 ? n : 1) * size);
+    if (!p && !c->st) c->st = gb_fail(c->err, GB_ENOMEM, "out of memory for a checkpoint");
+    return p;
+}
+
+/* A state block (put_state) into st, allocated as gb_sim_state_save would; *gen: its list's
+ * generation as written; un (may be NULL): the unloading flags, allocated if the block has them. */
+static void get_state(cursor *c, const gb_sim *sim, const char *name, gb_sim_state *st, long *gen, unsigned char **un)
+{
+    int n = sim->n, np = sim->bp.n, hm = sim->host ? sim->host->m : 0;
+    expect(c, "state");
+    expect(c, name);
     st->n_pairs = (int)integer(c, 0, 1 << 30);
-    long long n_particles = integer(c, 0, 1 << 30), n_host = integer(c, 0, 1 << 30);
-    if (n_grains != sim->n || n_particles != np || n_host != hm)
-        fail(c, "the checkpoint's grains or host differ from the scene's");
-    if (c->st) return;
-    size_t n = (size_t)(sim->n > 0 ? sim->n : 1), npairs = (size_t)(st->n_pairs > 0 ? st->n_pairs : 1);
-    st->g = malloc(n * sizeof *st->g), st->x0 = malloc(2 * n * sizeof(double));
-    st->p = malloc(npairs * sizeof *st->p), st->cap = st->n_pairs;
-    x->unloading = malloc(npairs);
-    x->px0 = malloc(2 * (size_t)(np > 0 ? np : 1) * sizeof(double));
+    *gen = (long)integer(c, 0, (long long)1 << 62);
+    st->rebuilds = (long)integer(c, 0, (long long)1 << 62);
+    st->half_pending = (int)integer(c, 0, 1);
+    st->g = alloc(c, (size_t)n, sizeof *st->g), st->x0 = alloc(c, 2 * (size_t)n, sizeof(double));
+    st->p = alloc(c, (size_t)st->n_pairs, sizeof *st->p), st->cap = st->n_pairs;
     if (hm) {
-        st->bp_xy = malloc((size_t)hm * sizeof(double));
-        st->host_u = malloc((size_t)hm * sizeof(double)), st->host_f0 = malloc((size_t)hm * sizeof(double));
+        st->bp_xy = alloc(c, (size_t)hm, sizeof(double)), st->px0 = alloc(c, (size_t)hm, sizeof(double));
+        st->host_u = alloc(c, (size_t)hm, sizeof(double)), st->host_f0 = alloc(c, (size_t)hm, sizeof(double));
     }
-    if (!st->g || !st->x0 || !st->p || !x->unloading || !x->px0 ||
-        (hm && (!st->bp_xy || !st->host_u || !st->host_f0))) {
-        c->st = gb_fail(c->err, GB_ENOMEM, "out of memory for the checkpoint of %d grains", sim->n);
-        return;
-    }
-    double box[4], box0[4], e[7];
+    double box[4], box0[4], e[4];
     nums(c, "box", box, 4);
     nums(c, "box0", box0, 4);
     gb_box b = {box[0], box[1], box[2], box[3]}, b0 = {box0[0], box0[1], box0[2], box0[3]};
     st->box = b, st->box0 = b0;
     nums(c, "wall_force", st->wall_force, GB_N_WALLS);
-    nums(c, "energies", e, 7);
+    nums(c, "energies", e, 4);
     st->work_walls_iter = e[0], st->dissipation = e[1], st->dissipation_step = e[2], st->relaxation = e[3];
-    x->work_walls = e[4], x->work_body = e[5], x->energy0 = e[6];
-    nums(c, "reference", x->ref, 2);
-    expect(c, "counters");
-    st->rebuilds = (long)integer(c, 0, (long long)1 << 62);
-    st->generation = 0; /* set to a new one when the list is restored */
-    st->half_pending = (int)integer(c, 0, 1);
-    x->iterations_total = (long)integer(c, 0, (long long)1 << 62);
-    x->lm_next = (int)integer(c, 0, 2147483647LL);
-    nums(c, "damping", &x->lm_mu, 1);
-    nums(c, "damping_history", x->lm_history, LM_MEMORY);
     if (hm) {
         double v[2 * GB_BEM_MAX_GROUPS + 3];
         nums(c, "host_values", v, 2 * GB_BEM_MAX_GROUPS + 3);
@@ -423,27 +458,110 @@ static void read_state(cursor *c, const gb_sim *sim, gb_sim_state *st, extras *x
         memcpy(st->host_remote, &v[2 * GB_BEM_MAX_GROUPS], sizeof st->host_remote);
     }
     expect(c, "grains");
-    for (int i = 0; i < sim->n && !c->st; i++) {
+    for (int i = 0; i < n && !c->st; i++) {
         gb_grain *g = &st->g[i];
         g->x = num(c), g->y = num(c), g->r = num(c), g->rot = num(c);
         st->x0[2 * i] = num(c), st->x0[2 * i + 1] = num(c);
         if (g->r != sim->g[i].r) fail(c, "a grain's radius differs from the scene's");
     }
     expect(c, "pairs");
-    x->has_unloading = (int)integer(c, 0, 1);
+    if (integer(c, 0, 1) && un) *un = alloc(c, (size_t)st->n_pairs, 1);
     for (int q = 0; q < st->n_pairs && !c->st; q++) {
         gb_pair *p = &st->p[q];
-        p->i = (int)integer(c, 0, sim->n - 1);
-        p->j = (int)integer(c, np > 0 ? GB_PARTICLE_J(np - 1) : -GB_N_WALLS, sim->n - 1);
+        p->i = (int)integer(c, 0, n - 1);
+        p->j = (int)integer(c, np > 0 ? GB_PARTICLE_J(np - 1) : -GB_N_WALLS, n - 1);
         p->nx = num(c), p->ny = num(c), p->d = num(c), p->pn = num(c), p->pt = num(c), p->diss = num(c);
-        x->unloading[q] = (unsigned char)integer(c, 0, 1);
+        unsigned char flag = (unsigned char)integer(c, 0, 1);
+        if (un && *un) (*un)[q] = flag;
     }
     expect(c, "particles");
     for (int k = 0; k < np && !c->st; k++)
-        st->bp_xy[2 * k] = num(c), st->bp_xy[2 * k + 1] = num(c), x->px0[2 * k] = num(c), x->px0[2 * k + 1] = num(c);
+        st->bp_xy[2 * k] = num(c), st->bp_xy[2 * k + 1] = num(c), st->px0[2 * k] = num(c), st->px0[2 * k + 1] = num(c);
     expect(c, "host");
     for (int k = 0; k < hm && !c->st; k++) st->host_u[k] = num(c), st->host_f0[k] = num(c);
+}
+
+/* The step in progress (put_step); checked against the scene and the last completed step. */
+static void get_step(cursor *c, const gb_sim *sim, extras *x)
+{
+    const gb_scene *sc = sim->scene;
+    gb_sim_step *s = &x->cur;
+    s->active = 1;
+    expect(c, "step");
+    s->stage = (int)integer(c, 0, sc->n_stages > 0 ? sc->n_stages - 1 : 0);
+    const gb_stage *sg = c->st || !sc->n_stages ? NULL : &sc->stages[s->stage];
+    s->stage_step = (int)integer(c, 1, sg ? sg->steps : 1);
+    s->step = (int)integer(c, 1, gb_scene_total_steps(sc));
+    s->start[0] = num(c), s->start[1] = num(c), s->t = num(c), s->h = num(c), s->finest = num(c);
+    if (!c->st && (!sg || s->step != x->pos.step + 1 || !(s->t >= 0 && s->t < 1) || !(s->h > 0 && s->t + s->h <= 1)))
+        fail(c, "the step in progress does not follow the checkpoint's last step");
+    expect(c, "progress");
+    s->cuts = (int)integer(c, 0, sc->solver.cutbacks);
+    s->substeps = (int)integer(c, 0, 1 << 30);
+    s->iters = (long)integer(c, 0, (long long)1 << 62);
+    s->phase = (gb_step_phase)integer(c, GB_PHASE_RELAX, sg && sg->kind == GB_STAGE_SHEAR_MEAN ? GB_PHASE_MEAN
+                                                                                               : GB_PHASE_RELAX);
+    s->phase_iters = (long)integer(c, 0, s->phase == GB_PHASE_MEAN ? sc->solver.max_iterations : 0);
+    s->relax_iters = (long)integer(c, 1, sc->solver.max_iterations - s->phase_iters);
+    x->attempt = (int)integer(c, 1, 2147483647LL);
+    expect(c, "work");
+    x->work.trials = (long)integer(c, 0, (long long)1 << 62);
+    x->work.factorisations = (long)integer(c, 0, (long long)1 << 62);
+    x->work.sweeps = (long)integer(c, 0, (long long)1 << 62);
+    expect(c, "stall");
+    x->lm_since = (long)integer(c, 0, (long long)1 << 62);
+    const char *w = word(c);
+    if (!strcmp(w, "inf")) x->lm_best = INFINITY;
+    else if (gb_parse_finite(w, &x->lm_best) != GB_NUMBER_OK) fail(c, "expected a number or inf");
+    expect(c, "moves");
+    x->dX = alloc(c, 3 * (size_t)sim->n, sizeof(double));
+    for (int k = 0; k < 3 * sim->n && !c->st; k++) x->dX[k] = num(c);
+    get_state(c, sim, "step_start", &x->start, &x->gen[1], NULL);
+    if (s->cuts > 0) get_state(c, sim, "substep", &x->sub, &x->gen[2], NULL);
+}
+
+static void read_body(cursor *c, const gb_sim *sim, extras *x)
+{
+    const gb_scene *sc = sim->scene;
+    expect(c, "position");
+    x->pos.stage = (int)integer(c, 0, sc->n_stages > 0 ? sc->n_stages - 1 : 0);
+    int steps = c->st || !sc->n_stages ? 0 : sc->stages[x->pos.stage].steps;
+    x->pos.stage_step = (int)integer(c, 0, steps);
+    x->pos.step = (int)integer(c, 0, gb_scene_total_steps(sc));
+    x->pos.start[0] = num(c), x->pos.start[1] = num(c);
+    x->pos.resume = 1;
+    expect(c, "counts");
+    long long n_grains = integer(c, 0, 1 << 30), n_particles = integer(c, 0, 1 << 30), n_host = integer(c, 0, 1 << 30);
+    if (n_grains != sim->n || n_particles != sim->bp.n || n_host != (sim->host ? sim->host->m : 0))
+        fail(c, "the checkpoint's grains or host differ from the scene's");
+    double acc[3];
+    nums(c, "reference", x->ref, 2);
+    nums(c, "accounts", acc, 3);
+    x->work_walls = acc[0], x->work_body = acc[1], x->energy0 = acc[2];
+    expect(c, "counters");
+    x->iterations_total = (long)integer(c, 0, (long long)1 << 62);
+    x->lm_next = (int)integer(c, 0, 2147483647LL);
+    nums(c, "damping", &x->lm_mu, 1);
+    nums(c, "damping_history", x->lm_history, LM_MEMORY);
+    get_state(c, sim, "current", &x->now, &x->gen[0], &x->unloading);
+    expect(c, "within_step");
+    if (integer(c, 0, 1)) get_step(c, sim, x);
     if (!c->st && *word(c)) fail(c, "expected the end of the checkpoint");
+}
+
+/* New generations for the pair lists read (src/contact/pairs.h: a list this process did not build),
+ * equal where the checkpoint's were: whether a restored list is the one the global solver's pattern
+ * was built for decides whether the pattern and its flags are kept. */
+static void new_generations(gb_sim *sim, extras *x)
+{
+    gb_sim_state *st[3] = {&x->now, &x->start, &x->sub};
+    for (int a = 0; a < 3; a++) {
+        if (!st[a]->g) continue; /* not in the checkpoint */
+        st[a]->generation = 0;
+        for (int b = 0; b < a; b++)
+            if (x->gen[b] == x->gen[a] && st[b]->g) st[a]->generation = st[b]->generation;
+        if (!st[a]->generation) st[a]->generation = ++sim->pairs.generations;
+    }
 }
 
 gb_status gb_checkpoint_read(const char *dir, gb_sim *sim, uint64_t scene_hash, gb_checkpoint_meta *m,
@@ -458,34 +576,40 @@ gb_status gb_checkpoint_read(const char *dir, gb_sim *sim, uint64_t scene_hash, 
         c.st = gb_fail(err, GB_EINPUT, "%s: the scene %s (or a file it reads: grains, initial state, host mesh) "
                        "has changed since the run started; a run resumes only with the scene it started with",
                        dir, sim->scene->path);
-    gb_sim_state s;
-    memset(&s, 0, sizeof s);
     extras x;
     memset(&x, 0, sizeof x);
-    if (!c.st) read_state(&c, sim, &s, &x);
-    /* Everything read: now into the simulation (the pair list grown first, so that restoring
-     * needs no swap of its buffers). */
-    if (!c.st && s.n_pairs > sim->pairs.cap) {
-        gb_pair *p = realloc(sim->pairs.p, (size_t)s.n_pairs * sizeof *p);
-        if (!p) c.st = gb_fail(err, GB_ENOMEM, "out of memory for %d pairs", s.n_pairs);
-        else sim->pairs.p = p, sim->pairs.cap = s.n_pairs;
+    if (!c.st) read_body(&c, sim, &x);
+    /* Everything read: now into the simulation (the pair list grown first to hold every state's
+     * list, so that restoring any of them needs no memory). */
+    int need = x.now.n_pairs > x.start.n_pairs ? x.now.n_pairs : x.start.n_pairs;
+    if (x.sub.n_pairs > need) need = x.sub.n_pairs;
+    if (!c.st && need > sim->pairs.cap) {
+        gb_pair *p = realloc(sim->pairs.p, (size_t)need * sizeof *p);
+        if (!p) c.st = gb_fail(err, GB_ENOMEM, "out of memory for %d pairs", need);
+        else sim->pairs.p = p, sim->pairs.cap = need;
     }
     if (!c.st) {
-        s.generation = ++sim->pairs.generations; /* a list of its own, not one this process built */
-        gb_sim_state_restore(sim, &s);
-        if (sim->bp.n) memcpy(sim->pairs.px0, x.px0, 2 * (size_t)sim->bp.n * sizeof(double));
+        new_generations(sim, &x);
+        gb_sim_state_restore(sim, &x.now);
         sim->work_walls = x.work_walls, sim->work_body = x.work_body, sim->energy0 = x.energy0;
         sim->ref_width = x.ref[0], sim->ref_height = x.ref[1];
         sim->iterations_total = x.iterations_total;
         sim->lm_mu = x.lm_mu, sim->lm_next = x.lm_next;
         memcpy(sim->lm_history, x.lm_history, sizeof sim->lm_history);
         sim->pos = x.pos;
+        if (x.cur.active) {
+            gb_sim_state_free(&sim->saved), sim->saved = x.start, memset(&x.start, 0, sizeof x.start);
+            if (x.cur.cuts > 0) gb_sim_state_free(&sim->substep), sim->substep = x.sub, memset(&x.sub, 0, sizeof x.sub);
+            memcpy(sim->dX, x.dX, 3 * (size_t)sim->n * sizeof(double));
+            x.cur.work0 = gb_solver_work_minus(gb_sim_solver_work(sim), x.work);
+            sim->cur = x.cur;
+            sim->attempt = x.attempt, sim->lm_since = x.lm_since, sim->lm_best = x.lm_best;
+        }
         /* for the restored pair list (its count and rebuilds) */
-        if (sim->global)
-            c.st = gb_global_resume(sim->global, &sim->pairs, x.has_unloading ? x.unloading : NULL, err);
+        if (sim->global) c.st = gb_global_resume(sim->global, &sim->pairs, x.unloading, err);
     }
-    gb_sim_state_free(&s);
-    free(x.unloading), free(x.px0);
+    gb_sim_state_free(&x.now), gb_sim_state_free(&x.start), gb_sim_state_free(&x.sub);
+    free(x.unloading), free(x.dX);
     free(text);
     return c.st;
 }

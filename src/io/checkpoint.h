@@ -1,6 +1,7 @@
-/* Checkpoints of a run directory (docs/run-directory.md, "Checkpoints and resume"): everything a completed load
- * step leaves that the next one reads, exactly (hex floats), so that `gembem run --resume` goes on
- * as if the run had never stopped; and the lengths of the files the run appends to, so that what
+/* Checkpoints of a run directory (docs/run-directory.md, "Checkpoints and resume"): everything a
+ * completed load step leaves that the next one reads, or, within a load step, everything its next
+ * iteration and the rest of the step read, exactly (hex floats), so that `gembem run --resume` goes
+ * on as if the run had never stopped; and the lengths of the files the run appends to, so that what
  * an interrupted run wrote after its last checkpoint is cut off before the resumed run appends. */
 #ifndef GB_CHECKPOINT_H
 #define GB_CHECKPOINT_H
@@ -40,12 +41,13 @@ gb_status gb_checkpoint_file_mark(const char *dir, const char *name, gb_checkpoi
 gb_status gb_checkpoint_file_rewind(const char *dir, const gb_checkpoint_file *f, gb_error *err);
 
 /* dir/checkpoint.txt, replaced atomically (written, synced, renamed), for the simulation's current
- * state and place (sim->pos). */
+ * state and place (sim->pos, and sim->cur within a step). */
 gb_status gb_checkpoint_write(const char *dir, const gb_sim *sim, const gb_checkpoint_meta *m, gb_error *err);
 /* Its header alone: the scene, its hash and the files. GB_EINPUT if there is none or it is not one. */
 gb_status gb_checkpoint_read_meta(const char *dir, gb_checkpoint_meta *m, gb_error *err);
 /* The whole checkpoint into a simulation just created from the same scene (scene_hash: its hash,
- * refused if the checkpoint's differs); gb_sim_run then continues after the checkpoint's step.
+ * refused if the checkpoint's differs); gb_sim_run then continues after the checkpoint's step, or
+ * within the step in progress.
  * The simulation is unchanged if the checkpoint is refused (only running out of memory fails later). */
 gb_status gb_checkpoint_read(const char *dir, gb_sim *sim, uint64_t scene_hash, gb_checkpoint_meta *m,
                              gb_error *err);

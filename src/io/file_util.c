@@ -23,6 +23,16 @@ void gb_test_kill_point(FILE *torn)
     raise(SIGKILL);
 }
 
+int gb_test_checkpoint_due(void)
+{
+    static long every = -1, count = 0;
+    if (every < 0) {
+        const char *s = getenv("GB_TEST_CHECKPOINT_ITERATIONS");
+        every = s ? strtol(s, NULL, 10) : 0;
+    }
+    return every > 0 && ++count % every == 0;
+}
+
 gb_status gb_atomic_open(gb_atomic_file *a, const char *path, gb_error *err)
 {
     snprintf(a->path, sizeof a->path, "%s", path);

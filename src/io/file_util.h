@@ -23,5 +23,8 @@ void gb_atomic_abort(gb_atomic_file *a);
  * environment, the N-th call in the process writes a few bytes to `torn` (may be NULL), as a write
  * cut short would leave, and raises SIGKILL. Called before each appended row and each atomic rename. */
 void gb_test_kill_point(FILE *torn);
+/* For the same tests: with GB_TEST_CHECKPOINT_ITERATIONS=N in the environment, true at every N-th
+ * call in the process (a checkpoint within a load step every N iterations, whatever the clock). */
+int gb_test_checkpoint_due(void);
 
 #endif

@@ -335,9 +335,12 @@ gb_status gb_run_output_resume(const char *dir, gb_sim *sim, const char *command
     char at[64];
     strftime(at, sizeof at, "%Y-%m-%dT%H:%M:%SZ", gmtime(&now));
     const char *threads = getenv("OPENBLAS_NUM_THREADS");
+    char within[96] = "";
+    if (sim->cur.active)
+        snprintf(within, sizeof within, " within_step: true, iterations_done: %ld,", gb_sim_step_iterations(&sim->cur));
     snprintf(o->resumed + used, sizeof o->resumed - used,
-             "  - {at: %s, after_step: %d, previous_status: %s, openblas_threads: \"%s\", command: \"%s\"}\n", at,
-             sim->pos.step, !strcmp(status, "running") ? "interrupted" : status[0] ? status : "unknown",
+             "  - {at: %s, after_step: %d,%s previous_status: %s, openblas_threads: \"%s\", command: \"%s\"}\n",
+             at, sim->pos.step, within, !strcmp(status, "running") ? "interrupted" : status[0] ? status : "unknown",
              threads ? threads : "default", command);
     for (int q = 0; q <= sim->pos.step && !st; q++)
         if (snapshot_due(o->scene, q)) st = add_snapshot(o, q, err);
@@ -410,7 +413,8 @@ static gb_status write_rose_csv(const char *path, const gb_sim *sim, gb_error *e
 
 static gb_status write_snapshot(gb_run_output *o, const gb_sim *sim, int step, gb_error *err);
 
-/* checkpoint.txt for the step just written: the appended files' marks, then the state. */
+/* checkpoint.txt for the step just written, or within the step in progress: the appended files'
+ * marks (within a step only history.csv has grown since the last step's rows), then the state. */
 static gb_status checkpoint(gb_run_output *o, const gb_sim *sim, gb_error *err)
 {
     gb_status st = GB_OK;
@@ -420,6 +424,23 @@ static gb_status checkpoint(gb_run_output *o, const gb_sim *sim, gb_error *err)
     if (!st) st = gb_checkpoint_write(o->dir, sim, &o->ck, err);
     o->last_checkpoint = gb_clock_seconds();
     return st;
+}
+
+/* A checkpoint is due when output.checkpoint_minutes have passed since the last one (checkpoints on). */
+static int checkpoint_time(const gb_run_output *o)
+{
+    const gb_scene *sc = o->scene;
+    return sc->checkpoint_every > 0 && gb_clock_seconds() - o->last_checkpoint >= 60 * sc->checkpoint_minutes;
+}
+
+gb_status gb_run_output_within_step(void *user, const gb_sim *sim, gb_error *err)
+{
+    gb_run_output *o = user;
+    int test = o->scene->checkpoint_every > 0 && gb_test_checkpoint_due();
+    if (!test && !checkpoint_time(o)) return GB_OK;
+    /* its mark would count rows that are not there */
+    if (o->history_failed) return gb_fail(err, GB_EIO, "%s/history.csv: write failed", o->dir);
+    return checkpoint(o, sim, err);
 }
 
 gb_status gb_run_output_step(gb_run_output *o, const gb_sim *sim, const gb_step_report *r, gb_error *err)
@@ -462,8 +483,7 @@ gb_status gb_run_output_step(gb_run_output *o, const gb_sim *sim, const gb_step_
         if ((st = write_rose_csv(path, sim, err))) return st;
     }
     if (snapshot_due(sc, r->step) && (st = write_snapshot(o, sim, r->step, err))) return st;
-    int every = sc->checkpoint_every;
-    if (every > 0 && (r->step % every == 0 || gb_clock_seconds() - o->last_checkpoint >= 60 * sc->checkpoint_minutes))
+    if ((sc->checkpoint_every > 0 && r->step % sc->checkpoint_every == 0) || checkpoint_time(o))
         return checkpoint(o, sim, err);
     return GB_OK;
 }

@@ -16,93 +16,8 @@
 # --resume with -o. And a disk that fills (a file size limit, `ulimit -f`, SIGXFSZ ignored):
 # exit 4, and the run resumes from its last checkpoint to the uninterrupted result.
 set -u
-gembem=$(cd "$(dirname "$1")" && pwd)/$(basename "$1"); root=$(cd "$(dirname "$0")/../.." && pwd)
-out=$(mktemp -d); fail=0; passed=0
-ok() { passed=$((passed + 1)); echo "ok   $1"; }
-bad() { fail=$((fail + 1)); echo "FAIL $1"; }
-export OPENBLAS_NUM_THREADS=1
-
-seed=12345
-draw() { seed=$(( (seed * 1103515245 + 12345) % 2147483648 )); n=$(( seed / 65536 % $1 + 1 )); } # n in 1..$1
-
-# Equal run directories: every file (run_info.yaml aside), steps.csv without its seconds column.
-same_runs() { # A B LABEL
-  local a=$1 b=$2
-  if diff -r -x run_info.yaml -x steps.csv "$a" "$b" > "$out/diff" &&
-     cmp -s <(cut -d, -f1-11,13- "$a/steps.csv") <(cut -d, -f1-11,13- "$b/steps.csv"); then
-    ok "$3: the resumed run directory equals the uninterrupted one ($(find "$a" -type f | wc -l) files)"
-  else bad "$3: the run directories differ: $(head -c 600 "$out/diff")"; fi
-}
-
-# One scene: uninterrupted in $d/ref/run, interrupted and resumed in $d/kill/run.
-# run/ completed (a kill may land after run_info.yaml says so: nothing to resume then)
-done_() { grep -qs "^status: completed" run/run_info.yaml; }
-
-# gembem run ARGS, killed at its n-th write (GB_TEST_KILL_AT=$n; 0: never); its exit status.
-start() { (GB_TEST_KILL_AT=$n "$gembem" run "$@" --quiet; exit $?) 2>/dev/null; }
-
-# One scene: uninterrupted in $d/ref/run, killed `attempts` times at its n-th write (n drawn from
-# 1 to max_n) and resumed in $d/kill/run, killed after each delay and resumed in $d/timed_T/run.
-kill_case() { # NAME SCENE ATTEMPTS MAX_N [TIMED_DELAYS]
-  local name=$1 scene=$2 attempts=$3 maxn=$4 delays=${5:-} d=$out/$1 kills=0 resumes=0 starts=0 rc=1 n
-  mkdir -p "$d/ref" "$d/kill"
-  (cd "$d/ref" && "$gembem" run "$scene" -o run --quiet) || { bad "$name: the uninterrupted run failed"; return; }
-  cd "$d/kill"
-  for attempt in $(seq 1 "$attempts"); do  # killed at the n-th write
-    draw "$maxn"
-    if [ -f run/checkpoint.txt ]; then
-      start --resume run; rc=$?; resumes=$((resumes + 1))
-    else start "$scene" -o run --overwrite; rc=$?; starts=$((starts + 1)); fi
-    [ $rc -eq 137 ] && kills=$((kills + 1))
-    [ $rc -eq 0 ] && break
-    [ $rc -ne 137 ] && done_ && break
-    [ $rc -ne 137 ] && { bad "$name: attempt $attempt (kill at $n) exited $rc"; cd "$out"; return; }
-  done
-  n=0
-  while [ $rc -ne 0 ] && ! done_; do  # to the end
-    if [ -f run/checkpoint.txt ]; then start --resume run; rc=$?; resumes=$((resumes + 1))
-    else start "$scene" -o run --overwrite; rc=$?; starts=$((starts + 1)); fi
-    [ $rc -ne 0 ] && { bad "$name: the last resume exited $rc"; cd "$out"; return; }
-  done
-  cd "$out"
-  for t in $delays; do  # a kill at a time: wherever the run is (an iteration, a write)
-    mkdir -p "$d/timed_$t"; cd "$d/timed_$t"
-    (timeout -s KILL "$t" "$gembem" run "$scene" -o run --quiet; exit $?) 2>/dev/null; rc=$?
-    [ $rc -eq 137 ] && kills=$((kills + 1))
-    while [ $rc -ne 0 ] && ! done_; do
-      if [ -f run/checkpoint.txt ]; then "$gembem" run --resume run --quiet; rc=$?; resumes=$((resumes + 1))
-      else "$gembem" run "$scene" -o run --overwrite --quiet; rc=$?; starts=$((starts + 1)); fi
-      [ $rc -ne 0 ] && { bad "$name: resuming after a kill at ${t}s exited $rc"; break; }
-    done
-    cd "$out"
-    same_runs "$d/ref/run" "$d/timed_$t/run" "$name, killed after ${t}s"
-  done
-  cd "$out"
-  [ $kills -ge 3 ] && ok "$name: killed $kills times ($starts starts, $resumes resumes)" \
-    || bad "$name: only $kills kills ($starts starts, $resumes resumes): the test proves little"
-  same_runs "$d/ref/run" "$d/kill/run" "$name"
-  local info=$d/kill/run/run_info.yaml items
-  items=$(grep -c "^  - {at: .*previous_status: interrupted" "$info")
-  if grep -q "^status: completed" "$info" && [ "$items" -ge 1 ] && grep -q "^interrupted: $items " "$info"; then
-    ok "$name: run_info.yaml: completed, interrupted $items times, each resume listed"
-  else bad "$name: run_info.yaml: $(grep -E '^(status|interrupted):' "$info" | tr '\n' ' '), $items resumes listed"; fi
-}
-
-# The scenes, written next to the files they read.
-mkdir -p "$out/scenes"
-cp -r "$root/validation/biaxial122/test_state" "$out/scenes/"
-sed -e 's/steps: 20/steps: 7/' "$root/validation/biaxial122/test_shear.yaml" > "$out/scenes/ref.yaml"
+source "$(dirname "$0")/resume_lib.sh"
 printf 'output: {snapshot_every: 3, contacts_every: 2, checkpoint_every: 3}\n' >> "$out/scenes/ref.yaml"
-sed -e 's/solver: {/solver: {method: global, linear: cholmod, /' -e 's/steps: 20/steps: 7/' \
-  "$root/validation/biaxial122/test_shear.yaml" > "$out/scenes/global.yaml"
-# strain-controlled: the pair list is rebuilt within steps, and sliding contacts are held stuck across them
-sed -e 's/solver: {/solver: {method: global, linear: cholmod, /' \
-  -e 's/  - shear_mean_stress: .*/  - strain: {de1: 0.0006, de2: -0.0006, steps: 4}/' \
-  "$root/validation/biaxial122/test_shear.yaml" > "$out/scenes/global_strain.yaml"
-sed -e "s|\.\./\.\./meshes|$root/meshes|" "$root/tests/hybrid/load_grains.yaml" > "$out/scenes/hybrid.yaml"
-sed -e "s|\.\./\.\./meshes|$root/meshes|" -e 's/linear: umfpack/linear: cholmod/' \
-  -e 's/grain_boundary: {kn: 1000, kt: 0, friction_deg: 0}/grain_boundary: {kn: 1000, kt: 500, friction_deg: 20}/' \
-  "$root/tests/hybrid/load_grains_remote.yaml" > "$out/scenes/hybrid_remote.yaml"
 
 kill_case reference "$out/scenes/ref.yaml" 10 25 "0.3 0.6"
 kill_case global "$out/scenes/global.yaml" 8 20
@@ -166,7 +81,4 @@ if "$gembem" run --resume run --quiet; then
     || bad "disk full: run_info.yaml does not list the resume"
 else bad "disk full: the resume failed"; fi
 
-cd "$out/.."
-[ $fail -eq 0 ] && rm -rf "$out" || echo "outputs kept in $out"
-echo "$passed passed, $fail failed"
-[ $fail -eq 0 ]
+finish

@@ -1,0 +1,308 @@
+/* The loading program of a simulation: its stages' load steps, cut back when they do not converge,
+ * each step's work and report; a step in progress is held in sim->cur, so that a run resumed from
+ * a checkpoint within it (src/io/checkpoint.c) goes on from there. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "core/clock.h"
+#include "gem/sim.h"
+
+static void save_state(gb_sim *sim, gb_error *err, gb_status *st)
+{
+    *st = gb_sim_state_save(sim, &sim->saved, err);
+}
+
+/* External work of a converged step, as a quasi-static test measures it: the walls' mean force at
+ * the start and the end of the step times their inward displacement, and the body forces times
+ * the grains' displacement (the saved state is the start of the step; sim->wall_force and
+ * sim->saved.wall_force hold the converged forces). */
+static void add_step_work(gb_sim *sim)
+{
+    const gb_box *a = &sim->saved.box, *b = &sim->box;
+    double inward[GB_N_WALLS] = {b->left - a->left, a->right - b->right, b->bottom - a->bottom, a->top - b->top};
+    for (int w = 0; w < GB_N_WALLS; w++)
+        sim->work_walls += 0.5 * (sim->saved.wall_force[w] + sim->wall_force[w]) * inward[w];
+    for (int i = 0; i < sim->n; i++)
+        sim->work_body += sim->body[2 * i] * (sim->g[i].x - sim->saved.g[i].x) +
+                          sim->body[2 * i + 1] * (sim->g[i].y - sim->saved.g[i].y);
+}
+
+/* Back to a saved state, with its forces. */
+static void restore_state(gb_sim *sim, const gb_sim_state *state)
+{
+    gb_sim_state_restore(sim, state);
+    gb_gem_forces(sim);
+}
+
+/* Imposes a strain increment (compression positive) on the walls, symmetrically, grains held. */
+static gb_status impose_strain(gb_sim *sim, double de1, double de2, gb_error *err)
+{
+    gb_gem_forces(sim); /* the walls' forces before the move, for their work */
+    sim->half_pending = 0;
+    memset(sim->dX, 0, (size_t)sim->n * 3 * sizeof(double));
+    if (sim->bp.n) memset(sim->bp.dx, 0, 2 * (size_t)sim->bp.n * sizeof(double));
+    memset(sim->wall_dx, 0, sizeof sim->wall_dx);
+    double dy = 0.5 * de1 * sim->ref_height, dx = 0.5 * de2 * sim->ref_width;
+    sim->wall_dx[GB_WALL_BOTTOM][1] = dy;
+    sim->wall_dx[GB_WALL_TOP][1] = -dy;
+    sim->wall_dx[GB_WALL_LEFT][0] = dx;
+    sim->wall_dx[GB_WALL_RIGHT][0] = -dx;
+    if (sim->global && sim->scene->solver.newton == GB_NEWTON_LINE_SEARCH) {
+        /* The grains follow the box affinely, the prediction of a homogeneous strain: Newton
+         * starts with the increment spread over the packing instead of concentrated at the walls
+         * (FIRE-jammed 1e3 discs, 1 % oedometric in 20 steps: 7.7 iterations a step against 8.3,
+         * docs/solver/research.md). */
+        const gb_box *b = &sim->box;
+        double xc = 0.5 * (b->left + b->right), yc = 0.5 * (b->bottom + b->top);
+        double sx = 2 * dx / (b->right - b->left), sy = 2 * dy / (b->top - b->bottom);
+        for (int i = 0; i < sim->n; i++) {
+            sim->dX[3 * i] = -sx * (sim->g[i].x - xc);
+            sim->dX[3 * i + 1] = -sy * (sim->g[i].y - yc);
+        }
+        /* a move of the grains like an iteration's: the fixing forces' work, by the trapezoid rule */
+        sim->relaxation -= 0.5 * gb_gem_fixing_work(sim);
+        sim->half_pending = 1;
+    }
+    return gb_gem_apply_moves(sim, err);
+}
+
+static void fill_report(gb_sim *sim, gb_step_report *r)
+{
+    gb_gem_forces(sim);
+    double max2 = 0;
+    for (int i = 0; i < sim->n; i++) {
+        const double *F = &sim->F[3 * i];
+        double f2 = F[0] * F[0] + F[1] * F[1] + F[2] * F[2];
+        if (f2 > max2) max2 = f2;
+    }
+    r->max_fixing_force = sqrt(max2);
+    gb_gem_stress(sim, &r->s1, &r->s2);
+    gb_gem_strain(sim, &r->e1, &r->e2);
+    r->ev = r->e1 + r->e2;
+    double sum = r->s1 + r->s2;
+    r->stress_ratio = sum != 0 ? (r->s1 - r->s2) / sum : 0;
+    r->n_contacts = gb_sim_contacts(sim, NULL, 0);
+    r->width = sim->box.right - sim->box.left;
+    r->height = sim->box.top - sim->box.bottom;
+}
+
+static const char *stage_name(gb_stage_kind k)
+{
+    switch (k) {
+    case GB_STAGE_ISOTROPIC: return "isotropic";
+    case GB_STAGE_STRAIN: return "strain";
+    case GB_STAGE_SHEAR_MEAN: return "shear_mean_stress";
+    case GB_STAGE_RELAX: return "relax";
+    case GB_STAGE_HOST_DISPLACEMENT: return "host_displacement";
+    case GB_STAGE_HOST_LOAD: return "host_load";
+    default: return "biaxial_stress";
+    }
+}
+
+/* The loads of a sub-step of size h: the host's loads grow (grains and cavity held: f0 changes),
+ * or the walls move (strain control, and the shear increment of shear_mean_stress). */
+static gb_status apply_loads(gb_sim *sim, const gb_stage *sg, double h, gb_error *err)
+{
+    gb_status st = GB_OK;
+    sim->dissipation_step = 0;
+    for (int q = 0; q < sim->pairs.n; q++) sim->pairs.p[q].diss = 0;
+    switch (sg->kind) {
+    case GB_STAGE_HOST_DISPLACEMENT:
+    case GB_STAGE_HOST_LOAD:
+        for (int q = 0; q < sg->n_host_groups && !st; q++) {
+            double inc[2] = {h * sg->host_increment[q][0], h * sg->host_increment[q][1]};
+            st = gb_host_add_load(sim->host, sg->host_group[q], inc, err);
+        }
+        double remote[3] = {h * sg->host_remote_increment[0], h * sg->host_remote_increment[1],
+                            h * sg->host_remote_increment[2]};
+        if (!st && sim->host->mesh.unbounded) st = gb_host_add_remote(sim->host, remote, err);
+        return st;
+    case GB_STAGE_STRAIN: return impose_strain(sim, h * sg->de1, h * sg->de2, err);
+    case GB_STAGE_SHEAR_MEAN: return impose_strain(sim, 0.5 * h * sg->d_shear, -0.5 * h * sg->d_shear, err);
+    default: return GB_OK;
+    }
+}
+
+/* The sub-step in progress (sim->cur: from fraction t to t + h of the step's increment; the whole
+ * step: t = 0, h = 1): its loads, unless a checkpoint within it has them applied already, then
+ * relaxation to equilibrium; shear_mean_stress relaxes with the walls held, then restores the mean
+ * stress by an isotropic strain under stress control (K section 2.6). */
+static gb_status load_step(gb_sim *sim, const gb_stage *sg, double *max_force, double *residual, gb_error *err)
+{
+    gb_sim_step *c = &sim->cur;
+    long cap = sim->scene->solver.max_iterations;
+    gb_wall_control wc = {GB_WALLS_FIXED, 0, 0, 0};
+    gb_status st;
+    if (c->phase == GB_PHASE_LOAD) {
+        if ((st = apply_loads(sim, sg, c->h, err))) return st;
+        c->phase = GB_PHASE_RELAX;
+    }
+    double f = (c->stage_step - 1 + c->t + c->h) / sg->steps;
+    switch (sg->kind) {
+    case GB_STAGE_ISOTROPIC:
+        wc.mode = GB_WALLS_STRESS;
+        wc.s1 = c->start[0] + (sg->stress - c->start[0]) * f;
+        wc.s2 = c->start[1] + (sg->stress - c->start[1]) * f;
+        break;
+    case GB_STAGE_BIAXIAL_STRESS:
+        wc.mode = GB_WALLS_STRESS;
+        wc.s1 = c->start[0] + (sg->s1 - c->start[0]) * f;
+        wc.s2 = c->start[1] + (sg->s2 - c->start[1]) * f;
+        break;
+    case GB_STAGE_SHEAR_MEAN:
+        if (c->phase == GB_PHASE_RELAX) {
+            if ((st = gb_gem_relax(sim, &wc, cap, &c->phase_iters, max_force, residual, err))) return st;
+            c->phase = GB_PHASE_MEAN;
+        }
+        wc.mode = GB_WALLS_MEAN;
+        wc.mean = sg->mean_stress;
+        break;
+    default: break;
+    }
+    return gb_gem_relax(sim, &wc, cap - c->phase_iters, &c->phase_iters, max_force, residual, err);
+}
+
+/* The step in progress (sim->cur). A step that does not converge is cut back, as nonlinear finite
+ * element codes do: taken again from its start in two halves, a half that fails in two quarters,
+ * and so on down to 1/2^cutbacks of the step (solver.cutbacks). The granular path is
+ * path-dependent, so a smaller sub-step is a finer, not a different, loading; a stall of the global
+ * solver (a grain that must roll out of a squeeze, a slip that moves many grains) can be a load
+ * step too large for one Newton path. Leaves the iterations of all attempts, the sub-steps taken
+ * and the finest sub-step tried in sim->cur. */
+static gb_status cut_back_step(gb_sim *sim, const gb_stage *sg, double *max_force, double *residual, gb_error *err)
+{
+    gb_sim_step *c = &sim->cur;
+    gb_status st;
+    for (;;) {
+        /* the sub-step's start (one resumed within has it from its checkpoint) */
+        if (c->phase == GB_PHASE_LOAD && c->cuts > 0 && (st = gb_sim_state_save(sim, &sim->substep, err))) return st;
+        st = load_step(sim, sg, max_force, residual, err);
+        c->iters += c->phase_iters;
+        c->phase = GB_PHASE_LOAD, c->phase_iters = 0;
+        c->finest = c->h;
+        if (st == GB_ENOCONV && c->cuts > 0) {
+            restore_state(sim, &sim->substep);
+            c->cuts--;
+            c->h /= 2;
+            continue;
+        }
+        if (st) return st;
+        c->substeps++;
+        c->t += c->h; /* sums of powers of two: exact */
+        if (c->t >= 1) return GB_OK;
+        if (c->h > 1 - c->t) c->h = 1 - c->t;
+    }
+}
+
+void gb_sim_on_iteration(gb_sim *sim, gb_iteration_fn fn, void *user)
+{
+    sim->on_iteration = fn;
+    sim->on_iteration_user = user;
+}
+
+void gb_sim_on_within_step(gb_sim *sim, gb_within_step_fn fn, void *user)
+{
+    sim->on_within_step = fn;
+    sim->on_within_step_user = user;
+}
+
+gb_solver_work gb_sim_solver_work(const gb_sim *sim)
+{
+    gb_solver_work w = sim->work;
+    if (sim->global) w.factorisations = gb_global_statistics(sim->global)->factorisations;
+    return w;
+}
+
+/* The error of a failed step, naming it. */
+static gb_status step_failed(const gb_sim *sim, const gb_stage *sg, gb_status st, double max_force, double residual,
+                             gb_error *err)
+{
+    const gb_sim_step *c = &sim->cur;
+    const gb_solver_settings *sv = &sim->scene->solver;
+    if (st == GB_ENOCONV) {
+        char cut[96] = "";
+        if (c->finest < 1) snprintf(cut, sizeof cut, ", nor in sub-steps down to 1/%.0f of the step", 1 / c->finest);
+        return gb_fail(err, GB_ENOCONV,
+                       "step %d (stage %d '%s', step %d of %d) did not converge in %ld iterations: largest fixing "
+                       "force %.6g, walls off their target by %.6g (accuracy a = %g)%s; the outputs hold the %d "
+                       "completed steps",
+                       c->step, c->stage + 1, stage_name(sg->kind), c->stage_step, sg->steps, sv->max_iterations,
+                       max_force, residual, sv->accuracy, cut, c->step - 1);
+    }
+    char msg[GB_ERROR_MSG_MAX];
+    snprintf(msg, sizeof msg, "%s", err->msg);
+    return gb_fail(err, st, "step %d (stage %d '%s', step %d of %d): %s", c->step, c->stage + 1, stage_name(sg->kind),
+                   c->stage_step, sg->steps, msg);
+}
+
+gb_status gb_sim_run(gb_sim *sim, gb_step_fn on_step, void *user, gb_error *err)
+{
+    const gb_scene *sc = sim->scene;
+    gb_status st = GB_OK;
+    gb_step_report rep;
+    memset(&rep, 0, sizeof rep);
+    rep.stage = -1;
+    rep.total_steps = gb_scene_total_steps(sc);
+    fill_report(sim, &rep);
+    /* A resumed run (src/io/checkpoint.c) continues after the checkpoint's step, or within the step
+     * in progress (sim->cur, whose start is in sim->saved): its outputs, energy0 and the stage's
+     * start are those of the run it continues. */
+    gb_sim_position from = sim->pos;
+    int within = from.resume && sim->cur.active;
+    if (!from.resume) {
+        memset(&sim->pos, 0, sizeof sim->pos);
+        sim->energy0 = gb_sim_elastic_energy(sim);
+    }
+    if (!within) save_state(sim, err, &st);
+    if (!st && on_step && !from.resume) st = on_step(user, sim, &rep, err);
+    int step = sim->pos.step;
+    for (int s = within ? sim->cur.stage : from.resume ? from.stage : 0; s < sc->n_stages && !st; s++) {
+        const gb_stage *sg = &sc->stages[s];
+        int first = within ? sim->cur.stage_step : from.resume && s == from.stage ? from.stage_step + 1 : 1;
+        double start[2] = {from.start[0], from.start[1]};
+        if (within) memcpy(start, sim->cur.start, sizeof start);
+        else if (first == 1) {
+            if (sg->reset_strain) {
+                sim->ref_width = sim->box.right - sim->box.left;
+                sim->ref_height = sim->box.top - sim->box.bottom;
+            }
+            gb_gem_forces(sim);
+            gb_gem_stress(sim, &start[0], &start[1]);
+        }
+        for (int k = first; k <= sg->steps && !st; k++) {
+            double t0 = gb_clock_seconds(), max_force = 0, residual = 0;
+            step++;
+            if (!within) {
+                gb_sim_step c = {.active = 1, .stage = s, .stage_step = k, .step = step, .start = {start[0], start[1]},
+                                 .h = 1, .cuts = sg->kind == GB_STAGE_RELAX ? 0 : sc->solver.cutbacks, .finest = 1,
+                                 .phase = GB_PHASE_LOAD, .work0 = gb_sim_solver_work(sim)};
+                sim->cur = c;
+                sim->attempt = 0;
+            }
+            within = 0;
+            st = cut_back_step(sim, sg, &max_force, &residual, err);
+            sim->cur.active = 0;
+            sim->iterations_total += sim->cur.iters;
+            if (st) {
+                st = step_failed(sim, sg, st, max_force, residual, err);
+                restore_state(sim, &sim->saved);
+                break;
+            }
+            rep.stage = s;
+            rep.step = step;
+            rep.iterations = sim->cur.iters;
+            rep.substeps = sim->cur.substeps;
+            rep.work = gb_solver_work_minus(gb_sim_solver_work(sim), sim->cur.work0);
+            fill_report(sim, &rep);
+            add_step_work(sim);
+            rep.seconds = gb_clock_seconds() - t0;
+            gb_sim_position at = {s, k, step, {start[0], start[1]}, 0};
+            sim->pos = at;
+            /* The output sees the step's start in the saved state; then it becomes the start of the next. */
+            if (on_step) st = on_step(user, sim, &rep, err);
+            if (!st) save_state(sim, err, &st);
+        }
+    }
+    return st;
+}
