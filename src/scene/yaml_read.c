@@ -288,6 +288,22 @@ gb_status gb_ymap_vector(gb_ymap *m, const char *key, int flags, int n, double *
     return GB_OK;
 }
 
+gb_status gb_ymap_numbers(gb_ymap *m, const char *key, int flags, int max, double *out, int *n, gb_error *err)
+{
+    struct fy_node *v;
+    gb_status st = gb_ymap_find(m, key, flags, &v, err);
+    if (st || !v) return st;
+    char path[256];
+    key_path(m, key, path, sizeof path);
+    if (fy_node_get_type(v) != FYNT_SEQUENCE || fy_node_sequence_item_count(v) < 1 ||
+        fy_node_sequence_item_count(v) > max)
+        return gb_yaml_fail(m->doc, v, err, "%s: expected a list of 1 to %d numbers", path, max);
+    *n = fy_node_sequence_item_count(v);
+    for (int i = 0; i < *n; i++)
+        if ((st = gb_yaml_number(m->doc, fy_node_sequence_get_by_index(v, i), path, &out[i], err))) return st;
+    return GB_OK;
+}
+
 gb_status gb_ymap_close(gb_ymap *m, gb_error *err)
 {
     if (!m->node) return GB_OK;
