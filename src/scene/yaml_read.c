@@ -183,7 +183,9 @@ static void key_path(const gb_ymap *m, const char *key, char *out, size_t n)
 
 gb_status gb_ymap_find(gb_ymap *m, const char *key, int flags, struct fy_node **out, gb_error *err)
 {
-    if (m->n_asked < GB_YMAP_MAX_KEYS) m->asked[m->n_asked++] = key;
+    int seen = 0; /* a key looked up twice is listed once among the expected ones */
+    for (int i = 0; i < m->n_asked && !seen; i++) seen = !strcmp(m->asked[i], key);
+    if (!seen && m->n_asked < GB_YMAP_MAX_KEYS) m->asked[m->n_asked++] = key;
     *out = m->node ? fy_node_mapping_lookup_by_string(m->node, key, FY_NT) : NULL;
     if (*out && fy_node_get_type(*out) == FYNT_SCALAR && fy_node_is_null(*out) &&
         fy_node_get_style(*out) == FYNS_PLAIN) {
