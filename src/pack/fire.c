@@ -17,7 +17,8 @@ static double forces(const gb_fire_world *w, gb_pair_list *L, const gb_world *wo
         double a = PI * w->g[i].r * w->g[i].r;
         f[2 * i] = w->body[0] * a, f[2 * i + 1] = w->body[1] * a;
     }
-    rep->virial = 0, rep->contacts = 0, rep->largest_overlap = 0;
+    rep->virial = 0, rep->contacts = rep->wall_contacts = 0, rep->largest_overlap = 0;
+    memset(rep->wall, 0, sizeof rep->wall);
     for (int k = 0; k < L->n; k++) {
         gb_pair *p = &L->p[k];
         gb_pair_geometry(p, world);
@@ -31,6 +32,7 @@ static double forces(const gb_fire_world *w, gb_pair_list *L, const gb_world *wo
             rep->largest_overlap = fmax(rep->largest_overlap, p->d / fmin(w->g[i].r, w->g[j].r));
         } else {
             rep->virial += pn * (w->g[i].r - 0.5 * p->d);
+            if (!GB_IS_PARTICLE(j)) rep->wall[-1 - j] += pn, rep->wall_contacts++;
         }
         rep->contacts++;
     }

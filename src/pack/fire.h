@@ -23,6 +23,8 @@ typedef struct {
     double max_force;  /* largest |F| of a disc at the end */
     double virial;     /* sum over contacts of pn times the centre's distance to the contact point(s): 2 A p */
     int contacts;      /* force-carrying */
+    int wall_contacts; /* of them, with the box's walls */
+    double wall[GB_N_WALLS]; /* the walls' normal forces */
     double largest_overlap; /* between discs, over the smaller radius */
 } gb_fire_report;
 
