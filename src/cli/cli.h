@@ -8,6 +8,7 @@
 
 int gb_cli_run(int argc, char **argv); /* gembem run: a granular scene */
 int gb_cli_bem(int argc, char **argv); /* gembem bem: a pure elastostatic scene */
+int gb_cli_pack(int argc, char **argv); /* gembem pack: a packing in a box or a cavity */
 
 /* Prints the error to stderr as "gembem: message" and returns the exit status for its code. */
 int gb_cli_report(const gb_error *err);

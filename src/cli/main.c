@@ -9,6 +9,7 @@ static void usage(FILE *to)
                 "commands:\n"
                 "  run SCENE.yaml -o RUNDIR   run a granular scene (reference GEM iteration)\n"
                 "  bem SCENE.yaml -o OUTDIR   solve a pure elastostatic scene (boundary elements)\n"
+                "  pack SCENE.yaml -o RUNDIR  fill a box or a host's cavity with grains in equilibrium\n"
                 "  version                    print the version\n"
                 "Run 'gembem <command> --help' for the options of a command.\n");
 }
@@ -34,6 +35,7 @@ int main(int argc, char **argv)
     const char *cmd = argv[1];
     if (!strcmp(cmd, "run")) return gb_cli_run(argc - 1, argv + 1);
     if (!strcmp(cmd, "bem")) return gb_cli_bem(argc - 1, argv + 1);
+    if (!strcmp(cmd, "pack")) return gb_cli_pack(argc - 1, argv + 1);
     if (!strcmp(cmd, "version") || !strcmp(cmd, "--version")) {
         printf("gembem %s\n", gb_version());
         return 0;

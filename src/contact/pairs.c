@@ -18,6 +18,32 @@ void gb_pairs_free(gb_pair_list *L)
     memset(L, 0, sizeof *L);
 }
 
+gb_status gb_particles_create(gb_particles *bp, const gb_bem_mesh *mesh, const int *elem, int m, gb_error *err)
+{
+    memset(bp, 0, sizeof *bp);
+    bp->n = m;
+    size_t k = (size_t)(m > 0 ? m : 1);
+    bp->x = malloc(k * sizeof(double)), bp->y = malloc(k * sizeof(double)), bp->r = malloc(k * sizeof(double));
+    bp->nx = malloc(k * sizeof(double)), bp->ny = malloc(k * sizeof(double)), bp->dx = calloc(2 * k, sizeof(double));
+    if (!bp->x || !bp->y || !bp->r || !bp->nx || !bp->ny || !bp->dx) {
+        gb_particles_free(bp);
+        return gb_fail(err, GB_ENOMEM, "out of memory for %d boundary particles", m);
+    }
+    for (int q = 0; q < m; q++) {
+        int e = elem[q];
+        bp->x[q] = mesh->mid[2 * e], bp->y[q] = mesh->mid[2 * e + 1];
+        bp->r[q] = 0.5 * mesh->length[e];
+        bp->nx[q] = mesh->normal[2 * e], bp->ny[q] = mesh->normal[2 * e + 1];
+    }
+    return GB_OK;
+}
+
+void gb_particles_free(gb_particles *bp)
+{
+    free(bp->x), free(bp->y), free(bp->r), free(bp->nx), free(bp->ny), free(bp->dx);
+    memset(bp, 0, sizeof *bp);
+}
+
 void gb_pair_geometry(gb_pair *p, const gb_world *w)
 {
     const gb_grain *a = &w->g[p->i];

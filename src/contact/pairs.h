@@ -20,6 +20,11 @@ typedef struct {
     double *dx;       /* its move in the current iteration, 2 per particle */
 } gb_particles;
 
+/* The particles of the elements elem[0..m) of mesh, at rest: on each element's midpoint, of radius
+ * half its length, bulging along its normal. */
+gb_status gb_particles_create(gb_particles *bp, const gb_bem_mesh *mesh, const int *elem, int m, gb_error *err);
+void gb_particles_free(gb_particles *bp);
+
 /* What grains touch: each other, the four walls of a box (if any) and boundary particles (if any). */
 typedef struct {
     const gb_grain *g;

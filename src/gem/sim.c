@@ -30,7 +30,7 @@ void gb_sim_free(gb_sim *sim)
     gb_pairs_free(&sim->pairs);
     gb_global_free(sim->global);
     gb_host_free(sim->host);
-    free(sim->bp.x), free(sim->bp.y), free(sim->bp.r), free(sim->bp.nx), free(sim->bp.ny), free(sim->bp.dx);
+    gb_particles_free(&sim->bp);
     free(sim->bp_F), free(sim->bp_S);
     free(sim);
 }
@@ -60,21 +60,10 @@ static gb_status add_host(gb_sim *sim, gb_error *err)
     const gb_host *h = sim->host;
     int m = h->m / 2;
     gb_particles *bp = &sim->bp;
-    bp->n = m;
-    bp->x = malloc((size_t)m * sizeof(double)), bp->y = malloc((size_t)m * sizeof(double));
-    bp->r = malloc((size_t)m * sizeof(double));
-    bp->nx = malloc((size_t)m * sizeof(double)), bp->ny = malloc((size_t)m * sizeof(double));
-    bp->dx = calloc(2 * (size_t)m, sizeof(double));
+    if ((st = gb_particles_create(bp, &h->mesh, h->K.elem, m, err))) return st;
     sim->bp_F = calloc(2 * (size_t)m, sizeof(double));
     sim->bp_S = calloc(3 * (size_t)m, sizeof(double));
-    if (!bp->x || !bp->y || !bp->r || !bp->nx || !bp->ny || !bp->dx || !sim->bp_F || !sim->bp_S)
-        return gb_fail(err, GB_ENOMEM, "out of memory for %d boundary particles", m);
-    for (int k = 0; k < m; k++) {
-        int e = h->K.elem[k];
-        bp->x[k] = h->mesh.mid[2 * e], bp->y[k] = h->mesh.mid[2 * e + 1];
-        bp->r[k] = 0.5 * h->mesh.length[e];
-        bp->nx[k] = h->mesh.normal[2 * e], bp->ny[k] = h->mesh.normal[2 * e + 1];
-    }
+    if (!sim->bp_F || !sim->bp_S) return gb_fail(err, GB_ENOMEM, "out of memory for %d boundary particles", m);
     /* A restart: the host where the earlier run left it. Created as that run's host was (f0's base
      * and unit responses for the scene's values), then its values, cavity displacements and
      * particles set, so that f0 and the force are the ones the run had. */

@@ -1,6 +1,9 @@
 #define _POSIX_C_SOURCE 200809L
 #include "io/file_util.h"
 
+#include <dirent.h>
+#include <sys/stat.h>
+
 #include <errno.h>
 #include <fcntl.h>
 #include <signal.h>
@@ -81,5 +84,59 @@ gb_status gb_atomic_commit_durable(gb_atomic_file *a, gb_error *err)
         fsync(fd);
         close(fd);
     }
+    return GB_OK;
+}
+
+static int dir_is_empty(const char *path)
+{
+    DIR *d = opendir(path);
+    if (!d) return 0;
+    struct dirent *e;
+    int empty = 1;
+    while (empty && (e = readdir(d)))
+        if (strcmp(e->d_name, ".") && strcmp(e->d_name, "..")) empty = 0;
+    closedir(d);
+    return empty;
+}
+
+/* mkdir -p */
+gb_status gb_make_dirs(const char *path, gb_error *err)
+{
+    char buf[1024];
+    snprintf(buf, sizeof buf, "%s", path);
+    for (char *p = buf + 1; *p; p++) {
+        if (*p != '/') continue;
+        *p = '\0';
+        if (mkdir(buf, 0777) != 0 && errno != EEXIST) return gb_fail(err, GB_EIO, "%s: %s", buf, strerror(errno));
+        *p = '/';
+    }
+    if (mkdir(buf, 0777) != 0 && errno != EEXIST) return gb_fail(err, GB_EIO, "%s: %s", buf, strerror(errno));
+    return GB_OK;
+}
+
+gb_status gb_copy_file(const char *from, const char *to, gb_error *err)
+{
+    FILE *in = fopen(from, "rb");
+    if (!in) return gb_fail(err, GB_EIO, "%s: %s", from, strerror(errno));
+    gb_atomic_file a;
+    gb_status st = gb_atomic_open(&a, to, err);
+    if (st) {
+        fclose(in);
+        return st;
+    }
+    char buf[65536];
+    size_t k;
+    while ((k = fread(buf, 1, sizeof buf, in)) > 0) fwrite(buf, 1, k, a.f);
+    fclose(in);
+    return gb_atomic_commit(&a, err);
+}
+
+gb_status gb_output_dir_check(const char *dir, int overwrite, const char *what, gb_error *err)
+{
+    struct stat sb;
+    if (stat(dir, &sb) != 0) return GB_OK;
+    if (!S_ISDIR(sb.st_mode)) return gb_fail(err, GB_EINPUT, "%s exists and is not a directory", dir);
+    if (!overwrite && !dir_is_empty(dir))
+        return gb_fail(err, GB_EINPUT, "%s %s exists and is not empty; choose another or pass --overwrite", what, dir);
     return GB_OK;
 }

@@ -19,6 +19,14 @@ gb_status gb_atomic_commit(gb_atomic_file *a, gb_error *err);
 gb_status gb_atomic_commit_durable(gb_atomic_file *a, gb_error *err);
 void gb_atomic_abort(gb_atomic_file *a);
 
+/* mkdir -p */
+gb_status gb_make_dirs(const char *path, gb_error *err);
+/* Copies a file (atomically). */
+gb_status gb_copy_file(const char *from, const char *to, gb_error *err);
+/* An output directory may be made: absent, or an empty directory, or (overwrite) any directory;
+ * else GB_EINPUT, the message naming it as `what` ("run directory"). */
+gb_status gb_output_dir_check(const char *dir, int overwrite, const char *what, gb_error *err);
+
 /* For tests of interrupted runs (tests/cli/run_resume.sh): with GB_TEST_KILL_AT=N in the
  * environment, the N-th call in the process writes a few bytes to `torn` (may be NULL), as a write
  * cut short would leave, and raises SIGKILL. Called before each appended row and each atomic rename. */

@@ -52,50 +52,6 @@ static void list_appended(gb_run_output *o)
     if (o->scene->solver.history) o->appended[o->n_appended++] = "history.csv";
 }
 
-static int dir_is_empty(const char *path)
-{
-    DIR *d = opendir(path);
-    if (!d) return 0;
-    struct dirent *e;
-    int empty = 1;
-    while (empty && (e = readdir(d)))
-        if (strcmp(e->d_name, ".") && strcmp(e->d_name, "..")) empty = 0;
-    closedir(d);
-    return empty;
-}
-
-/* mkdir -p */
-static gb_status make_dirs(const char *path, gb_error *err)
-{
-    char buf[1024];
-    snprintf(buf, sizeof buf, "%s", path);
-    for (char *p = buf + 1; *p; p++) {
-        if (*p != '/') continue;
-        *p = '\0';
-        if (mkdir(buf, 0777) != 0 && errno != EEXIST) return gb_fail(err, GB_EIO, "%s: %s", buf, strerror(errno));
-        *p = '/';
-    }
-    if (mkdir(buf, 0777) != 0 && errno != EEXIST) return gb_fail(err, GB_EIO, "%s: %s", buf, strerror(errno));
-    return GB_OK;
-}
-
-static gb_status copy_file(const char *from, const char *to, gb_error *err)
-{
-    FILE *in = fopen(from, "rb");
-    if (!in) return gb_fail(err, GB_EIO, "%s: %s", from, strerror(errno));
-    gb_atomic_file a;
-    gb_status st = gb_atomic_open(&a, to, err);
-    if (st) {
-        fclose(in);
-        return st;
-    }
-    char buf[65536];
-    size_t k;
-    while ((k = fread(buf, 1, sizeof buf, in)) > 0) fwrite(buf, 1, k, a.f);
-    fclose(in);
-    return gb_atomic_commit(&a, err);
-}
-
 static gb_status write_info(const gb_run_output *o, const char *status, const char *message, gb_error *err)
 {
     char path[1024];
@@ -126,19 +82,14 @@ gb_status gb_run_output_open(const char *dir, const gb_sim *sim, int overwrite, 
 {
     *out = NULL;
     const gb_scene *scene = gb_sim_scene(sim);
-    struct stat sb;
-    if (stat(dir, &sb) == 0) {
-        if (!S_ISDIR(sb.st_mode)) return gb_fail(err, GB_EINPUT, "%s exists and is not a directory", dir);
-        if (!overwrite && !dir_is_empty(dir))
-            return gb_fail(err, GB_EINPUT, "run directory %s exists and is not empty; choose another or pass "
-                                           "--overwrite", dir);
-    }
+    gb_status st1 = gb_output_dir_check(dir, overwrite, "run directory", err);
+    if (st1) return st1;
     gb_checkpoint_meta ck;
     memset(&ck, 0, sizeof ck);
     if (!realpath(scene->path, ck.scene_path)) return gb_fail(err, GB_EINPUT, "%s: %s", scene->path, strerror(errno));
     gb_status st0 = gb_checkpoint_scene_hash(sim, &ck.scene_hash, err);
     if (st0) return st0;
-    gb_status st = make_dirs(dir, err);
+    gb_status st = gb_make_dirs(dir, err);
     if (st) return st;
     gb_run_output *o = calloc(1, sizeof *o);
     if (!o) return gb_fail(err, GB_ENOMEM, "out of memory");
@@ -157,7 +108,7 @@ gb_status gb_run_output_open(const char *dir, const gb_sim *sim, int overwrite, 
         return gb_fail(err, GB_EIO, "%s: %s", path, strerror(errno));
     }
     snprintf(path, sizeof path, "%s/scene.yaml", dir);
-    if ((st = copy_file(scene->path, path, err)) || (st = write_info(o, "running", NULL, err))) {
+    if ((st = gb_copy_file(scene->path, path, err)) || (st = write_info(o, "running", NULL, err))) {
         free(o);
         return st;
     }
@@ -474,7 +425,7 @@ gb_status gb_run_output_step(gb_run_output *o, const gb_sim *sim, const gb_step_
     if ((st = gb_measure_write_step(o->dir, sim, r->step, fields, err))) return st;
     if ((sc->contacts_every > 0 && r->step % sc->contacts_every == 0) || snapshot_due(sc, r->step)) {
         snprintf(path, sizeof path, "%s/contacts", o->dir);
-        if ((st = make_dirs(path, err))) return st;
+        if ((st = gb_make_dirs(path, err))) return st;
         snprintf(path, sizeof path, "%s/contacts/contacts_%06d.csv", o->dir, r->step);
         if ((st = gb_contacts_csv_write(path, sim, err))) return st;
         snprintf(path, sizeof path, "%s/contacts/grains_%06d.csv", o->dir, r->step);
@@ -493,7 +444,7 @@ static gb_status write_snapshot(gb_run_output *o, const gb_sim *sim, int step, g
     char path[1024];
     gb_status st;
     snprintf(path, sizeof path, "%s/snapshots", o->dir);
-    if ((st = make_dirs(path, err))) return st;
+    if ((st = gb_make_dirs(path, err))) return st;
     snprintf(path, sizeof path, "%s/snapshots/grains_%06d.vtp", o->dir, step);
     if ((st = gb_vtk_write_grains(path, sim, err))) return st;
     snprintf(path, sizeof path, "%s/snapshots/contacts_%06d.vtp", o->dir, step);

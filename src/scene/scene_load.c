@@ -7,6 +7,7 @@
 #include "scene/admit.h"
 #include "scene/grains_file.h"
 #include "scene/host_read.h"
+#include "scene/scene_pack.h"
 #include "scene/state_read.h"
 #include "scene/yaml_read.h"
 
@@ -357,8 +358,24 @@ static gb_status read_initial_state(gb_ymap *top, gb_scene *s, gb_error *err)
     return st;
 }
 
-/* mesh: the host's, as the scene's check meshed it (the caller frees it) */
-static gb_status load(const gb_yaml_doc *doc, gb_scene *s, gb_bem_mesh *mesh, gb_error *err)
+/* A pack scene's region: a box or a host, one of them (no grains yet, nothing to admit). */
+static gb_status read_region(gb_ymap *top, gb_scene *s, gb_bem_mesh *mesh, gb_error *err)
+{
+    struct fy_node *host, *box;
+    gb_status st;
+    if ((st = gb_ymap_find(top, "host", 0, &host, err)) || (st = gb_ymap_find(top, "box", 0, &box, err))) return st;
+    if (host && box)
+        return gb_yaml_fail(top->doc, host, err, "host: a scene has either a box of walls or a host, not both");
+    if (!host && !box)
+        return gb_yaml_fail(top->doc, top->node, err, "expected the region to fill: box: {left, right, bottom, top} "
+                                                      "or host: (a cavity)");
+    return host ? gb_host_section_read(top, &s->host, mesh, err) : gb_box_read(top, &s->box, err);
+}
+
+/* mesh: the host's, as the scene's check meshed it (the caller frees it). read_pack: a pack scene
+ * (src/scene/scene_pack.h), else a run scene. */
+static gb_status load(const gb_yaml_doc *doc, gb_scene *s, gb_bem_mesh *mesh, gb_scene_section_fn read_pack,
+                      void *user, gb_error *err)
 {
     gb_ymap top, units;
     gb_status st;
@@ -386,11 +403,15 @@ static gb_status load(const gb_yaml_doc *doc, gb_scene *s, gb_bem_mesh *mesh, gb
     if (gbn && (st = read_material(&mats, "grain_boundary", &s->grain_boundary, err))) return st;
     if ((st = gb_ymap_close(&mats, err))) return st;
 
-    struct fy_node *state, *grains;
-    if ((st = gb_ymap_find(&top, "initial_state", 0, &state, err)) ||
+    struct fy_node *state = NULL, *grains = NULL;
+    if (read_pack) {
+        if ((st = read_region(&top, s, mesh, err))) return st;
+    } else if ((st = gb_ymap_find(&top, "initial_state", 0, &state, err)) ||
         (st = gb_ymap_find(&top, "grains", 0, &grains, err)))
         return st;
-    if (state) {
+    if (read_pack) {
+        /* the region is read */
+    } else if (state) {
         struct fy_node *box, *host;
         gb_ymap_find(&top, "box", 0, &box, err);
         if ((st = gb_ymap_find(&top, "host", 0, &host, err))) return st;
@@ -425,8 +446,9 @@ static gb_status load(const gb_yaml_doc *doc, gb_scene *s, gb_bem_mesh *mesh, gb
             return st;
         }
     }
-    if ((st = read_body_force(&top, s, err)) || (st = read_solver(&top, &s->solver, err)) ||
-        (st = read_loading(&top, s, err)) || (st = read_output(&top, s, err)))
+    if ((st = read_body_force(&top, s, err)) || (st = read_solver(&top, &s->solver, err))) return st;
+    if (read_pack ? (st = read_pack(&top, s, s->host.present ? mesh : NULL, user, err))
+                  : ((st = read_loading(&top, s, err)) || (st = read_output(&top, s, err))))
         return st;
     if (s->host.present) {
         struct fy_node *sv;
@@ -441,7 +463,7 @@ static gb_status load(const gb_yaml_doc *doc, gb_scene *s, gb_bem_mesh *mesh, gb
                                                   "'host_displacement' or 'host_load'", k);
     }
     if ((st = gb_ymap_close(&top, err))) return st;
-    return gb_scene_admit(s, s->host.present ? mesh : NULL, err);
+    return read_pack ? GB_OK : gb_scene_admit(s, s->host.present ? mesh : NULL, err);
 }
 
 gb_status gb_scene_load(const char *path, gb_scene *out, gb_error *err)
@@ -453,9 +475,28 @@ gb_status gb_scene_load(const char *path, gb_scene *out, gb_error *err)
     if (st) return st;
     gb_bem_mesh mesh;
     memset(&mesh, 0, sizeof mesh);
-    st = load(&doc, out, &mesh, err);
+    st = load(&doc, out, &mesh, NULL, NULL, err);
     gb_bem_mesh_free(&mesh);
     gb_yaml_free(&doc);
     if (st) gb_scene_free(out);
+    return st;
+}
+
+gb_status gb_scene_load_pack(const char *path, gb_scene *out, gb_bem_mesh *mesh, gb_scene_section_fn read_pack,
+                             void *user, gb_error *err)
+{
+    memset(out, 0, sizeof *out);
+    memset(mesh, 0, sizeof *mesh);
+    snprintf(out->path, sizeof out->path, "%s", path);
+    out->max_overlap = GB_MAX_OVERLAP_DEFAULT;
+    gb_yaml_doc doc;
+    gb_status st = gb_yaml_load(path, &doc, err);
+    if (st) return st;
+    st = load(&doc, out, mesh, read_pack, user, err);
+    gb_yaml_free(&doc);
+    if (st) {
+        gb_bem_mesh_free(mesh);
+        gb_scene_free(out);
+    }
     return st;
 }

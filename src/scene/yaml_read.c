@@ -183,7 +183,9 @@ static void key_path(const gb_ymap *m, const char *key, char *out, size_t n)
 
 gb_status gb_ymap_find(gb_ymap *m, const char *key, int flags, struct fy_node **out, gb_error *err)
 {
-    if (m->n_asked < GB_YMAP_MAX_KEYS) m->asked[m->n_asked++] = key;
+    int seen = 0; /* a key looked up twice is listed once among the expected ones */
+    for (int i = 0; i < m->n_asked && !seen; i++) seen = !strcmp(m->asked[i], key);
+    if (!seen && m->n_asked < GB_YMAP_MAX_KEYS) m->asked[m->n_asked++] = key;
     *out = m->node ? fy_node_mapping_lookup_by_string(m->node, key, FY_NT) : NULL;
     if (*out && fy_node_get_type(*out) == FYNT_SCALAR && fy_node_is_null(*out) &&
         fy_node_get_style(*out) == FYNS_PLAIN) {
@@ -284,6 +286,22 @@ gb_status gb_ymap_vector(gb_ymap *m, const char *key, int flags, int n, double *
     if (fy_node_get_type(v) != FYNT_SEQUENCE || fy_node_sequence_item_count(v) != n)
         return gb_yaml_fail(m->doc, v, err, "%s: expected a list of %d numbers", path, n);
     for (int i = 0; i < n; i++)
+        if ((st = gb_yaml_number(m->doc, fy_node_sequence_get_by_index(v, i), path, &out[i], err))) return st;
+    return GB_OK;
+}
+
+gb_status gb_ymap_numbers(gb_ymap *m, const char *key, int flags, int max, double *out, int *n, gb_error *err)
+{
+    struct fy_node *v;
+    gb_status st = gb_ymap_find(m, key, flags, &v, err);
+    if (st || !v) return st;
+    char path[256];
+    key_path(m, key, path, sizeof path);
+    if (fy_node_get_type(v) != FYNT_SEQUENCE || fy_node_sequence_item_count(v) < 1 ||
+        fy_node_sequence_item_count(v) > max)
+        return gb_yaml_fail(m->doc, v, err, "%s: expected a list of 1 to %d numbers", path, max);
+    *n = fy_node_sequence_item_count(v);
+    for (int i = 0; i < *n; i++)
         if ((st = gb_yaml_number(m->doc, fy_node_sequence_get_by_index(v, i), path, &out[i], err))) return st;
     return GB_OK;
 }

@@ -66,6 +66,8 @@ gb_status gb_ymap_string(gb_ymap *m, const char *key, int flags, char *buf, size
 gb_status gb_ymap_map(gb_ymap *m, const char *key, int flags, gb_ymap *sub, gb_error *err);
 /* A number array of exactly n entries ([x, y] and the like). */
 gb_status gb_ymap_vector(gb_ymap *m, const char *key, int flags, int n, double *out, gb_error *err);
+/* A list of 1 to max numbers into out, their count in *n (unchanged when optional and absent). */
+gb_status gb_ymap_numbers(gb_ymap *m, const char *key, int flags, int max, double *out, int *n, gb_error *err);
 /* Refuses any key that was never looked up, naming the keys that are expected. */
 gb_status gb_ymap_close(gb_ymap *m, gb_error *err);
 

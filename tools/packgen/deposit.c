@@ -210,10 +210,10 @@ static int roll(const pg_ctx *c, int i, double *px, double *py, int j, int s, in
 }
 
 /* Drops disc i and leaves it where it is stable. */
-static pg_dep_status place(pg_ctx *c, int i, pg_rng *rng)
+static pg_dep_status place(pg_ctx *c, int i, gb_rng *rng)
 {
     const double ai = c->a[i];
-    double x = ai + pg_rng_uniform(rng) * (c->width - 2.0 * ai), y = 0.0;
+    double x = ai + gb_rng_uniform(rng) * (c->width - 2.0 * ai), y = 0.0;
     int limited = 0, exclude = -1;
     double ylim = 0.0;
     long moves = 0;
@@ -251,7 +251,7 @@ rest:
 }
 
 pg_dep_status pg_deposit(pg_disc *d, size_t n, double width, double rel_pad, double abs_pad,
-                         pg_rng *rng, double *height)
+                         gb_rng *rng, double *height)
 {
     pg_ctx c = {0};
     pg_dep_status st = PG_DEP_OK;

@@ -11,7 +11,7 @@
 
 #include <stddef.h>
 
-#include "pg_rng.h"
+#include "core/rng.h"
 
 typedef struct {
     double x, y, r;
@@ -24,6 +24,6 @@ typedef enum { PG_DEP_OK = 0, PG_DEP_NOMEM = 1, PG_DEP_STUCK = 2 } pg_dep_status
  * every pair ends at least g apart and every disc at least g / 2 from the walls and the floor.
  * *height gets max(y + r + pad): the top of the pile. Requires width >= 2 * max(r + pad). */
 pg_dep_status pg_deposit(pg_disc *d, size_t n, double width, double rel_pad, double abs_pad,
-                         pg_rng *rng, double *height);
+                         gb_rng *rng, double *height);
 
 #endif

@@ -21,7 +21,7 @@
 #include <string.h>
 
 #include "deposit.h"
-#include "pg_rng.h"
+#include "core/rng.h"
 #include "push.h"
 
 #define PG_PI 3.14159265358979323846
@@ -484,10 +484,10 @@ static double shuffled_radii(const pg_opts *o, const long *count, pg_disc *d, si
             d[m++].r = r;
         area += (double)count[k] * PG_PI * r * r;
     }
-    pg_rng rng;
-    pg_rng_seed(&rng, o->seed, 0);
+    gb_rng rng;
+    gb_rng_seed(&rng, o->seed, 0);
     for (size_t i = n - 1; i > 0; --i) {
-        const size_t j = pg_rng_below(&rng, i + 1);
+        const size_t j = gb_rng_below(&rng, i + 1);
         const double t = d[i].r;
         d[i].r = d[j].r;
         d[j].r = t;
@@ -509,7 +509,7 @@ static int make_deposit(const pg_opts *o, const long *count, pg_disc *d, pg_resu
         acontact += (double)count[k] * PG_PI * a * a;
     }
     pg_disc *best = res->d;
-    pg_rng rng;
+    gb_rng rng;
 
     /* deposition, with the width adjusted so that the pile fits under the box top aspect * W.
      * W' = W sqrt(Hp / H) keeps the area W Hp; `margin` (extra height aimed for) grows by half a
@@ -523,7 +523,7 @@ static int make_deposit(const pg_opts *o, const long *count, pg_disc *d, pg_resu
         if (W < 2.0 * amax)
             W = 2.0 * amax;
         double Hp = 0.0;
-        pg_rng_seed(&rng, o->seed, 1u + (uint64_t)att);
+        gb_rng_seed(&rng, o->seed, 1u + (uint64_t)att);
         const pg_dep_status st = pg_deposit(d, n, W, PG_REL_PAD, 0.5 * o->min_gap, &rng, &Hp);
         ++attempts;
         if (st == PG_DEP_NOMEM) {
@@ -606,8 +606,8 @@ static int make_push(const pg_opts *o, const pg_disc *d, pg_result *res)
         return EXIT_INPUT;
     }
     memcpy(res->d, d, n * sizeof *d);
-    pg_rng rng;
-    pg_rng_seed(&rng, o->seed, 1);
+    gb_rng rng;
+    gb_rng_seed(&rng, o->seed, 1);
     pg_rsa_place(res->d, n, W, H, &rng);
     const pg_push_status st =
         pg_push_apart(res->d, n, W, H, o->max_overlap, o->max_sweeps, &res->push);

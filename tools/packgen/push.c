@@ -23,12 +23,12 @@ typedef struct {
     double worst_pair, worst_wall;
 } pg_sweep;
 
-void pg_rsa_place(pg_disc *d, size_t n, double width, double height, pg_rng *rng)
+void pg_rsa_place(pg_disc *d, size_t n, double width, double height, gb_rng *rng)
 {
     for (size_t i = 0; i < n; ++i) {
         const double r = d[i].r;
-        d[i].x = r + pg_rng_uniform(rng) * (width - 2.0 * r);
-        d[i].y = r + pg_rng_uniform(rng) * (height - 2.0 * r);
+        d[i].x = r + gb_rng_uniform(rng) * (width - 2.0 * r);
+        d[i].y = r + gb_rng_uniform(rng) * (height - 2.0 * r);
     }
 }
 

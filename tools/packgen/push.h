@@ -12,7 +12,7 @@
 #include <stddef.h>
 
 #include "deposit.h"
-#include "pg_rng.h"
+#include "core/rng.h"
 
 typedef enum { PG_PUSH_OK = 0, PG_PUSH_NOMEM = 1, PG_PUSH_CAPPED = 2 } pg_push_status;
 
@@ -24,7 +24,7 @@ typedef struct {
 
 /* Centres of d[0..n-1] (r set by the caller) uniform in [r, width - r] x [r, height - r], x then
  * y for each disc in array order. Requires width, height >= 2 max r. */
-void pg_rsa_place(pg_disc *d, size_t n, double width, double height, pg_rng *rng);
+void pg_rsa_place(pg_disc *d, size_t n, double width, double height, gb_rng *rng);
 
 /* Push-apart sweeps in the box [0, width] x [0, height] until the bounds above hold or
  * max_sweeps sweeps have been made (PG_PUSH_CAPPED; *stats then describes the last sweep). */

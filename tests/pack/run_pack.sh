@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# gembem pack, checked by check_pack.py without gembem's code (its docstring says what), and:
+# a seeded packing made twice gives the same bytes; the solid fraction target is reached to 1e-9
+# (the radii are scaled to it); the stress target is within 2 % of the walls' stresses that gembem
+# run measures from the state; a run scene starts from the cavity packing's state.
+#   run_pack.sh GEMBEM GMSH PYTHON
+set -u
+gembem=$1; gmsh=$2; python=$3; dir=$(cd "$(dirname "$0")" && pwd); root=$dir/../..
+out=$(mktemp -d); fail=0
+trap 'rm -rf "$out"' EXIT
+check() { "$python" "$dir/check_pack.py" "$@" || fail=$((fail + 1)); }
+run() { "$gembem" "$@" --quiet || { echo "FAIL gembem $*"; fail=$((fail + 1)); }; }
+cp "$dir"/*.yaml "$out/"
+"$gmsh" -1 -format msh2 -clscale 0.5 "$root/meshes/irregular_cavity.geo" -o "$out/irregular.msh" > "$out/gmsh.log" 2>&1 ||
+  { echo "FAIL gmsh could not mesh irregular_cavity.geo"; exit 1; }
+cd "$out"
+
+run pack cavity_deposition.yaml -o deposition
+check deposition --msh irregular.msh --max-overlap 0.02 --accuracy 0.001 --weight 0.1
+run pack cavity_deposition.yaml -o deposition2
+for f in state_grains.csv state_contacts.csv state_host.csv; do
+  cmp -s deposition/$f deposition2/$f || { echo "FAIL $f differs between two runs of one seed"; fail=$((fail + 1)); }
+done
+strip() { grep -v -e '^made:' -e '^seconds:' -e '^command:' "$1"; }
+[ "$(strip deposition/pack_info.yaml)" = "$(strip deposition2/pack_info.yaml)" ] ||
+  { echo "FAIL pack_info.yaml differs between two runs of one seed"; fail=$((fail + 1)); }
+sed -i 's/seed: 3/seed: 4/' cavity_deposition.yaml
+run pack cavity_deposition.yaml -o deposition3
+cmp -s deposition/state_grains.csv deposition3/state_grains.csv && { echo "FAIL another seed, the same grains"; fail=$((fail + 1)); }
+run run cavity_run.yaml -o cavity_run
+
+run pack cavity_growth.yaml -o growth
+check growth --msh irregular.msh --max-overlap 0.05 --accuracy 0.001 --solid-fraction 0.73
+run pack box_growth.yaml -o box
+check box --box 0 10 0 10 --max-overlap 0.02 --accuracy 100 --solid-fraction 0.82
+run pack box_stress.yaml -o stress
+check stress --box 0 10 0 10 --max-overlap 0.05 --accuracy 100
+run run box_stress_run.yaml -o stress_run
+"$python" - <<'PY' || fail=$((fail + 1))
+import csv, sys
+row = next(csv.DictReader(open("stress_run/steps.csv")))
+p = 0.5 * (float(row["s1"]) + float(row["s2"]))
+print(f"stress: the walls' mean stress {p:.6g}, target 1e5")
+sys.exit(0 if abs(p - 1e5) <= 0.02e5 else 1)
+PY
+echo "$fail failures"
+[ $fail -eq 0 ]
