@@ -1,0 +1,107 @@
+#!/usr/bin/python3
+"""The demo's pipeline, reduced (examples/demo/demo.py with 80 grains and 6 steps of the top):
+pack, settle, compress and the figures, then checks that can fail, each without gembem's own
+summary of it:
+
+  - the packed grains press on the elastic body: after the settle step the cavity's largest
+    displacement is far above round-off (> 1e-6 of the body's 10 cm; the flagship demo's old
+    packing touched nothing: 1e-16 cm);
+  - on every cavity element, the host's force K u + f0 (host_particles.csv) equals the sum of the
+    grains' contact forces on its boundary particle, summed here from contacts/ (pn n + pt t), to
+    the solver's accuracy, at the end of both runs;
+  - the body's boundary forces balance (every group, the cavity included) to 2 % of the largest
+    (constant elements: docs/hybrid.md);
+  - the load-displacement curve rises: the top's force grows at every step of the top's loading,
+    and so does the granular zone's vertical stress (Love's formula), which stays below the body's
+    nominal stress (the grains are softer than the host: kn/G = 1 cm);
+  - every load step converged without a cut-back, and the localisation index of each loading step
+    lies in [0.1, 1];
+  - the four figures exist as PNG files of some size.
+"""
+import os
+import shutil
+import sys
+import tempfile
+
+import numpy as np
+
+ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
+sys.path.insert(0, os.path.join(ROOT, "examples", "demo"))
+import demo  # noqa: E402
+
+fails = []
+
+
+def check(ok, what):
+    print(("ok   " if ok else "FAIL ") + what)
+    if not ok:
+        fails.append(what)
+
+
+def particle_balance(run, step):
+    """Largest |host force - grains' force| over the cavity elements at `step` (the run's last)."""
+    c = run.contacts(step)
+    hp = run.host_particles
+    on = np.zeros((hp.nrows, 2))
+    for j, pn, pt, nx, ny in zip(c["j"], c["pn"], c["pt"], c["nx"], c["ny"]):
+        j = str(j)
+        if j.startswith("p"):
+            on[int(j[1:])] += pn * np.array([nx, ny]) + pt * np.array([-ny, nx])
+    return np.hypot(hp["host_fx"] - on[:, 0], hp["host_fy"] - on[:, 1]).max(), np.abs(on).max()
+
+
+def main():
+    out = tempfile.mkdtemp(prefix="gembem_demo_")
+    try:
+        settled, compressed, seconds = demo.run_all(out, grains=80, steps=6, quiet=True)
+        made = list(demo.draw(settled, compressed, os.path.join(out, "figures")))
+        print(f"pipeline {seconds:.1f} s; {', '.join(os.path.basename(p) for p, _ in made)}")
+        accuracy = compressed.scene["solver"]["accuracy"]
+
+        p = settled.host_particles
+        u = np.hypot(p["ux"], p["uy"]).max()
+        check(u > 1e-5, f"settled: the cavity's largest displacement {u:.3g} cm > 1e-5 cm (1e-6 of the body)")
+
+        for run in (settled, compressed):
+            last = int(run.steps["step"][-1])
+            gap, largest = particle_balance(run, last)
+            check(largest > 10 * accuracy and gap <= accuracy,
+                  f"{os.path.basename(run.path)}: host force K u + f0 = the grains' contact forces on each cavity "
+                  f"element to {gap:.3g} (accuracy {accuracy}; largest force {largest:.4g})")
+
+        hs = compressed.host_steps
+        last = int(hs["step"][-1])
+        end = hs.select(hs["step"] == last)
+        total = np.hypot(np.sum(end["fx"]), np.sum(end["fy"]))
+        biggest = np.hypot(end["fx"], end["fy"]).max()
+        check(total <= 0.02 * biggest, f"the body's boundary forces balance: |sum| {total:.4g} <= 2 % of {biggest:.4g}")
+
+        s = compressed.steps
+        loading = s["step"][s["stage"] == 2]
+        top = hs.select(hs["group"] == "top")
+        fy = -np.array([top["fy"][top["step"] == k][0] for k in loading])
+        check(len(loading) == 6 and np.all(np.diff(fy) > 0),
+              f"the top's force rises at every loading step: {np.array2string(fy, precision=0)}")
+        syy = np.array([demo.zone_stress(compressed, int(k))[1] for k in loading])
+        check(np.all(np.diff(syy) > 0) and np.all(syy < fy / 10),
+              f"the grains' vertical stress rises and stays below the body's nominal one: "
+              f"{np.array2string(syy, precision=0)}")
+        check(np.all(s["substeps"][1:] == 1) and np.all(settled.steps["substeps"][1:] == 1),
+              "every load step converged without a cut-back (substeps 1)")
+        loc = compressed.localisation
+        index = np.array([loc["localisation_index"][loc["step"] == k][0] for k in loading])
+        check(np.all((index >= 0.1) & (index <= 1)), f"localisation index in [0.1, 1]: {np.round(index, 3)}")
+
+        for path, _ in made:
+            with open(path, "rb") as f:
+                head = f.read(8)
+            check(head == b"\x89PNG\r\n\x1a\n" and os.path.getsize(path) > 20000,
+                  f"{os.path.basename(path)}: a PNG of {os.path.getsize(path)} bytes")
+    finally:
+        shutil.rmtree(out, ignore_errors=True)
+    print(f"{len(fails)} failures")
+    return 1 if fails else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
