@@ -16,6 +16,7 @@
 #include "io/checkpoint.h"
 #include "io/file_util.h"
 #include "io/scene_report.h"
+#include "io/steps_csv.h"
 #include "measure/step_measures.h"
 
 #define GB_STR_(x) #x
@@ -166,8 +167,7 @@ gb_status gb_run_output_open(const char *dir, const gb_sim *sim, int overwrite, 
         free(o);
         return gb_fail(err, GB_EIO, "%s: %s", path, strerror(errno));
     }
-    fprintf(o->steps, "step,stage,e1_minus_e2,e1,e2,ev,s1,s2,stress_ratio,iterations,max_fixing_force,seconds,"
-                      "contacts,width,height,substeps,trials,factorisations,sweeps\n");
+    gb_steps_csv_header(o->steps);
     fflush(o->steps);
     snprintf(path, sizeof path, "%s/micromechanics.csv", dir);
     if (!(o->micro = fopen(path, "w"))) {
@@ -446,10 +446,7 @@ gb_status gb_run_output_within_step(void *user, const gb_sim *sim, gb_error *err
 gb_status gb_run_output_step(gb_run_output *o, const gb_sim *sim, const gb_step_report *r, gb_error *err)
 {
     gb_test_kill_point(o->steps);
-    fprintf(o->steps, "%d,%d,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%ld,%.6e,%.6e,%d,%.17g,%.17g,%d,%ld,%ld,%ld\n",
-            r->step, r->stage + 1, r->e1 - r->e2, r->e1, r->e2, r->ev, r->s1, r->s2, r->stress_ratio, r->iterations,
-            r->max_fixing_force, r->seconds, r->n_contacts, r->width, r->height, r->substeps, r->work.trials,
-            r->work.factorisations, r->work.sweeps);
+    gb_steps_csv_row(o->steps, r);
     if (fflush(o->steps) != 0 || ferror(o->steps)) return gb_fail(err, GB_EIO, "%s/steps.csv: write failed", o->dir);
     if (o->history_failed) return gb_fail(err, GB_EIO, "%s/history.csv: write failed", o->dir);
     gb_micro m;
