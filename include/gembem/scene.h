@@ -201,11 +201,13 @@ gb_solver_settings gb_solver_defaults(void);
  * (GB_WARN_ACCURACY, docs/solvers.md "Accuracy"). */
 #define GB_ACCURACY_RELATIVE_DEFAULT 1e-4
 
-/* The force that the loads of stage `stage` put on a grain, for the force scale of a step that
- * starts with no contact force (src/scene/load_force.c): the largest of the mean grain's body force
- * and the stage's target stress (isotropic, biaxial or mean stress) times the mean diameter; 0 when
- * neither loads the grains (a strain or host stage without body force). */
+/* The force that the loads of stage `stage` put on a grain, for the force scale of a load step
+ * (src/scene/stage.c): the larger of the mean grain's body force and the stage's target stress
+ * (isotropic, biaxial or mean stress) times the mean diameter; 0 when neither loads the grains (a
+ * strain or host stage without body force). */
 double gb_scene_load_force(const gb_scene *s, int stage);
+/* A stage's name as a scene spells it ("isotropic", "host_load", ...). */
+const char *gb_stage_name(gb_stage_kind k);
 
 /* Total number of load steps of the loading program. */
 int gb_scene_total_steps(const gb_scene *s);

@@ -96,19 +96,6 @@ static int stress_controlled(gb_stage_kind k)
     return k == GB_STAGE_ISOTROPIC || k == GB_STAGE_BIAXIAL_STRESS || k == GB_STAGE_SHEAR_MEAN;
 }
 
-static const char *stage_name(gb_stage_kind k)
-{
-    switch (k) {
-    case GB_STAGE_ISOTROPIC: return "isotropic";
-    case GB_STAGE_STRAIN: return "strain";
-    case GB_STAGE_SHEAR_MEAN: return "shear_mean_stress";
-    case GB_STAGE_RELAX: return "relax";
-    case GB_STAGE_HOST_DISPLACEMENT: return "host_displacement";
-    case GB_STAGE_HOST_LOAD: return "host_load";
-    default: return "biaxial_stress";
-    }
-}
-
 /* The loads of a sub-step of size h: the host's loads grow (grains and cavity held: f0 changes),
  * or the walls move (strain control, and the shear increment of shear_mean_stress). */
 static gb_status apply_loads(gb_sim *sim, const gb_stage *sg, double h, gb_error *err)
@@ -236,12 +223,12 @@ static gb_status step_failed(const gb_sim *sim, const gb_stage *sg, gb_status st
                        "step %d (stage %d '%s', step %d of %d) did not converge in %ld iterations: largest fixing "
                        "force %.6g, walls off their target by %.6g (accuracy a = %g)%s; the outputs hold the %d "
                        "completed steps",
-                       c->step, c->stage + 1, stage_name(sg->kind), c->stage_step, sg->steps, sv->max_iterations,
+                       c->step, c->stage + 1, gb_stage_name(sg->kind), c->stage_step, sg->steps, sv->max_iterations,
                        max_force, residual, sim->accuracy, cut, c->step - 1);
     }
     char msg[GB_ERROR_MSG_MAX];
     snprintf(msg, sizeof msg, "%s", err->msg);
-    return gb_fail(err, st, "step %d (stage %d '%s', step %d of %d): %s", c->step, c->stage + 1, stage_name(sg->kind),
+    return gb_fail(err, st, "step %d (stage %d '%s', step %d of %d): %s", c->step, c->stage + 1, gb_stage_name(sg->kind),
                    c->stage_step, sg->steps, msg);
 }
 

@@ -2,6 +2,7 @@
 #include "io/file_util.h"
 
 #include <errno.h>
+#include <math.h>
 #include <fcntl.h>
 #include <signal.h>
 #include <stdlib.h>
@@ -82,4 +83,16 @@ gb_status gb_atomic_commit_durable(gb_atomic_file *a, gb_error *err)
         close(fd);
     }
     return GB_OK;
+}
+
+void gb_csv_put(FILE *f, const char *fmt, double v)
+{
+    if (isfinite(v)) {
+        fprintf(f, fmt, v);
+        return;
+    }
+    /* the format with "nan" for its conversion */
+    const char *c = strchr(fmt, '%'), *e = c ? c + strcspn(c + 1, "aAeEfFgG") + 1 : NULL;
+    if (!c || !*e) return;
+    fprintf(f, "%.*snan%s", (int)(c - fmt), fmt, e + 1);
 }

@@ -19,6 +19,11 @@ gb_status gb_atomic_commit(gb_atomic_file *a, gb_error *err);
 gb_status gb_atomic_commit_durable(gb_atomic_file *a, gb_error *err);
 void gb_atomic_abort(gb_atomic_file *a);
 
+/* A CSV value, or "nan" where it is undefined (any non-finite value): Python's float(), numpy and
+ * pandas read it as NaN. fmt holds one printf conversion of a double, with text around it, e.g.
+ * ",%.10e" or "%.10e\n". */
+void gb_csv_put(FILE *f, const char *fmt, double v);
+
 /* For tests of interrupted runs (tests/cli/run_resume.sh): with GB_TEST_KILL_AT=N in the
  * environment, the N-th call in the process writes a few bytes to `torn` (may be NULL), as a write
  * cut short would leave, and raises SIGKILL. Called before each appended row and each atomic rename. */

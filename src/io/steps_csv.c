@@ -1,13 +1,9 @@
 /* steps.csv: the load-displacement path and each step's error. */
 #include "io/steps_csv.h"
 
-#include <math.h>
+#include "io/file_util.h"
 
-void gb_csv_put(FILE *f, const char *fmt, double v)
-{
-    if (isfinite(v)) fprintf(f, fmt, v);
-    else fputs(fmt[0] == ',' ? ",nan" : "nan", f);
-}
+#include <math.h>
 
 void gb_steps_csv_header(FILE *f)
 {

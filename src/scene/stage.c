@@ -1,5 +1,5 @@
-/* The force that a stage's loads put on a grain: the force scale of a load step that starts with no
- * contact force (src/gem/accuracy.c), and the check of a relative accuracy at the first step. */
+/* What a loading stage is: its name as scenes spell it, and the force its loads put on a grain (the
+ * force scale of src/gem/accuracy.c, and the check of a relative accuracy at the first step). */
 #include <math.h>
 
 #include "gembem/scene.h"
@@ -24,4 +24,17 @@ double gb_scene_load_force(const gb_scene *s, int stage)
     }
     /* a stress [F/L] on a packing carried by contacts about a diameter apart */
     return fmax(weight, stress * 2 * r);
+}
+
+const char *gb_stage_name(gb_stage_kind k)
+{
+    switch (k) {
+    case GB_STAGE_ISOTROPIC: return "isotropic";
+    case GB_STAGE_STRAIN: return "strain";
+    case GB_STAGE_SHEAR_MEAN: return "shear_mean_stress";
+    case GB_STAGE_RELAX: return "relax";
+    case GB_STAGE_HOST_DISPLACEMENT: return "host_displacement";
+    case GB_STAGE_HOST_LOAD: return "host_load";
+    default: return "biaxial_stress";
+    }
 }
