@@ -3,7 +3,7 @@
 
     tools/check_equilibrium.py RUN_DIR [--accuracy A] [--slack S]
 
-Reads RUN_DIR/scene.yaml (materials, accuracy, body force), RUN_DIR/state.yaml (the box) and the
+Reads RUN_DIR/scene.yaml (materials, body force), RUN_DIR/state.yaml (the box) and the
 state's grains and contacts CSV files, and recomputes from the positions alone, with its own
 contact detection (a k-d tree, scipy): every overlap d = r_i + r_j - |x_j - x_i| (or the distance
 into a wall), the normal force pn = kn d of docs/method.md section 3 (K 3), and from the stored
@@ -11,7 +11,7 @@ tangential forces pt (one per contact: K 6 is path-dependent, so pt cannot be re
 the positions) each grain's fixing force (K 5): sum over its contacts of pn n + pt t (n from the
 grain to the other side, t = (-ny, nx)) minus its body force, and its moment over its radius,
 sum of pt. It checks:
-  - every grain's |(Fx, Fy, M/r)| <= A (K 14), A the scene's solver.accuracy unless given;
+  - every grain's |(Fx, Fy, M/r)| <= A (K 14), A the last step's accuracy (steps.csv) unless given;
   - Coulomb without dilation (K 13): |pt| <= pn tan(phi) + c, to S (relative, 1e-9) of the cap;
   - every stored contact is an overlap at the stored positions, with its stored pn = kn d to S
     (both beyond the rounding of an overlap computed from the coordinates, kn 1e3 eps |x|max),
@@ -63,6 +63,17 @@ def body_force_per_area(scene):
     return float(b["density"]) * np.array([float(v) for v in b["gravity"]])
 
 
+def last_accuracy(run_dir):
+    """The accuracy a that the last step was solved to: steps.csv's `accuracy` (a relative
+    accuracy resolves to a force per step)."""
+    try:
+        with open(os.path.join(run_dir, "steps.csv")) as f:
+            rows = list(csv.DictReader(f))
+        return float(rows[-1]["accuracy"])
+    except (OSError, KeyError, IndexError, ValueError) as e:
+        fail_input(f"{run_dir}/steps.csv: no accuracy of the last step ({e})")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("run_dir")
@@ -78,7 +89,7 @@ def main():
     gg, gw = material(scene, "grain_grain"), material(scene, "grain_wall")
     if gg is None:
         fail_input("scene.yaml: no materials.grain_grain")
-    accuracy = a.accuracy if a.accuracy is not None else float(scene["solver"]["accuracy"])
+    accuracy = a.accuracy if a.accuracy is not None else last_accuracy(a.run_dir)
     box = state.get("box")
     files = state["grains"]
     base = os.path.dirname(state_path)

@@ -38,7 +38,18 @@ typedef struct {
     double max_fixing_force;  /* largest |F| over the grains (K 14) */
     double seconds;           /* wall-clock time of the step */
     int n_contacts;
-    double width, height;
+    double width, height;     /* the box; NaN with a host (no walls) */
+    /* The step's error (docs/run-directory.md, steps.csv): the force scale and accuracy the step was
+     * solved to, and what it reached. */
+    double force_scale;       /* mean normal force of the contacts at the step's start (src/gem/accuracy.c) */
+    double accuracy;          /* a of the step: given, or the relative accuracy times force_scale */
+    double wall_residual;     /* the walls' force error at the end under stress control; NaN otherwise */
+    double max_particle_force; /* largest |K u + f0 - grains' force| over the boundary particles; NaN without
+                                  a host or with a rigid one */
+    double coulomb_excess;    /* max over contacts of |pt| - (pn tan phi + c), <= 0; NaN without contacts */
+    double mean_normal_force; /* mean pn of the contacts at the step's end (0 without) */
+    double coordination;      /* contacts per grain over the grains with two or more (rattlers excluded) */
+    int rattlers;             /* grains with fewer than two contacts */
 } gb_step_report;
 
 /* Called after the initial state (step 0) and after every converged step. A non-OK status stops

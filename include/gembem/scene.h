@@ -64,7 +64,9 @@ typedef struct {
 typedef struct {
     double alpha, alpha1;  /* alpha: case a) and d); alpha1 (alpha'): normal move of case c) */
     double beta, beta1;    /* beta: drift of a grain without contact, b); beta1 (beta'): rolling, c) */
-    double accuracy;       /* a: every grain's |F| <= a [force] */
+    double accuracy;       /* a: every grain's |F| <= a [force]; with accuracy_relative, resolved per step */
+    double accuracy_relative; /* > 0: a = this times the step's force scale (src/gem/accuracy.c); 0: a given */
+    int accuracy_default;  /* the scene gave no accuracy: accuracy_relative is GB_ACCURACY_RELATIVE_DEFAULT */
     long max_iterations;   /* cap per load step */
     int method;            /* GB_METHOD_REFERENCE (Jacobi-like, per grain) or GB_METHOD_GLOBAL */
     int linear;            /* global: GB_LINEAR_CHOLMOD or GB_LINEAR_UMFPACK */
@@ -190,8 +192,22 @@ gb_status gb_scene_load(const char *path, gb_scene *out, gb_error *err);
 void gb_scene_free(gb_scene *s);
 
 /* Default solver settings: the paper's constants for 122 discs (alpha, alpha', beta, beta' =
- * 0.75, 0.5, 20, 20); accuracy must be given by the scene. */
+ * 0.75, 0.5, 20, 20); the absolute form of the accuracy, 0: a scene built in code sets it (a scene
+ * file without solver.accuracy gets the relative GB_ACCURACY_RELATIVE_DEFAULT instead). */
 gb_solver_settings gb_solver_defaults(void);
+
+/* A scene file without solver.accuracy: every fixing force at most 1e-4 of the force scale (the
+ * mean normal contact force), a hundredth of the threshold above which a run is warned
+ * (GB_WARN_ACCURACY, docs/solvers.md "Accuracy"). */
+#define GB_ACCURACY_RELATIVE_DEFAULT 1e-4
+
+/* The force that the loads of stage `stage` put on a grain, for the force scale of a load step
+ * (src/scene/stage.c): the larger of the mean grain's body force and the stage's target stress
+ * (isotropic, biaxial or mean stress) times the mean diameter; 0 when neither loads the grains (a
+ * strain or host stage without body force). */
+double gb_scene_load_force(const gb_scene *s, int stage);
+/* A stage's name as a scene spells it ("isotropic", "host_load", ...). */
+const char *gb_stage_name(gb_stage_kind k);
 
 /* Total number of load steps of the loading program. */
 int gb_scene_total_steps(const gb_scene *s);

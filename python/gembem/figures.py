@@ -209,7 +209,7 @@ def load_displacement(runs, group=None, component=None, labels=None, ax=None, pa
 def convergence(runs, step, labels=None, accuracy=None, ax=None, path=None):
     """The largest fixing force at the start of each iteration of one load step (history.csv,
     all its attempts in order), then the force it converged at (steps.csv), log scale; the
-    accuracy as a dashed line (default: the first run's solver.accuracy)."""
+    accuracy as a dashed line (default: the a the first run solved that step to, steps.csv)."""
     runs = _runs(runs)
     fig, ax = _axes(ax)
     for k, run in enumerate(runs):
@@ -221,8 +221,10 @@ def convergence(runs, step, labels=None, accuracy=None, ax=None, path=None):
         label = labels[k] if labels else run.path
         ax.semilogy(np.arange(1, len(force) + 1), force, marker="o", ms=3,
                     label=f"{label} ({len(force) - 1} iterations)")
-    if accuracy is None:
-        accuracy = runs[0].scene.get("solver", {}).get("accuracy")
+    if accuracy is None:  # the a the step was solved to (a relative accuracy resolves per step)
+        steps = runs[0].steps
+        rows = steps["accuracy"][steps["step"] == step] if "accuracy" in steps else []
+        accuracy = float(rows[0]) if len(rows) else None
     if accuracy:
         ax.axhline(accuracy, color="k", lw=0.8, ls="--", label=f"accuracy {accuracy:g}")
     ax.set_xlabel("iteration of the load step")

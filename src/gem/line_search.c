@@ -89,7 +89,7 @@ gb_status gb_gem_line_search_move(gb_sim *sim, const gb_wall_control *wc, double
      * a sixteenth of it first (a 1e4-disc friction relaxation: 48 iterations, and not converged in
      * 1 000 with sweeps at once). */
     int unbalanced = 0, found;
-    double a2 = sim->scene->solver.accuracy * sim->scene->solver.accuracy;
+    double a2 = sim->accuracy * sim->accuracy;
     for (int i = 0; i < n; i++) unbalanced += gb_gem_force2(sim, i) > a2;
     int first = unbalanced > n / 10 ? GLOBAL_HALVINGS : 0;
     if ((st = backtrack(sim, wc, m0, dir, 0, first, &found, err)) || found) return st;

@@ -368,7 +368,7 @@ int gb_gem_iterate(gb_sim *sim, const gb_wall_control *wc, double *max_force, do
         *st = gb_fail(err, GB_ENUMERIC, "a fixing force became non-finite");
         return 0;
     }
-    double a = sim->scene->solver.accuracy;
+    double a = sim->accuracy; /* the load step's (src/gem/accuracy.c) */
     if (*max_force <= a && *wall_residual <= a) { /* (K 14) */
         memset(sim->wall_dx, 0, sizeof sim->wall_dx);
         return 1;

@@ -200,6 +200,8 @@ gb_status gb_sim_create(const gb_scene *scene, gb_sim **out, gb_error *err)
             return st;
         }
     }
+    /* the accuracy of a relaxation run outside gb_sim_run (benchmarks, tests): as for a first step */
+    gb_sim_resolve_accuracy(sim, sim->pairs.p, sim->pairs.n, 0);
     *out = sim;
     return GB_OK;
 }

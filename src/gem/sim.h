@@ -137,6 +137,8 @@ struct gb_sim {
     void *on_iteration_user;
     int attempt;              /* relaxations in the current load step */
     double detect_seconds;    /* spent on contact detection: the pair list's staleness and rebuilds */
+    double force_scale;       /* of the load step in progress, from its start (src/gem/accuracy.c) */
+    double accuracy;          /* a of the load step in progress: every test against the accuracy uses it */
     /* Energy accounts since the start of the run (absolute, force x length). */
     double work_walls;        /* done by the walls: quasi-static, from converged steps' forces */
     double work_walls_iter;   /* done by the walls as the iterations move them */
@@ -202,6 +204,21 @@ gb_status gb_gem_apply_moves(gb_sim *sim, gb_error *err);
  * allowed one) it calls sim->on_within_step, whose error ends it. */
 gb_status gb_gem_relax(gb_sim *sim, const gb_wall_control *wc, long cap, long *iterations, double *max_force,
                        double *wall_residual, gb_error *err);
+
+/* The mean normal force of the pairs among p[0..n) whose overlap is more than the rounding of
+ * coordinates of magnitude `extent` (0 without). */
+double gb_pairs_mean_normal_force(const gb_pair *p, int n, double extent);
+/* The magnitude of the coordinates: the box's (with a host, the grains' bounding box at the start). */
+double gb_sim_extent(const gb_sim *sim);
+/* The force scale of a load step of stage `stage` that starts with the pairs p[0..n) (the larger
+ * of their mean normal force and the stage's load force, gb_scene_load_force) into
+ * sim->force_scale, and the step's accuracy a into sim->accuracy: the scene's, or its relative
+ * accuracy times the scale (0 when there is no scale). */
+void gb_sim_resolve_accuracy(gb_sim *sim, const gb_pair *p, int n, int stage);
+/* The error measures of gb_step_report from the current contacts (src/gem/step_error.c):
+ * largest fixing forces of grains and particles, Coulomb excess, mean normal force, coordination.
+ * Computes the forces (gb_gem_forces). */
+void gb_sim_step_error(gb_sim *sim, gb_step_report *r);
 
 /* Boundary stresses (K section 4.1) and strains from the walls. */
 void gb_gem_stress(const gb_sim *sim, double *s1, double *s2);

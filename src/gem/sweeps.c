@@ -212,7 +212,7 @@ gb_status gb_gem_sweeps(gb_sim *sim, const gb_wall_control *wc, double target, i
 {
     gb_sweep_scratch *w = &sim->sweeps;
     int n = sim->n;
-    double a = sim->scene->solver.accuracy, a2 = a * a, merit, grain, wall;
+    double a = sim->accuracy, a2 = a * a, merit, grain, wall;
     memset(sim->dX, 0, 3 * (size_t)n * sizeof(double));
     if (sim->bp.n) memset(sim->bp.dx, 0, 2 * (size_t)sim->bp.n * sizeof(double));
     int held = wc->mode == GB_WALLS_FIXED;

@@ -5,6 +5,7 @@
 #include <sys/stat.h>
 
 #include <errno.h>
+#include <math.h>
 #include <fcntl.h>
 #include <signal.h>
 #include <stdlib.h>
@@ -139,4 +140,16 @@ gb_status gb_output_dir_check(const char *dir, int overwrite, const char *what, 
     if (!overwrite && !dir_is_empty(dir))
         return gb_fail(err, GB_EINPUT, "%s %s exists and is not empty; choose another or pass --overwrite", what, dir);
     return GB_OK;
+}
+
+void gb_csv_put(FILE *f, const char *fmt, double v)
+{
+    if (isfinite(v)) {
+        fprintf(f, fmt, v);
+        return;
+    }
+    /* the format with "nan" for its conversion */
+    const char *c = strchr(fmt, '%'), *e = c ? c + strcspn(c + 1, "aAeEfFgG") + 1 : NULL;
+    if (!c || !*e) return;
+    fprintf(f, "%.*snan%s", (int)(c - fmt), fmt, e + 1);
 }

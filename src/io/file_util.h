@@ -27,6 +27,11 @@ gb_status gb_copy_file(const char *from, const char *to, gb_error *err);
  * else GB_EINPUT, the message naming it as `what` ("run directory"). */
 gb_status gb_output_dir_check(const char *dir, int overwrite, const char *what, gb_error *err);
 
+/* A CSV value, or "nan" where it is undefined (any non-finite value): Python's float(), numpy and
+ * pandas read it as NaN. fmt holds one printf conversion of a double, with text around it, e.g.
+ * ",%.10e" or "%.10e\n". */
+void gb_csv_put(FILE *f, const char *fmt, double v);
+
 /* For tests of interrupted runs (tests/cli/run_resume.sh): with GB_TEST_KILL_AT=N in the
  * environment, the N-th call in the process writes a few bytes to `torn` (may be NULL), as a write
  * cut short would leave, and raises SIGKILL. Called before each appended row and each atomic rename. */

@@ -16,6 +16,9 @@
 #include "io/checkpoint.h"
 #include "io/file_util.h"
 #include "io/scene_report.h"
+#include "io/run_record.h"
+#include "io/run_verdict.h"
+#include "io/steps_csv.h"
 #include "measure/step_measures.h"
 
 #define GB_STR_(x) #x
@@ -39,6 +42,7 @@ struct gb_run_output {
     double last_checkpoint;   /* gb_clock_seconds() */
     int interrupted;          /* earlier runs of the directory that ended without a status */
     char resumed[4096];       /* run_info.yaml's "resumed:" list items */
+    gb_run_times times;
 };
 
 /* The files a run appends to (or rewrites in place at their end), cut back to their checkpoint's
@@ -52,7 +56,9 @@ static void list_appended(gb_run_output *o)
     if (o->scene->solver.history) o->appended[o->n_appended++] = "history.csv";
 }
 
-static gb_status write_info(const gb_run_output *o, const char *status, const char *message, gb_error *err)
+/* sim: for the solver's times (may be NULL); verdict: at the end (else NULL). */
+static gb_status write_info(const gb_run_output *o, const gb_sim *sim, const char *status, const char *message,
+                            const gb_run_verdict *verdict, gb_error *err)
 {
     char path[1024];
     snprintf(path, sizeof path, "%s/run_info.yaml", o->dir);
@@ -69,6 +75,10 @@ static gb_status write_info(const gb_run_output *o, const char *status, const ch
             : sc->measures_every ? "; the default below " GB_STR(GB_MEASURES_DEFAULT_GRAINS) " grains"
                                  : "; the default from " GB_STR(GB_MEASURES_DEFAULT_GRAINS) " grains up");
     gb_scene_report_write(a.f, sc);
+    gb_run_record_settings(a.f, sc);
+    gb_run_record_machine(a.f);
+    gb_run_record_times(a.f, sim, &o->times);
+    if (verdict) gb_run_verdict_write(a.f, verdict);
     fprintf(a.f, "status: %s\n", status);
     if (o->resumed[0])
         fprintf(a.f, "interrupted: %d   # runs of this directory killed before they ended\nresumed:\n%s",
@@ -108,7 +118,8 @@ gb_status gb_run_output_open(const char *dir, const gb_sim *sim, int overwrite, 
         return gb_fail(err, GB_EIO, "%s: %s", path, strerror(errno));
     }
     snprintf(path, sizeof path, "%s/scene.yaml", dir);
-    if ((st = gb_copy_file(scene->path, path, err)) || (st = write_info(o, "running", NULL, err))) {
+    o->times.started = gb_clock_seconds();
+    if ((st = gb_copy_file(scene->path, path, err)) || (st = write_info(o, sim, "running", NULL, NULL, err))) {
         free(o);
         return st;
     }
@@ -117,8 +128,7 @@ gb_status gb_run_output_open(const char *dir, const gb_sim *sim, int overwrite, 
         free(o);
         return gb_fail(err, GB_EIO, "%s: %s", path, strerror(errno));
     }
-    fprintf(o->steps, "step,stage,e1_minus_e2,e1,e2,ev,s1,s2,stress_ratio,iterations,max_fixing_force,seconds,"
-                      "contacts,width,height,substeps,trials,factorisations,sweeps\n");
+    gb_steps_csv_header(o->steps);
     fflush(o->steps);
     snprintf(path, sizeof path, "%s/micromechanics.csv", dir);
     if (!(o->micro = fopen(path, "w"))) {
@@ -169,6 +179,8 @@ void gb_run_output_iteration(void *user, const gb_iteration_report *r)
 
 static int snapshot_due(const gb_scene *s, int step);
 static gb_status add_snapshot(gb_run_output *o, int step, gb_error *err);
+static gb_status write_step(gb_run_output *o, const gb_sim *sim, const gb_step_report *r, double *measures,
+                            gb_error *err);
 
 /* The value of "key: " on its line of run_info.yaml's text, quotes dropped, or "". */
 static void info_value(const char *text, const char *key, char *out, size_t cap)
@@ -299,7 +311,8 @@ gb_status gb_run_output_resume(const char *dir, gb_sim *sim, const char *command
     if (!st) st = open_append(o, "micromechanics.csv", &o->micro, err);
     if (!st && o->scene->host.present) st = open_append(o, "host_steps.csv", &o->host, err);
     if (!st && o->scene->solver.history) st = open_append(o, "history.csv", &o->history, err);
-    if (!st) st = write_info(o, "running", NULL, err);
+    o->times.started = gb_clock_seconds();
+    if (!st) st = write_info(o, sim, "running", NULL, NULL, err);
     if (st) {
         FILE *files[4] = {o->steps, o->micro, o->host, o->history};
         for (int k = 0; k < 4; k++)
@@ -396,11 +409,19 @@ gb_status gb_run_output_within_step(void *user, const gb_sim *sim, gb_error *err
 
 gb_status gb_run_output_step(gb_run_output *o, const gb_sim *sim, const gb_step_report *r, gb_error *err)
 {
+    double t0 = gb_clock_seconds(), measures = 0;
+    o->times.steps += r->seconds;
+    gb_status st = write_step(o, sim, r, &measures, err);
+    o->times.measures += measures;
+    o->times.output += gb_clock_seconds() - t0 - measures;
+    return st;
+}
+
+static gb_status write_step(gb_run_output *o, const gb_sim *sim, const gb_step_report *r, double *measures,
+                            gb_error *err)
+{
     gb_test_kill_point(o->steps);
-    fprintf(o->steps, "%d,%d,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%ld,%.6e,%.6e,%d,%.17g,%.17g,%d,%ld,%ld,%ld\n",
-            r->step, r->stage + 1, r->e1 - r->e2, r->e1, r->e2, r->ev, r->s1, r->s2, r->stress_ratio, r->iterations,
-            r->max_fixing_force, r->seconds, r->n_contacts, r->width, r->height, r->substeps, r->work.trials,
-            r->work.factorisations, r->work.sweeps);
+    gb_steps_csv_row(o->steps, r);
     if (fflush(o->steps) != 0 || ferror(o->steps)) return gb_fail(err, GB_EIO, "%s/steps.csv: write failed", o->dir);
     if (o->history_failed) return gb_fail(err, GB_EIO, "%s/history.csv: write failed", o->dir);
     gb_micro m;
@@ -422,7 +443,10 @@ gb_status gb_run_output_step(gb_run_output *o, const gb_sim *sim, const gb_step_
     if (o->host && (st = gb_host_write_step(o->host, r->step, sim, err))) return st;
     /* Strain field, D2min, localisation, sliding contacts, host around the cavity (src/measure). */
     int fields = sc->measures_every > 0 && r->step % sc->measures_every == 0;
-    if ((st = gb_measure_write_step(o->dir, sim, r->step, fields, err))) return st;
+    double t0 = gb_clock_seconds();
+    st = gb_measure_write_step(o->dir, sim, r->step, fields, err);
+    *measures = gb_clock_seconds() - t0;
+    if (st) return st;
     if ((sc->contacts_every > 0 && r->step % sc->contacts_every == 0) || snapshot_due(sc, r->step)) {
         snprintf(path, sizeof path, "%s/contacts", o->dir);
         if ((st = gb_make_dirs(path, err))) return st;
@@ -464,9 +488,18 @@ gb_status gb_run_output_close(gb_run_output *o, const gb_sim *sim, gb_status run
     if (o->history && fclose(o->history) != 0 && !st) o->history_failed = 1;
     if ((o->history_failed) && !st) st = gb_fail(err, GB_EIO, "%s/history.csv: write failed", o->dir);
     o->steps = o->micro = o->host = o->history = NULL;
+    double t0 = gb_clock_seconds();
     if (!st && sim) st = gb_state_write(o->dir, sim, err);
     if (!st && sim && sim->host) st = gb_host_write_outputs(o->dir, sim, err);
-    if (!st) st = write_info(o, run_status == GB_OK ? "completed" : gb_status_name(run_status), message, err);
+    o->times.output += gb_clock_seconds() - t0;
+    /* The verdict of every step the directory holds (a resumed run's earlier ones too), and the
+     * warnings where the result is noise (docs/run-directory.md#warnings): said once more on stderr. */
+    gb_run_verdict verdict;
+    if (!st) st = gb_run_verdict_read(o->dir, o->scene, &verdict, err);
+    for (int k = o->scene->warning[0] ? 1 : 0; !st && k < verdict.n_warnings; k++)
+        fprintf(stderr, "gembem: warning: %s\n", verdict.warning[k]);
+    if (!st)
+        st = write_info(o, sim, run_status == GB_OK ? "completed" : gb_status_name(run_status), message, &verdict, err);
     /* A completed run has nothing to resume; any other keeps its last checkpoint. */
     char path[1024];
     snprintf(path, sizeof path, "%s/%s", o->dir, GB_CHECKPOINT_NAME);

@@ -3,6 +3,7 @@
  * host's stress around its cavity. Stateless: the step's start is the simulation's saved state. */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
+#include <float.h>
 #include <math.h>
 #include <stddef.h>
 #include <stdio.h>
@@ -66,6 +67,13 @@ static gb_status zone_measure(const gb_sim *sim, zone *z, gb_error *err)
     gb_strain_points(&z->t, z->tri, n, z->grain, z->grain_tri);
     gb_strain_mean(z->t.n, z->tri, &z->mean);
     if (z->tri_ok && (st = gb_localisation_index(z->t.n, z->tri, LOC_FRACTION, &z->loc, err))) return st;
+    /* The index is a share of the zone's shear: undefined where that shear is noise (a relaxation,
+     * step 0), not a ratio of two roundings. A grain's place is known to the step's accuracy over
+     * its stiffness, a / kn, a strain to that over a diameter; and to the rounding of coordinates. */
+    double dmean = 0;
+    for (int i = 0; i < n; i++) dmean += 2 * z->r[i] / n;
+    double noise = n > 0 ? fmax(sim->accuracy / sim->scene->grain_grain.kn, 1e3 * DBL_EPSILON * gb_sim_extent(sim)) / dmean : 0;
+    if (!(z->loc.mean_gamma > noise)) z->loc.index = NAN;
     /* D2min over the first shell and near contacts: touching grains are at most the largest
      * diameter apart. */
     z->d2_range = 1.5 * dmax;
@@ -173,9 +181,11 @@ static gb_status write_host(const char *dir, int step, const gb_host_measures *m
     gb_status st = gb_atomic_open(&a, path, err);
     if (st) return st;
     fprintf(a.f, "element,x,y,hoop,hoop_empty,normal,concentration\n");
-    for (int k = 0; k < m->n_wall; k++)
-        fprintf(a.f, "%d,%.17g,%.17g,%.10e,%.10e,%.10e,%.10e\n", m->elem[k], m->wall_xy[2 * k], m->wall_xy[2 * k + 1],
-                m->hoop[k], m->hoop_empty[k], m->normal[k], m->s_ref > 0 ? m->hoop[k] / m->s_ref : 0);
+    for (int k = 0; k < m->n_wall; k++) {
+        fprintf(a.f, "%d,%.17g,%.17g,%.10e,%.10e,%.10e,", m->elem[k], m->wall_xy[2 * k], m->wall_xy[2 * k + 1], m->hoop[k],
+                m->hoop_empty[k], m->normal[k]);
+        gb_csv_put(a.f, "%.10e\n", isnan(m->max_concentration) ? NAN : m->hoop[k] / m->s_ref);
+    }
     if ((st = gb_atomic_commit(&a, err))) return st;
     snprintf(path, sizeof path, "%s/fields/host_ring_%06d.csv", dir, step);
     if ((st = gb_atomic_open(&a, path, err))) return st;
@@ -205,10 +215,15 @@ static gb_status write_row(const char *dir, int step, const zone *z, int n_slidi
     int nd = 0;
     for (int i = 0; i < z->n; i++)
         if (z->d2[i].ok) d2sum += z->d2[i].d2min, d2max = fmax(d2max, z->d2[i].d2min), nd++;
-    fprintf(f, "%d,%d,%d,%d,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%d", step, z->n, z->t.n,
-            z->t.n_delaunay, z->loc.area, z->loc.mean_gamma, z->loc.max_gamma, z->loc.index, z->mean.exx, z->mean.eyy,
-            z->mean.exy, z->mean.ev, nd ? d2sum / nd : 0, d2max, z->d2_range, n_sliding);
-    if (hm) fprintf(f, ",%.10e,%s,%.10e", hm->s_ref, hm->s_ref_kind, hm->max_concentration);
+    fprintf(f, "%d,%d,%d,%d,%.10e,%.10e,%.10e,", step, z->n, z->t.n, z->t.n_delaunay, z->loc.area, z->loc.mean_gamma,
+            z->loc.max_gamma);
+    gb_csv_put(f, "%.10e", z->tri_ok ? z->loc.index : NAN);
+    fprintf(f, ",%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%d", z->mean.exx, z->mean.eyy, z->mean.exy, z->mean.ev,
+            nd ? d2sum / nd : 0, d2max, z->d2_range, n_sliding);
+    if (hm) {
+        fprintf(f, ",%.10e,%s", hm->s_ref, hm->s_ref_kind);
+        gb_csv_put(f, ",%.10e", hm->max_concentration);
+    }
     fprintf(f, "\n");
     if (ferror(f) | fclose(f)) return gb_fail(err, GB_EIO, "%s: write failed", path);
     return GB_OK;

@@ -29,7 +29,9 @@ typedef struct {
     double *normal;      /* n.s.n: minus the grains' pressure on the wall */
     double s_ref;        /* the reference stress (see gb_host_measure) */
     const char *s_ref_kind; /* "remote", "boundary", "cavity_pressure" or "none" */
-    double max_concentration; /* hoop / s_ref where |hoop| is largest; 0 when s_ref = 0 */
+    double max_concentration; /* hoop / s_ref where |hoop| is largest; NaN when s_ref is within the
+                                 noise of the stresses (the step's accuracy over a cavity element's
+                                 mean length, or 1e-12 of the largest hoop stress) */
     int n_ring;
     double *ring_xy;     /* 2 per point */
     double *ring_stress; /* sxx, syy, sxy per point */

@@ -14,7 +14,9 @@
 
 gb_solver_settings gb_solver_defaults(void)
 {
-    gb_solver_settings s = {0.75, 0.5, 20.0, 20.0, 0.0, 100000, GB_METHOD_REFERENCE, 0, 1.0, 0.1, 4, GB_NEWTON_DAMPED, 0};
+    gb_solver_settings s = {.alpha = 0.75, .alpha1 = 0.5, .beta = 20.0, .beta1 = 20.0, .max_iterations = 100000,
+                            .method = GB_METHOD_REFERENCE, .global_alpha = 1.0, .max_move = 0.1, .cutbacks = 4,
+                            .newton = GB_NEWTON_DAMPED};
     return s;
 }
 
@@ -84,12 +86,56 @@ static gb_status read_body_force(gb_ymap *top, gb_scene *s, gb_error *err)
     return GB_OK;
 }
 
+/* solver.accuracy: a force (the absolute form, K 14), or {relative: r}, a share of each step's force
+ * scale (src/gem/accuracy.c); absent: the relative default. */
+static gb_status read_accuracy(gb_ymap *m, gb_solver_settings *sv, gb_error *err)
+{
+    struct fy_node *v;
+    gb_status st = gb_ymap_find(m, "accuracy", 0, &v, err);
+    if (st) return st;
+    if (!v) {
+        sv->accuracy_relative = GB_ACCURACY_RELATIVE_DEFAULT;
+        sv->accuracy_default = 1;
+        return GB_OK;
+    }
+    if (fy_node_get_type(v) != FYNT_MAPPING)
+        return gb_ymap_number(m, "accuracy", GB_Y_REQUIRED | GB_Y_POSITIVE, &sv->accuracy, err);
+    gb_ymap r;
+    if ((st = gb_ymap_map(m, "accuracy", GB_Y_REQUIRED, &r, err)) ||
+        (st = gb_ymap_number(&r, "relative", GB_Y_REQUIRED | GB_Y_POSITIVE, &sv->accuracy_relative, err)))
+        return st;
+    if (!(sv->accuracy_relative < 1)) {
+        gb_ymap_find(&r, "relative", 0, &v, err);
+        return gb_yaml_fail(m->doc, v, err, "solver.accuracy.relative: expected a share of the force scale in (0, 1), "
+                                            "e.g. 1e-4");
+    }
+    return gb_ymap_close(&r, err);
+}
+
+/* A relative accuracy needs a force to be relative to at the first step: a contact force of the
+ * initial state, or a body force or stress target of the first stage (src/gem/accuracy.c). */
+static gb_status check_force_scale(const gb_yaml_doc *doc, gb_ymap *top, const gb_scene *s, gb_error *err)
+{
+    const gb_overlaps *o = &s->overlaps;
+    if (!(s->solver.accuracy_relative > 0) || o->grain_pairs || o->boundary || o->particles ||
+        gb_scene_load_force(s, 0) > 0)
+        return GB_OK;
+    struct fy_node *v = NULL, *sv = NULL;
+    gb_ymap_find(top, "solver", 0, &sv, err);
+    if (sv) v = fy_node_mapping_lookup_by_string(sv, "accuracy", FY_NT);
+    return gb_yaml_fail(doc, v ? v : sv ? sv : top->node, err,
+                        "solver.accuracy: %s relative accuracy has no force scale at the first step: no grain "
+                        "touches another or a boundary, there is no body force and the first stage imposes no "
+                        "stress; expected an absolute accuracy (a force, e.g. 'accuracy: 1e-3')",
+                        s->solver.accuracy_default ? "without solver.accuracy, the default" : "a");
+}
+
 static gb_status read_solver(gb_ymap *top, gb_solver_settings *sv, gb_error *err)
 {
     gb_ymap m;
     gb_status st;
     *sv = gb_solver_defaults();
-    if ((st = gb_ymap_map(top, "solver", GB_Y_REQUIRED, &m, err))) return st;
+    if ((st = gb_ymap_map(top, "solver", 0, &m, err))) return st;
     char method[32] = "reference", linear[32] = "", newton[32] = "damped";
     if ((st = gb_ymap_string(&m, "method", 0, method, sizeof method, err)) ||
         (st = gb_ymap_string(&m, "linear", 0, linear, sizeof linear, err)) ||
@@ -124,7 +170,7 @@ static gb_status read_solver(gb_ymap *top, gb_solver_settings *sv, gb_error *err
         (st = gb_ymap_number(&m, "alpha1", GB_Y_POSITIVE, &sv->alpha1, err)) ||
         (st = gb_ymap_number(&m, "beta", GB_Y_NONNEG, &sv->beta, err)) ||
         (st = gb_ymap_number(&m, "beta1", GB_Y_NONNEG, &sv->beta1, err)) ||
-        (st = gb_ymap_number(&m, "accuracy", GB_Y_REQUIRED | GB_Y_POSITIVE, &sv->accuracy, err)) ||
+        (st = read_accuracy(&m, sv, err)) ||
         (st = gb_ymap_int(&m, "max_iterations", 0, 1, 2000000000L, &sv->max_iterations, err)))
         return st;
     if ((st = gb_ymap_bool(&m, "history", 0, &sv->history, err))) return st;
@@ -463,7 +509,9 @@ static gb_status load(const gb_yaml_doc *doc, gb_scene *s, gb_bem_mesh *mesh, gb
                                                   "'host_displacement' or 'host_load'", k);
     }
     if ((st = gb_ymap_close(&top, err))) return st;
-    return read_pack ? GB_OK : gb_scene_admit(s, s->host.present ? mesh : NULL, err);
+    if (read_pack) return GB_OK;
+    if ((st = gb_scene_admit(s, s->host.present ? mesh : NULL, err))) return st;
+    return check_force_scale(doc, &top, s, err);
 }
 
 gb_status gb_scene_load(const char *path, gb_scene *out, gb_error *err)

@@ -4,11 +4,13 @@
 # the positions, the stored pt, every grain's force and moment) after an oedometric path from the
 # jammed fixture with each solver (reference, global, global with newton: line_search); and the
 # checker fails on a state that is not one (a grain moved by 1e-5 cm; a tangential force past its
-# Coulomb cap). The same runs check solver.history's history.csv against steps.csv.
+# Coulomb cap). The same runs check solver.history's history.csv against steps.csv, and steps.csv's
+# error columns of the last step against tools/check_step_error.py's recomputation (issue 22).
 #   check_equilibrium.sh GEMBEM JAMMED_DIR OUT_DIR
 set -euo pipefail
 gembem=$1 jammed=$2 out=$3
 check=$(cd "$(dirname "$0")/../.." && pwd)/tools/check_equilibrium.py
+steperr=$(dirname "$check")/check_step_error.py
 rm -rf "$out"; mkdir -p "$out"
 fails=0
 ok() { echo "ok: $*"; }
@@ -18,10 +20,13 @@ for method in reference global line_search; do
   sed -e "s|^grains: {file: jammed.csv}|grains: {file: $jammed/jammed.csv}|" \
       -e "s|^solver: .*|solver: {$solver, accuracy: 100, max_iterations: 2000000, history: true}|" \
       -e '/^loading:/,$d' "$jammed/scene.yaml" > "$out/$method.yaml"
-  printf 'loading:\n  - strain: {de1: 0.0005, de2: 0, steps: 4}\n' >> "$out/$method.yaml"
+  printf 'loading:\n  - strain: {de1: 0.0005, de2: 0, steps: 4}\noutput: {contacts_every: 1}\n' >> "$out/$method.yaml"
   OPENBLAS_NUM_THREADS=1 "$gembem" run "$out/$method.yaml" -o "$out/$method" --quiet > /dev/null
   if /usr/bin/python3 "$check" "$out/$method"; then ok "$method: the final state is an equilibrium"
   else bad "$method: the final state is not an equilibrium"; fi
+  # issue 22: steps.csv's error columns of the last step, recomputed from the state
+  if /usr/bin/python3 "$steperr" "$out/$method"; then ok "$method: steps.csv's error columns recomputed"
+  else bad "$method: steps.csv's error columns differ from the state's"; fi
   # solver.history: one row per iteration that did not converge, the iterations of steps.csv, each
   # starting above the accuracy, the line search's length in (0, 1].
   if awk -F, -v m=$method 'FNR == 1 { next } FILENAME ~ /steps/ { its += $10; next }
@@ -43,4 +48,7 @@ awk -F, 'NR > 1 && $2 ~ /^[0-9]+$/ && !done { $4 = sprintf("%.17g", 0.47 * $3); 
 if /usr/bin/python3 "$check" "$out/slip" > "$out/slip.log" || ! grep -q Coulomb "$out/slip.log"; then
   bad "a tangential force of 0.47 pn (tan 25 deg = 0.466) passed"
 else ok "a tangential force past its Coulomb cap fails"; fi
+if /usr/bin/python3 "$steperr" "$out/slip" > "$out/slip_steps.log" || ! grep -q "FAIL.*coulomb_excess" "$out/slip_steps.log"; then
+  bad "check_step_error.py did not see the Coulomb excess of 0.47 pn against steps.csv's"
+else ok "check_step_error.py finds the tangential force past its cap"; fi
 [ $fails = 0 ] || { echo "$fails failure(s)"; exit 1; }

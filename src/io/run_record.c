@@ -1,0 +1,113 @@
+/* run_info.yaml's settings, machine and time: what a reader needs to tell how the answer was made
+ * and what it cost without opening the code. */
+#define _POSIX_C_SOURCE 200809L
+#include "io/run_record.h"
+
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "core/clock.h"
+#include "core/memory.h"
+#include "gem/sim.h"
+
+static void material(FILE *f, const char *name, const gb_material *m)
+{
+    fprintf(f, "    %s: {kn: %.17g, kt: %.17g, friction_deg: %.17g, cohesion: %.17g}\n", name, m->kn, m->kt,
+            m->friction_deg, m->cohesion);
+}
+
+static void stage(FILE *f, const gb_stage *sg)
+{
+    fprintf(f, "    - %s: {steps: %d", gb_stage_name(sg->kind), sg->steps);
+    switch (sg->kind) {
+    case GB_STAGE_ISOTROPIC: fprintf(f, ", stress: %.17g", sg->stress); break;
+    case GB_STAGE_BIAXIAL_STRESS: fprintf(f, ", s1: %.17g, s2: %.17g", sg->s1, sg->s2); break;
+    case GB_STAGE_STRAIN: fprintf(f, ", de1: %.17g, de2: %.17g", sg->de1, sg->de2); break;
+    case GB_STAGE_SHEAR_MEAN:
+        fprintf(f, ", d_e1_minus_e2: %.17g, mean_stress: %.17g", sg->d_shear, sg->mean_stress);
+        break;
+    case GB_STAGE_HOST_DISPLACEMENT:
+    case GB_STAGE_HOST_LOAD:
+        fprintf(f, ", increments: {");
+        for (int q = 0; q < sg->n_host_groups; q++)
+            fprintf(f, "%s%s: [%.17g, %.17g]", q ? ", " : "", sg->host_group[q], sg->host_increment[q][0],
+                    sg->host_increment[q][1]);
+        fprintf(f, "}, remote_stress: [%.17g, %.17g, %.17g]", sg->host_remote_increment[0],
+                sg->host_remote_increment[1], sg->host_remote_increment[2]);
+        break;
+    default: break;
+    }
+    fprintf(f, ", reset_strain: %s}\n", sg->reset_strain ? "true" : "false");
+}
+
+void gb_run_record_settings(FILE *f, const gb_scene *sc)
+{
+    const gb_solver_settings *sv = &sc->solver;
+    fprintf(f, "settings:   # every setting as the run used it, defaults spelled out\n");
+    fprintf(f, "  units: {length: %s, force: %s}\n  materials:\n", sc->length_unit, sc->force_unit);
+    material(f, "grain_grain", &sc->grain_grain);
+    material(f, "grain_wall", &sc->grain_wall);
+    material(f, "grain_boundary", &sc->grain_boundary);
+    fprintf(f, "  grains: %d\n  body_force_per_area: [%.17g, %.17g]\n", sc->n_grains, sc->body_force_per_area[0],
+            sc->body_force_per_area[1]);
+    fprintf(f, "  solver:\n    method: %s\n", sv->method == GB_METHOD_GLOBAL ? "global" : "reference");
+    if (sv->method == GB_METHOD_GLOBAL)
+        fprintf(f, "    linear: %s\n    newton: %s\n    global_alpha: %.17g\n    max_move: %.17g\n",
+                sv->linear ? "umfpack" : "cholmod", sv->newton == GB_NEWTON_LINE_SEARCH ? "line_search" : "damped",
+                sv->global_alpha, sv->max_move);
+    if (sv->accuracy_relative > 0)
+        fprintf(f, "    accuracy: {relative: %.17g}%s\n", sv->accuracy_relative,
+                sv->accuracy_default ? "   # the default: the scene gives none" : "");
+    else
+        fprintf(f, "    accuracy: %.17g   # [%s]\n", sv->accuracy, sc->force_unit);
+    fprintf(f, "    alpha: %.17g\n    alpha1: %.17g\n    beta: %.17g\n    beta1: %.17g\n", sv->alpha, sv->alpha1,
+            sv->beta, sv->beta1);
+    fprintf(f, "    max_iterations: %ld\n    cutbacks: %d\n    history: %s\n", sv->max_iterations, sv->cutbacks,
+            sv->history ? "true" : "false");
+    fprintf(f, "  loading:\n");
+    for (int k = 0; k < sc->n_stages; k++) stage(f, &sc->stages[k]);
+    fprintf(f, "  output:\n    snapshot_every: %d\n    snapshot_steps: [", sc->snapshot_every);
+    for (int k = 0; k < sc->n_snapshot_steps; k++) fprintf(f, "%s%d", k ? ", " : "", sc->snapshot_steps[k]);
+    fprintf(f, "]\n    contacts_every: %d\n    measures_every: %d\n    checkpoint_every: %d\n"
+               "    checkpoint_minutes: %.17g\n",
+            sc->contacts_every, sc->measures_every, sc->checkpoint_every, sc->checkpoint_minutes);
+}
+
+void gb_run_record_machine(FILE *f)
+{
+    char model[256] = "unknown", line[512];
+    FILE *in = fopen("/proc/cpuinfo", "r");
+    while (in && fgets(line, sizeof line, in))
+        if (!strncmp(line, "model name", 10) && strchr(line, ':')) {
+            const char *v = strchr(line, ':') + 1;
+            while (*v == ' ' || *v == '\t') v++;
+            snprintf(model, sizeof model, "%.*s", (int)strcspn(v, "\n\""), v);
+            break;
+        }
+    if (in) fclose(in);
+    const char *blas = getenv("OPENBLAS_NUM_THREADS"), *omp = getenv("OMP_NUM_THREADS");
+    fprintf(f, "machine:\n  cpu: \"%s\"\n  cores: %ld   # online\n  memory_gb: %.1f\n", model,
+            sysconf(_SC_NPROCESSORS_ONLN), gb_memory_physical() / 1e9);
+    fprintf(f, "  blas_threads: \"%s\"   # OPENBLAS_NUM_THREADS; default: OpenBLAS's, one per core\n",
+            blas ? blas : "default");
+    fprintf(f, "  omp_threads: \"%s\"   # OMP_NUM_THREADS\n", omp ? omp : "default");
+}
+
+void gb_run_record_times(FILE *f, const gb_sim *sim, const gb_run_times *t)
+{
+    fprintf(f, "time:   # seconds of this process (after a resume: since it), by phase\n");
+    fprintf(f, "  total: %.3f\n  load_steps: %.3f   # the solver, contact detection included\n",
+            gb_clock_seconds() - t->started, t->steps);
+    if (sim) {
+        fprintf(f, "  contact_detection: %.3f\n", sim->detect_seconds);
+        if (sim->global) {
+            const gb_global_stats *g = gb_global_statistics(sim->global);
+            fprintf(f, "  assembly: %.3f\n  analysis: %.3f   # %ld symbolic analyses\n"
+                       "  factorisation: %.3f   # %ld factorisations\n  solve: %.3f\n",
+                    g->assemble, g->analyse, g->analyses, g->factorise, g->factorisations, g->solve);
+        }
+    }
+    fprintf(f, "  measures: %.3f   # localisation.csv, fields/\n  output: %.3f   # the other files, checkpoints\n",
+            t->measures, t->output);
+}

@@ -1,0 +1,25 @@
+/* What run_info.yaml records of a run beyond how it was started (docs/run-directory.md#run_infoyaml):
+ * every setting as the run used it, the machine, where the time went. */
+#ifndef GB_RUN_RECORD_H
+#define GB_RUN_RECORD_H
+
+#include <stdio.h>
+
+#include "gembem/gem.h"
+
+/* The times that the run directory's writer measures itself (seconds, this process). */
+typedef struct {
+    double started;   /* gb_clock_seconds() when the process opened the run directory */
+    double steps;     /* the load steps' wall time (steps.csv's seconds) */
+    double measures;  /* localisation.csv and fields/ (src/measure) */
+    double output;    /* every other file of the steps, the checkpoints and the final state */
+} gb_run_times;
+
+/* settings: the scene's every setting, defaults spelled out. */
+void gb_run_record_settings(FILE *f, const gb_scene *sc);
+/* machine: CPU model and cores, memory, the BLAS's and OpenMP's threads. */
+void gb_run_record_machine(FILE *f);
+/* time: the split of this process's time by phase; sim may be NULL (no solver times). */
+void gb_run_record_times(FILE *f, const gb_sim *sim, const gb_run_times *t);
+
+#endif

@@ -1,0 +1,65 @@
+#!/usr/bin/env bash
+# solver.accuracy {relative: r} against the absolute accuracy it resolves to (issue 22 item 1): a
+# one-step run with {relative: 1e-4}, then the same scene with the accuracy that steps.csv says the
+# step was solved to (%.17g: exact); the two run directories must be equal byte for byte (steps.csv's
+# seconds and run_info.yaml aside). The step's force scale is checked too: the stage's load force
+# (stress x mean diameter) for the first step of the three discs, whose contacts touch within
+# rounding; the mean normal force of the start's contacts, recomputed here from the state file the
+# step starts from, for a shear step from a prepared state and for a host's relaxation.
+#   run_accuracy_relative.sh GEMBEM
+set -u
+gembem=$1
+root=$(cd "$(dirname "$0")/../.." && pwd)
+out=$(mktemp -d)
+trap 'rm -rf "$out"' EXIT
+fail=0
+ok() { echo "ok   $1"; }
+bad() { echo "FAIL $1"; fail=1; }
+col() { # col FILE NAME ROW: the value of column NAME in data row ROW (0 = step 0)
+  awk -F, -v name="$2" -v row="$3" 'NR == 1 { for (k = 1; k <= NF; k++) if ($k == name) c = k; next }
+                                    NR == row + 2 { print $c }' "$1"
+}
+# same NAME SCENE_WITH_RELATIVE: runs it, then with the resolved absolute accuracy, and compares
+same() {
+  local name=$1 scene=$2
+  "$gembem" run "$scene" -o "$out/$name.rel" --quiet || { bad "$name: the relative run failed"; return; }
+  local a; a=$(col "$out/$name.rel/steps.csv" accuracy 1)
+  sed "s/accuracy: {relative: 1e-4}/accuracy: $a/" "$scene" > "${scene%.yaml}.abs.yaml"
+  "$gembem" run "${scene%.yaml}.abs.yaml" -o "$out/$name.abs" --quiet || { bad "$name: the absolute run failed"; return; }
+  if diff -r -x run_info.yaml -x steps.csv -x scene.yaml -I "^# A scene starts from it" "$out/$name.rel" "$out/$name.abs" > "$out/diff" &&
+     cmp -s <(cut -d, -f1-11,13- "$out/$name.rel/steps.csv") <(cut -d, -f1-11,13- "$out/$name.abs/steps.csv"); then
+    ok "$name: {relative: 1e-4} resolved to a = $a; the absolute run with it is the same, bit for bit"
+  else
+    bad "$name: the relative and the absolute run differ"; head -5 "$out/diff"
+  fi
+}
+# scale NAME EXPECTED: step 1's force_scale against a value computed here, to 1e-12
+scale() {
+  local got; got=$(col "$out/$1.rel/steps.csv" force_scale 1)
+  /usr/bin/python3 -c "import sys; g, e = float('$got'), float('$2'); sys.exit(abs(g - e) > 1e-12 * e)" &&
+    ok "$1: force scale $got = $2" || bad "$1: force scale $got, expected $2"
+}
+
+# 1. The three discs' first step: isotropic 1.5e5 dyn/cm on discs of diameter 2 cm: 3e5 dyn.
+sed -e 's/  accuracy: 100 .*/  accuracy: {relative: 1e-4}/' -e 's/steps: 10}/steps: 1}/' -e '/shear_mean_stress/d' -e '/^output:/,$d' \
+  "$root/validation/three_discs/case1.yaml" > "$out/iso.yaml"
+same iso "$out/iso.yaml"
+scale iso 3e5
+# 2. A shear step from the prepared three discs: the scale is their mean normal force.
+"$gembem" run "$out/iso.abs.yaml" -o "$out/prep" --quiet || bad "the preparation failed"
+sed -e 's/  accuracy: 100 .*/  accuracy: {relative: 1e-4}/' -e 's/steps: 100,/steps: 1,/' -e '/isotropic:/d' \
+  -e '/^grains:/,/^box:/d' -e '/^output:/,$d' "$root/validation/three_discs/case1.yaml" > "$out/shear.yaml"
+echo "initial_state: $out/prep/state.yaml" >> "$out/shear.yaml"
+same shear "$out/shear.yaml"
+mean_pn() { /usr/bin/python3 -c "
+import csv; p = [float(r['pn']) for r in csv.DictReader(open('$1')) if float(r['overlap']) > 0]
+print(repr(sum(p) / len(p)))"; }
+scale shear "$(mean_pn "$out/prep/state_contacts.csv")"
+# 3. A host's 27 grains relaxed from their overlapping placement (global solver, the coupling): the
+# scale is the mean normal force of the placement's contacts, grains' and boundary particles'.
+sed -e "s|mesh: ../../meshes|mesh: $root/meshes|" -e 's/accuracy: 1.0e-9/accuracy: {relative: 1e-4}/' \
+  -e '/host_load/d' "$root/tests/hybrid/load_grains.yaml" > "$out/host.yaml"
+echo "output: {contacts_every: 1}" >> "$out/host.yaml"
+same host "$out/host.yaml"
+scale host "$(mean_pn "$out/host.rel/contacts/contacts_000000.csv")"
+exit $fail
