@@ -130,6 +130,21 @@ static gb_status check_force_scale(const gb_yaml_doc *doc, gb_ymap *top, const g
                         s->solver.accuracy_default ? "without solver.accuracy, the default" : "a");
 }
 
+/* A packing's relaxations stop at a force, fixed before the grains exist: a relative accuracy has
+ * no scale yet (its scale, the contacts' mean force, is what the packing makes). */
+static gb_status check_pack_accuracy(const gb_yaml_doc *doc, gb_ymap *top, const gb_scene *s, gb_error *err)
+{
+    if (!(s->solver.accuracy_relative > 0)) return GB_OK;
+    struct fy_node *v = NULL, *sv = NULL;
+    gb_ymap_find(top, "solver", 0, &sv, err);
+    if (sv) v = fy_node_mapping_lookup_by_string(sv, "accuracy", FY_NT);
+    return gb_yaml_fail(doc, v ? v : sv ? sv : top->node, err,
+                        "solver.accuracy: %s; a pack scene needs an absolute accuracy (a force, e.g. 1e-6 times kn "
+                        "times the mean radius: %g x the mean radius here), since the force scale of a relative one "
+                        "is the contact forces that the packing makes",
+                        s->solver.accuracy_default ? "missing" : "a relative accuracy", 1e-6 * s->grain_grain.kn);
+}
+
 static gb_status read_solver(gb_ymap *top, gb_solver_settings *sv, gb_error *err)
 {
     gb_ymap m;
@@ -509,7 +524,7 @@ static gb_status load(const gb_yaml_doc *doc, gb_scene *s, gb_bem_mesh *mesh, gb
                                                   "'host_displacement' or 'host_load'", k);
     }
     if ((st = gb_ymap_close(&top, err))) return st;
-    if (read_pack) return GB_OK;
+    if (read_pack) return check_pack_accuracy(doc, &top, s, err);
     if ((st = gb_scene_admit(s, s->host.present ? mesh : NULL, err))) return st;
     return check_force_scale(doc, &top, s, err);
 }
