@@ -15,8 +15,12 @@ import snakemake
 from snakemake.common import Mode
 from snakemake.exceptions import WorkflowError
 
+import re
+
+# A case wildcard matches the study's case names only (a study may add rules of its own for
+# other directories).
 wildcard_constraints:
-    case="[^/]+"
+    case="|".join(re.escape(n) for n in study.names())
 
 # Snakemake 7.21 runs a local `run:` job in a Snakemake process of its own, which does not see
 # --forcerun/--force/--forceall: a forced job would silently not run. In threads it does.

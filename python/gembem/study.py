@@ -55,7 +55,8 @@ class Study:
     scene_inputs: the files the scenes are made from (a base scene): a change re-runs every case.
     pack(case, case_dir): writes the case's packing, case_dir/``pack_output``; it depends on the
       columns ``pack_keys`` only (a change of another column keeps the packing).
-    measure(Run) -> dict of numbers, for a completed run (default: steps_measures).
+    measure(Run) -> dict of numbers, for a run whose status is in ``measured`` (default: completed
+      runs; a study whose stopped runs mean something adds "not converged"); default steps_measures.
     retries: attempts after the first for a run that fails otherwise than by FINAL (a killed run
       resumes from its checkpoint). threads: per run (OpenBLAS's). resources: the engine's per run
       (runtime in minutes, times the attempt; mem_mb), for a cluster's scheduler.
@@ -67,6 +68,7 @@ class Study:
     pack_keys: tuple = ()
     pack_output: str = "grains.csv"
     measure: object = steps_measures
+    measured: tuple = ("completed",)
     retries: int = 2
     threads: int = 1
     resources: dict = field(default_factory=lambda: {"runtime": 60, "mem_mb": 2000})
@@ -138,7 +140,7 @@ class Study:
         """The case's status and, for a completed run, its measures, written to out."""
         status = read_yaml(status_path)
         doc = dict(status)
-        if status["status"] == "completed":
+        if status["status"] in self.measured:
             r = Run(os.path.join(os.path.dirname(status_path), status["run"]))
             doc["measures"] = {k: _plain(v) for k, v in self.measure(r).items()}
         _write_yaml(out, doc)
