@@ -137,7 +137,7 @@ class Study:
         return status
 
     def measure_case(self, status_path, out):
-        """The case's status and, for a completed run, its measures, written to out."""
+        """The case's status and, for a run whose status is measured, its measures, written to out."""
         status = read_yaml(status_path)
         doc = dict(status)
         if status["status"] in self.measured:
