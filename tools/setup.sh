@@ -2,7 +2,7 @@
 # Installs gembem's build and run dependencies, all Debian 12 packages, by name.
 set -euo pipefail
 packages=(build-essential cmake pkg-config libsuitesparse-dev libopenblas-dev liblapacke-dev
-          gmsh libgmsh-dev libfyaml-dev libqhull-dev python3-matplotlib python3-numpy python3-scipy python3-yaml valgrind)
+          gmsh libgmsh-dev libfyaml-dev libqhull-dev python3-matplotlib python3-numpy python3-scipy python3-yaml snakemake valgrind)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

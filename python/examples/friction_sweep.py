@@ -5,9 +5,8 @@
 
 Kishino (1989) Fig. 7: case 1's three discs, 25 deg of friction between the discs and phi'
 against the walls. Instead of one hand-made YAML file per angle (validation/three_discs/
-friction_wall*.yaml) or a scene template filled in by sed (validation/biaxial122/run.sh), the
-validated scene is loaded once, one value changed per case, each case run by gembem and read
-back. Writes OUT_DIR/<angle>.yaml and OUT_DIR/<angle>/ (the runs), OUT_DIR/friction_sweep.png
+friction_wall*.yaml), the validated scene is loaded once, one value changed per case, each case
+run by gembem and read back (as a Snakemake study: studies/examples/three_discs). Writes OUT_DIR/<angle>.yaml and OUT_DIR/<angle>/ (the runs), OUT_DIR/friction_sweep.png
 (stress ratio against shear strain, the rigid frictionless solution dashed) and prints the
 stress ratio at e1 - e2 = 1..5 %. With --jobs N, N cases run at once (threads: each waits on its
 own gembem process), their progress lines left out.

@@ -29,7 +29,8 @@ def read_yaml(path):
         raise ValueError(f"{path}: not YAML: {e}") from None
 
 
-def dump_yaml(data):
-    """YAML text of plain Python objects, maps in their order, short maps and lists on one line;
-    floats written by repr, the shortest text that reads back to the same double."""
-    return yaml.safe_dump(data, sort_keys=False, default_flow_style=None, width=100)
+def dump_yaml(data, block=False):
+    """YAML text of plain Python objects, maps in their order, short maps and lists on one line
+    (block: one line per key); floats written by repr, the shortest text that reads back to the
+    same double."""
+    return yaml.safe_dump(data, sort_keys=False, default_flow_style=False if block else None, width=100)

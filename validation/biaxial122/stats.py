@@ -2,7 +2,9 @@
 """Statistics of several 122-disc biaxial runs next to Kishino (1989): peak s1/s2, shear strain at
 the peak, volumetric response, largest energy-balance error.
 
-usage: stats.py RUNDIR ...
+usage: stats.py RUNDIR ...            the table of those runs
+       stats.py --results results.csv the table of the workflow's aggregated measures (Snakefile)
+The workflow measures each run with measures() and gathers them in results.csv.
 """
 import csv
 import math
@@ -12,35 +14,67 @@ import sys
 
 from biaxial import Run
 
+HEAD = ("| run | porosity at shear start | peak s1/s2 | e1-e2 at peak [%] | ev at peak [%] | ev at 5 % [%] | "
+        "paper's balance: max \\|W-D-dE\\|/W in shear | iteration's books: max \\|W_it-D-L-dE\\|/W_it | "
+        "iterations per shear step | seconds |\n|---|---|---|---|---|---|---|---|---|---|")
+KEYS = ("porosity", "peak_ratio", "peak_strain", "ev_peak", "ev_end", "balance", "books", "iterations", "seconds")
+PAPER = "| Kishino (1989) | 0.260 (initial) | about 1.7 | about 1.8 | | dilatant | a few % | | | |"
+
+
+def measures(d):
+    """One run's numbers: the shear stage's peak, volumetric strains, energy balances, cost."""
+    r = Run(d)
+    pk = r.steps[r.peak_step]
+    with open(os.path.join(d, "contacts", f"grains_{r.shear_start:06d}.csv")) as f:
+        solid = sum(math.pi * float(g["r"]) ** 2 for g in csv.DictReader(f))
+    return {
+        "porosity": 1 - solid / (float(r.shear[0]["width"]) * float(r.shear[0]["height"])),
+        "peak_ratio": Run.principal_ratio(pk),
+        "peak_strain": r.shear_strain(pk),
+        "ev_peak": r.shear_ev(pk),
+        "ev_end": r.shear_ev(r.shear[-1]),
+        "balance": max(abs(r.balance_from_shear_start(int(s["step"]))[0]) for s in r.shear[1:]),
+        "books": max(abs(float(m["balance_iter"])) / (float(m["work_walls_iter"]) + float(m["work_body"]))
+                     for m in r.micro[1:]),
+        "iterations": statistics.mean(int(s["iterations"]) for s in r.shear[1:]),
+        "seconds": sum(float(s["seconds"]) for s in r.steps),
+    }
+
+
+def table(rows):
+    """The markdown table: rows of (label, measures or a status string for a run that is missing)."""
+    out = [HEAD]
+    done = [m for _, m in rows if isinstance(m, dict)]
+    for label, m in rows:
+        if not isinstance(m, dict):
+            out.append(f"| {label} | {m} | | | | | | | | |")
+            continue
+        out.append(f"| {label} | {m['porosity']:.3f} | {m['peak_ratio']:.3f} | {m['peak_strain']:.2f} | "
+                   f"{m['ev_peak']:.2f} | {m['ev_end']:.2f} | {100 * m['balance']:.1f} % | "
+                   f"{100 * m['books']:.2f} % | {m['iterations']:.0f} | {m['seconds']:.1f} |")
+    if len(done) > 1:
+        f = lambda k: f"{statistics.mean(m[k] for m in done):.3f} +- {statistics.stdev(m[k] for m in done):.3f}"
+        worst = lambda k: max(m[k] for m in done)
+        out.append(f"| mean +- sd | | {f('peak_ratio')} | {f('peak_strain')} | {f('ev_peak')} | {f('ev_end')} | "
+                   f"{100 * worst('balance'):.1f} % (max) | {100 * worst('books'):.2f} % (max) | | |")
+    out.append(PAPER)
+    return "\n".join(out)
+
+
+def results_rows(path):
+    """(label, measures or status) per case of the workflow's results.csv."""
+    import gembem   # the workflow's reader (PYTHONPATH=python)
+    t = gembem.read_csv(path)
+    return [(str(t["case"][i]), {k: float(t[k][i]) for k in KEYS} if t["status"][i] == "completed"
+             else str(t["status"][i])) for i in range(t.nrows)]
+
 
 def main():
-    rows = []
-    print("| run | porosity at shear start | peak s1/s2 | e1-e2 at peak [%] | ev at peak [%] | ev at 5 % [%] | "
-          "paper's balance: max \\|W-D-dE\\|/W in shear | iteration's books: max \\|W_it-D-L-dE\\|/W_it | "
-          "iterations per shear step | seconds |")
-    print("|---|---|---|---|---|---|---|---|---|---|")
-    for d in sys.argv[1:]:
-        r = Run(d)
-        pk = r.steps[r.peak_step]
-        ev_pk = r.shear_ev(pk)
-        ev_end = r.shear_ev(r.shear[-1])
-        bal = max(abs(r.balance_from_shear_start(int(s["step"]))[0]) for s in r.shear[1:])
-        books = max(abs(float(m["balance_iter"])) / (float(m["work_walls_iter"]) + float(m["work_body"]))
-                    for m in r.micro[1:])
-        it = statistics.mean(int(s["iterations"]) for s in r.shear[1:])
-        secs = sum(float(s["seconds"]) for s in r.steps)
-        area = float(r.shear[0]["width"]) * float(r.shear[0]["height"])
-        with open(os.path.join(d, "contacts", f"grains_{r.shear_start:06d}.csv")) as f:
-            solid = sum(math.pi * float(g["r"]) ** 2 for g in csv.DictReader(f))
-        por = 1 - solid / area
-        rows.append((Run.principal_ratio(pk), r.shear_strain(pk), ev_pk, ev_end, bal, books))
-        print(f"| {d.split('/')[-2]} | {por:.3f} | {Run.principal_ratio(pk):.3f} | {r.shear_strain(pk):.2f} | {ev_pk:.2f} | "
-              f"{ev_end:.2f} | {100 * bal:.1f} % | {100 * books:.2f} % | {it:.0f} | {secs:.1f} |")
-    if len(rows) > 1:
-        cols = list(zip(*rows))
-        f = lambda v: f"{statistics.mean(v):.3f} +- {statistics.stdev(v):.3f}"
-        print(f"| mean +- sd | | {f(cols[0])} | {f(cols[1])} | {f(cols[2])} | {f(cols[3])} | {100 * max(cols[4]):.1f} % (max) | {100 * max(cols[5]):.2f} % (max) | | |")
-    print("| Kishino (1989) | 0.260 (initial) | about 1.7 | about 1.8 | | dilatant | a few % | | | |")
+    if sys.argv[1:2] == ["--results"]:
+        rows = results_rows(sys.argv[2])
+    else:
+        rows = [(d.rstrip("/").split("/")[-2], measures(d)) for d in sys.argv[1:]]
+    print(table(rows))
 
 
 if __name__ == "__main__":

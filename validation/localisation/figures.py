@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Figures and the sweep table of the localisation study, from runs/localisation (run_study.sh).
+"""Figures and the sweep table of the localisation study, from runs/localisation (Snakefile).
 
   strain_maps.png       the base case at chosen steps: grains' accumulated shear strain since the
                         top started to move (triangles on the centres), the host's shear strain on
@@ -24,6 +24,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+import yaml  # noqa: E402
 from matplotlib.collections import PatchCollection  # noqa: E402
 from matplotlib.patches import Circle  # noqa: E402
 import matplotlib.tri as mtri  # noqa: E402
@@ -52,6 +53,17 @@ def read_csv(path):
     return out
 
 
+def status_line(case_dir, name):
+    """How a run ended, as 'NAME exit RC SECONDS s MESSAGE': from the workflow's NAME.yaml
+    (Snakefile), or the NAME.txt of the former run_study.sh; None if it did not run."""
+    y, t = os.path.join(case_dir, name + ".yaml"), os.path.join(case_dir, name + ".txt")
+    if os.path.exists(y):
+        with open(y) as f:
+            d = yaml.safe_load(f)
+        return f"{d['case']} exit {d['exit']} {d['seconds']:.0f} s {d['message']}" if "exit" in d else None
+    return open(t).read().strip() if os.path.exists(t) else None
+
+
 class Case:
     def __init__(self, name, phi, friction, kn):
         self.name, self.phi, self.friction, self.kn = name, phi, friction, kn
@@ -59,10 +71,9 @@ class Case:
         # The attempts: the run, and if it stopped, the one with the top's steps halved; the one
         # that converged (the first), else the one that got further.
         attempts = []
-        for run, status, refine in [("run", "status.txt", 1), ("run_refine2", "status_refine2.txt", 2)]:
-            rp, sp = os.path.join(self.dir, run), os.path.join(self.dir, status)
-            if os.path.exists(os.path.join(rp, "localisation.csv")) and os.path.exists(sp):
-                st = open(sp).read().strip()
+        for run, status, refine in [("run", "status", 1), ("run_refine2", "status_refine2", 2)]:
+            rp, st = os.path.join(self.dir, run), status_line(self.dir, status)
+            if os.path.exists(os.path.join(rp, "localisation.csv")) and st:
                 hs = read_csv(os.path.join(rp, "host_steps.csv"))
                 attempts.append((rp, st, refine, -hs["uy"][hs["group"] == "top"][-1]))
         self.attempts = attempts

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The localisation study's cases and scenes (used by run_study.sh and figures.py).
+"""The localisation study's cases and scenes (used by the Snakefile, run_continued.py and figures.py).
 
 A 10 x 10 cm elastic square (meshes/square_cavity_sides.geo: 16 elements a side, 64 on the cavity
 of radius 2.5 cm; shear modulus G = 95000 kgf/cm^2, Poisson 0.1, plane strain) in biaxial
