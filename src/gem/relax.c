@@ -342,22 +342,31 @@ static gb_status global_move(gb_sim *sim, const gb_wall_control *wc, double wall
     }
 }
 
+/* NaN propagates: a force that became NaN is the largest (gb_gem_iterate stops on it). */
+static double nan_max(double a, double b) { return a > b || a != a ? a : b; }
+
+double gb_gem_largest_grain_force2(const gb_sim *sim)
+{
+    double max2 = 0;
+    for (int i = 0; i < sim->n; i++) max2 = nan_max(gb_gem_force2(sim, i), max2);
+    return max2;
+}
+
+double gb_gem_largest_particle_force2(const gb_sim *sim)
+{
+    double max2 = 0;
+    for (int k = 0; k < sim->bp.n && !sim->scene->host.rigid; k++)
+        max2 = nan_max(sim->bp_F[2 * k] * sim->bp_F[2 * k] + sim->bp_F[2 * k + 1] * sim->bp_F[2 * k + 1], max2);
+    return max2;
+}
+
 int gb_gem_iterate(gb_sim *sim, const gb_wall_control *wc, double *max_force, double *wall_residual,
                    gb_error *err, gb_status *st)
 {
     *st = GB_OK;
     gb_gem_forces(sim);
-    double max2 = 0;
-    for (int i = 0; i < sim->n; i++) {
-        const double *F = &sim->F[3 * i];
-        double f2 = F[0] * F[0] + F[1] * F[1] + F[2] * F[2];
-        if (f2 > max2 || f2 != f2) max2 = f2;
-    }
-    for (int k = 0; k < sim->bp.n && !sim->scene->host.rigid; k++) {
-        double f2 = sim->bp_F[2 * k] * sim->bp_F[2 * k] + sim->bp_F[2 * k + 1] * sim->bp_F[2 * k + 1];
-        if (f2 > max2 || f2 != f2) max2 = f2;
-    }
-    *max_force = sqrt(max2);
+    double g2 = gb_gem_largest_grain_force2(sim), p2 = gb_gem_largest_particle_force2(sim);
+    *max_force = sqrt(g2 != g2 || p2 > g2 ? p2 : g2);
     /* Energy absorbed by the fixing forces (the "hand" that holds each grain) over a move, by the
      * trapezoid rule: the springs' energy changes by sum (F + B).dX + walls' work - dissipation,
      * so -sum F.dX is what the quasi-static iteration loses where a dynamic system would damp. */

@@ -167,6 +167,11 @@ gb_status gb_sim_state_save(const gb_sim *sim, gb_sim_state *st, gb_error *err);
 void gb_sim_state_restore(gb_sim *sim, const gb_sim_state *st);
 void gb_sim_state_free(gb_sim_state *st);
 
+/* The largest squared fixing force of a grain, and of a boundary particle (0 without a host or
+ * with a rigid one); NaN if one is NaN. */
+double gb_gem_largest_grain_force2(const gb_sim *sim);
+double gb_gem_largest_particle_force2(const gb_sim *sim);
+
 /* One iteration of the reference method (K section 2.5, Fig. 1): F and S of every grain, then,
  * unless converged, the simultaneous moves of grains and walls and the contact update.
  * Returns 1 when converged (every |F| <= a and the walls at their targets), 0 otherwise. */

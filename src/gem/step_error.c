@@ -7,25 +7,16 @@
 void gb_sim_step_error(gb_sim *sim, gb_step_report *r)
 {
     gb_gem_forces(sim);
-    double max2 = 0;
     int carrying = 0;
     long contacts = 0;
-    for (int i = 0; i < sim->n; i++) {
-        double f2 = gb_gem_force2(sim, i);
-        if (f2 > max2) max2 = f2;
+    for (int i = 0; i < sim->n; i++)
         /* a rattler (fewer than two contacts) carries no load of the packing's */
         if (sim->nc[i] >= 2) carrying++, contacts += sim->nc[i];
-    }
-    r->max_fixing_force = sqrt(max2);
+    r->max_fixing_force = sqrt(gb_gem_largest_grain_force2(sim));
     r->rattlers = sim->n - carrying;
     r->coordination = carrying ? (double)contacts / carrying : 0;
     r->max_particle_force = NAN;
-    if (sim->host && !sim->scene->host.rigid) {
-        max2 = 0;
-        for (int k = 0; k < sim->bp.n; k++)
-            max2 = fmax(max2, sim->bp_F[2 * k] * sim->bp_F[2 * k] + sim->bp_F[2 * k + 1] * sim->bp_F[2 * k + 1]);
-        r->max_particle_force = sqrt(max2);
-    }
+    if (sim->host && !sim->scene->host.rigid) r->max_particle_force = sqrt(gb_gem_largest_particle_force2(sim));
     r->coulomb_excess = NAN;
     for (int k = 0; k < sim->pairs.n; k++) {
         const gb_pair *p = &sim->pairs.p[k];
