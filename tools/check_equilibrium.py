@@ -16,7 +16,10 @@ sum of pt. It checks:
   - every stored contact is an overlap at the stored positions, with its stored pn = kn d to S
     (both beyond the rounding of an overlap computed from the coordinates, kn 1e3 eps |x|max),
     and every overlap found is a stored contact (an overlap with no stored contact carries pt = 0).
-Prints the largest values and exits 0 when all hold, 1 when one fails, 2 on unusable input.
+Prints the largest values, then a second line describing the state (grain-grain and grain-wall
+contacts found, and in a box the walls' stresses s1 = vertical, s2 = horizontal: the walls'
+normal forces over twice the side, compression positive, dyn/cm for cgs scenes, K section 4.1),
+and exits 0 when all hold, 1 when one fails, 2 on unusable input.
 Host scenes (boundary particles) are refused: their forces need the host's stiffness.
 """
 import argparse
@@ -167,6 +170,17 @@ def main():
         problems.append(f"a tangential force exceeds its Coulomb cap by {worst_coulomb:.3g} of the cap")
     if worst_pn > a.slack:
         problems.append(f"a stored normal force differs from kn d by {worst_pn:.3g} (relative)")
+    gg_found = sum(1 for key in found if not isinstance(key[1], str))
+    line = f"  state: {gg_found} grain-grain contacts, {len(found) - gg_found} grain-wall contacts"
+    if box:
+        wall = {w: 0.0 for w in WALLS}
+        for key, (d, _) in found.items():
+            if isinstance(key[1], str):
+                wall[key[1]] += gw["kn"] * d
+        width, height = box["right"] - box["left"], box["top"] - box["bottom"]
+        line += (f"; wall stresses s1 {(wall['bottom'] + wall['top']) / (2 * width):.6g}, "
+                 f"s2 {(wall['left'] + wall['right']) / (2 * height):.6g}")
+    print(line)
     for p in problems[:10]:
         print(f"  FAIL {p}")
     return 1 if problems else 0

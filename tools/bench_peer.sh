@@ -1,0 +1,241 @@
+#!/usr/bin/env bash
+# Peer benchmark against LAMMPS (issue 15, item 1; a benchmark, not a test): for each N, the
+# packing of tools/bench_solver.sh (tools/solver_packing.sh: gb_packgen --method push, porosity
+# 0.18, overlaps <= 0.015 r_min, seed 1; cached in runs/bench_peer/nN), relaxed with 25 deg
+# between discs, walls fixed and frictionless, kn = 1e8, kt = 7e7 dyn/cm, to every disc's largest
+# fixing force <= 100 dyn:
+#   - by LAMMPS (Debian's `lammps`: explicit DEM, one process, serial; input written by
+#     tools/lammps_peer.py, which documents the model line by line);
+#   - by gembem: the global solver with `newton: line_search` + UMFPACK, the damped global solver
+#     with CHOLMOD, and (N <= REF_MAX_N, default 10000) the reference iteration.
+# Every final state, LAMMPS's too, is checked by tools/check_equilibrium.py: it recomputes every
+# disc's force and moment from the positions and the stored tangential forces (LAMMPS's, from
+# `compute pair/local p1 p2` with the velocities zeroed: no damping forces). Prints the machine
+# and one Markdown row per run; a run that fails is a row: the exit status is non-zero only for a
+# usage error or a set-up failure (LAMMPS not installable, the contact-law check failing).
+#
+#   [LAMMPS_DT=0.2] [LAMMPS_ZETA=0.5] [LAMMPS_TDAMP=1] [LAMMPS_VISCOUS=0.01]
+#   [LAMMPS_MAX_STEPS=20000000] [MAX_ITERATIONS=1000] [REF_MAX_ITERATIONS=1000000]
+#   [REF_MAX_N=10000] [RUNS="lammps line_search damped reference"] [SWEEP=1]
+#   tools/bench_peer.sh [BUILD_DIR] [N ...]        (default: build, 1000 10000 100000)
+#
+# Set-up (this script's own; tools/setup.sh and the tests do not need LAMMPS): `lmp` and
+# /usr/bin/time are installed with apt-get (Debian packages `lammps`, `time`; sudo if not root)
+# when absent; then tools/lammps_peer.py lawcheck compares LAMMPS's gran/hooke/history on two
+# discs (pressed, slid, spun, slid beyond the cap) with gembem's law (docs/method.md K 3, 6, 13).
+#
+# LAMMPS's parameters (tools/lammps_peer.py input): time step dt = LAMMPS_DT sqrt(m_min / kn)
+# (masses rho pi r^2, rho = 2.65 g/cm^3: they only set the dynamics); normal contact damping
+# LAMMPS_ZETA of critical for two of the smallest discs, tangential contact damping (dampflag
+# LAMMPS_TDAMP) gammat = gamman / 2; global drag (fix viscous, proportional to each disc's mass)
+# -LAMMPS_VISCOUS sqrt(kn / m_min) m v. The run stops when a `fix halt` heuristic (every disc's
+# force as integrated, drag added back, below 100 dyn, checked every 50 steps) fires; then the
+# velocities and spins are zeroed, the static forces evaluated (`run 0`), and the run goes on if
+# a disc's is still above 100 dyn (the zeroing counts as part of LAMMPS's method; it helps).
+#
+# The damping sweep (SWEEP=1 tools/bench_peer.sh build 1000 runs it: LAMMPS only, the grid
+# SWEEP_DT x SWEEP_ZETA x SWEEP_TDAMP x SWEEP_VISCOUS, one row each, time steps to the static
+# criterion and seconds): 2026-11-24 at N = 1 000, steps (one run each; the relaxation path is
+# chaotic, so neighbouring settings scatter by about 2x):
+#   dt 0.2, tangential damping on; viscous (columns) 0 / 0.003 / 0.01 / 0.02 / 0.05, zeta_n (rows):
+#     zeta_n 0    : >400 000 (7 644 dyn left) / 191 300 / 66 000 / 41 950 / 13 550
+#     zeta_n 0.1  :  19 750 /  8 600 /  7 600 /  8 500 / 24 150
+#     zeta_n 0.3  :   9 800 /  7 050 /  5 350 /  8 050 /  8 850
+#     zeta_n 0.5  :   9 900 /  6 100 /  4 050 /  7 100 / 13 850
+#     zeta_n 1.0  :  12 500 / 11 800 / 20 950 / 25 100 / 28 000
+#   around the best (zeta_n 0.5, viscous 0.01): dt 0.1: 7 750 steps; dt 0.3: diverges (48 439 dyn
+#   after 400 000 steps: the contact damping shortens the stable step), dt 0.3 with zeta_n 0.3:
+#   4 150; tangential damping off: 4 500 (zeta_n 0.5), 6 200 (0.3).
+# Chosen (the defaults): dt 0.2 (the largest step of the range 0.1-0.2 that is stable for every
+# damping of the sweep), zeta_n 0.5, tangential damping on, viscous 0.01: 4 050 steps. The best
+# global drag should fall as the packing grows (its slowest mode's frequency falls as 1 / width):
+# the defaults are tuned at 1e3. At 1e4 (zeta_n 0.5): viscous 0.003 10 900 steps, 0.01 5 550, 0.05
+# 102 200; but the fast settings unjam the 1e4 packing (398 contacts and 1.4 dyn/cm left at 0.01,
+# against gembem's 15 000 and 1.5-3.7e3 dyn/cm): see docs/benchmarks.md, "Against LAMMPS".
+#
+# Columns: N; code and solver; status (gembem's exit status, or LAMMPS's static check, then the
+# independent check); gembem's iterations or LAMMPS's time steps; wall seconds and peak resident
+# memory of the process (/usr/bin/time, -f "%e %M"; LAMMPS's include its MPI start-up, about
+# 30 MB); the largest fixing force by tools/check_equilibrium.py; LAMMPS's seconds over this row's
+# (only for runs whose final state passed the check); the final state's grain-grain contacts and
+# wall stresses s1 (vertical), s2 (horizontal), by the checker: the codes reach different
+# equilibria (friction makes the end state depend on the path), and these show how different.
+set -uo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+usage() { echo "usage: [LAMMPS_DT=..] [LAMMPS_ZETA=..] [LAMMPS_TDAMP=0|1] [LAMMPS_VISCOUS=..] [RUNS=\"lammps line_search damped reference\"] [SWEEP=1] tools/bench_peer.sh [BUILD_DIR] [N ...]" >&2; exit 2; }
+build=${1:-build}; shift || true
+case $build in /*) ;; *) build=$root/$build;; esac
+sizes=${*:-1000 10000 100000}
+for n in $sizes; do
+  [[ $n =~ ^[1-9][0-9]*$ ]] || { echo "bench_peer.sh: N must be a positive integer, got '$n'" >&2; usage; }
+done
+for exe in gembem gb_packgen; do
+  [ -x "$build/$exe" ] || { echo "bench_peer.sh: $build/$exe not found: build first" >&2; usage; }
+done
+LAMMPS_DT=${LAMMPS_DT:-0.2} LAMMPS_ZETA=${LAMMPS_ZETA:-0.5} LAMMPS_TDAMP=${LAMMPS_TDAMP:-1}
+LAMMPS_VISCOUS=${LAMMPS_VISCOUS:-0.01} LAMMPS_MAX_STEPS=${LAMMPS_MAX_STEPS:-20000000}
+REF_MAX_N=${REF_MAX_N:-10000} RUNS=${RUNS:-lammps line_search damped reference}
+export MAX_ITERATIONS=${MAX_ITERATIONS:-1000} REF_MAX_ITERATIONS=${REF_MAX_ITERATIONS:-1000000}
+export OPENBLAS_NUM_THREADS=${OPENBLAS_NUM_THREADS:-1} OMP_NUM_THREADS=${OMP_NUM_THREADS:-1}
+py=/usr/bin/python3
+
+# Set-up: LAMMPS and GNU time from Debian, if absent.
+need=()
+command -v lmp > /dev/null || need+=(lammps)
+[ -x /usr/bin/time ] || need+=(time)
+if [ ${#need[@]} -gt 0 ]; then
+  sudo=""; [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  echo "bench_peer.sh: installing ${need[*]} (apt-get)" >&2
+  { $sudo apt-get update -qq && DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${need[@]}"; } >&2 ||
+    { echo "bench_peer.sh: could not install ${need[*]}" >&2; exit 1; }
+fi
+timer=/usr/bin/time
+top=$root/runs/bench_peer
+mkdir -p "$top"
+lmp_version=$(lmp -h 2>/dev/null | sed -n 's/^Large-scale Atomic\/Molecular Massively Parallel Simulator - \(.*\)$/\1/p' | head -1)
+
+# The contact law, once: LAMMPS's gran/hooke/history against gembem's on two discs.
+if ! law=$($py "$root/tools/lammps_peer.py" lawcheck "$top/lawcheck" 2>&1); then
+  echo "$law" >&2
+  echo "bench_peer.sh: LAMMPS's contact law does not match gembem's (see above): no benchmark" >&2
+  exit 1
+fi
+
+echo "machine: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), $(nproc --all) cores, $(free -g | awk '/Mem:/ {print $2}') GiB; $(date -u '+%Y-%m-%d %H:%M UTC'); load average $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "threads: OPENBLAS_NUM_THREADS=$OPENBLAS_NUM_THREADS, OMP_NUM_THREADS=$OMP_NUM_THREADS; LAMMPS serial (one process, no mpirun)"
+echo "gembem $(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo '?'); LAMMPS ${lmp_version:-?} (Debian $(dpkg-query -W -f='${Version}' lammps 2>/dev/null || echo '?'))"
+echo "LAMMPS: dt $LAMMPS_DT sqrt(m_min/kn), zeta_n $LAMMPS_ZETA, tangential damping $LAMMPS_TDAMP, viscous $LAMMPS_VISCOUS sqrt(kn/m_min) m; contact law check: $(echo "$law" | tail -1)"
+echo "problem: 25 deg between discs, frictionless fixed walls, kn 1e8, kt 7e7 dyn/cm; static criterion: every disc's largest fixing force <= 100 dyn (tools/check_equilibrium.py)"
+echo
+
+# timed OUT_PREFIX DIR CMD...: CMD in DIR under /usr/bin/time; OUT_PREFIX.time gets "s KB",
+# OUT_PREFIX.log stderr; returns CMD's exit status.
+timed() {
+  local out=$1 dir=$2; shift 2
+  (cd "$dir" && "$timer" -f "%e %M" -o "$out.time" "$@" > "$out.out" 2> "$out.log")
+}
+# secs_mb OUT_PREFIX: "seconds megabytes" from the timing file
+secs_mb() { grep -v status "$1.time" | tail -1 | awk '{ printf "%s %.0f", $1, $2 / 1024 }'; }
+# check DIR: the independent checker; sets chk (passed / FAILED ...) and force
+check() {
+  local out
+  out=$($py "$root/tools/check_equilibrium.py" "$1" 2>&1)
+  local code=$?
+  force=$(echo "$out" | sed -n 's/.*largest fixing force \([0-9.eE+-]*\) dyn.*/\1/p' | head -1)
+  force=${force:--}
+  contacts=$(echo "$out" | sed -n 's/^  state: \([0-9]*\) grain-grain contacts.*/\1/p')
+  stress=$(echo "$out" | sed -n 's/.*wall stresses s1 \([0-9.eE+-]*\), s2 \([0-9.eE+-]*\).*/\1, \2/p')
+  case $code in
+    0) chk="check passed";;
+    1) chk="check FAILED: $(echo "$out" | grep -m1 FAIL | sed 's/^ *FAIL //' | tr '|' '/' | cut -c1-100)";;
+    *) chk="check not run: $(echo "$out" | tail -1 | tr '|' '/' | cut -c1-100)";;
+  esac
+}
+
+# lammps_run N DIR: writes the input, runs lmp, converts and checks the final state; sets
+# lmp_status, lmp_steps, lmp_secs, lmp_mb, lmp_force, lmp_ok.
+lammps_run() {
+  local n=$1 d=$2 code
+  rm -rf "$d"; mkdir -p "$d"
+  $py "$root/tools/lammps_peer.py" input "$top/n$n/packing.csv" "$top/n$n/packing.box.yaml" "$d" \
+    --dt-factor "$3" --zeta-n "$4" --tangential-damping "$5" --viscous "$6" \
+    --max-steps "$LAMMPS_MAX_STEPS" > /dev/null
+  timed "$d/lmp" "$d" lmp -nocite -in in.relax -log log.lammps -screen none
+  code=$?
+  read -r lmp_secs lmp_mb < <(secs_mb "$d/lmp")
+  lmp_ok=0 lmp_steps="" lmp_force=- lmp_contacts="" lmp_stress=""
+  if [ $code != 0 ]; then
+    lmp_status="exit $code: $(grep -m1 ERROR "$d/log.lammps" 2>/dev/null | tr '|' '/' | cut -c1-120)"
+    return
+  fi
+  local last
+  last=$(sed -n 's/^final: step \([0-9]*\) largest force \([0-9.eE+-]*\) dyn.*/\1 \2/p' "$d/log.lammps" | tail -1)
+  lmp_steps=${last%% *}
+  local quench
+  quench=$(grep -c '^static check' "$d/log.lammps")
+  if awk -v f="${last##* }" 'BEGIN { exit !(f <= 100) }'; then
+    lmp_status="static ($quench velocity zeroings)"
+  else
+    lmp_status="not static after $lmp_steps steps (${last##* } dyn)"
+  fi
+  if ! $py "$root/tools/lammps_peer.py" state "$d" > /dev/null 2> "$d/state.log"; then
+    lmp_status="$lmp_status; state not converted: $(tail -1 "$d/state.log" | cut -c1-100)"
+    return
+  fi
+  check "$d/state"
+  lmp_force=$force lmp_contacts=$contacts lmp_stress=$stress
+  lmp_status="$lmp_status, $chk"
+  [ "$chk" = "check passed" ] && [ "${lmp_status#static}" != "$lmp_status" ] && lmp_ok=1
+}
+
+for n in $sizes; do
+  d=$top/n$n
+  mkdir -p "$d"
+  if [ -s "$d/packing.csv" ] && [ -s "$d/packing.box.yaml" ]; then
+    echo "n = $n: cached packing $d/packing.csv" >&2
+  else
+    if ! KEEP=1 "$root/tools/solver_packing.sh" "$build" "$d" "$n" 1 > /dev/null 2> "$d/packing.log"; then
+      echo "| $n | packing | gb_packgen failed (see $d/packing.log) | | | | | | | |"
+      continue
+    fi
+    echo "n = $n: $(tail -1 "$d/packing.log" | cut -c1-200)" >&2
+  fi
+
+  if [ "${SWEEP:-0}" = 1 ]; then
+    echo "| N | dt factor | zeta_n | tangential damping | viscous | status | steps | wall s | largest force [dyn] | contacts | s1, s2 [dyn/cm] |"
+    echo "|---|---|---|---|---|---|---|---|---|---|---|"
+    for dt in ${SWEEP_DT:-0.2}; do for z in ${SWEEP_ZETA:-0 0.1 0.3 0.5 1.0}; do
+      for td in ${SWEEP_TDAMP:-1}; do for v in ${SWEEP_VISCOUS:-0 0.003 0.01 0.02 0.05}; do
+        LAMMPS_MAX_STEPS=${SWEEP_MAX_STEPS:-400000}
+        lammps_run "$n" "$d/sweep/dt$dt-z$z-t$td-v$v" "$dt" "$z" "$td" "$v"
+        echo "| $n | $dt | $z | $td | $v | $lmp_status | $lmp_steps | $lmp_secs | $lmp_force | $lmp_contacts | $lmp_stress |"
+      done; done
+    done; done
+    continue
+  fi
+
+  echo "| N | code / solver | status | iterations or steps | wall s | peak MB | final largest force, checker [dyn] | LAMMPS s / this s | contacts | s1, s2 [dyn/cm] |"
+  echo "|---|---|---|---|---|---|---|---|---|---|"
+  lmp_secs="" lmp_ok=0
+  if [[ " $RUNS " == *" lammps "* ]]; then
+    lammps_run "$n" "$d/lammps" "$LAMMPS_DT" "$LAMMPS_ZETA" "$LAMMPS_TDAMP" "$LAMMPS_VISCOUS"
+    echo "| $n | LAMMPS gran/hooke/history (explicit DEM) | $lmp_status | $lmp_steps | $lmp_secs | $lmp_mb | $lmp_force | 1 | $lmp_contacts | $lmp_stress |"
+  fi
+  for variant in line_search damped reference; do
+    [[ " $RUNS " == *" $variant "* ]] || continue
+    case $variant in
+      line_search) env=(SOLVER=global LINEAR=umfpack NEWTON=line_search) label="gembem global, newton line_search, UMFPACK" scene=relax_friction;;
+      damped) env=(SOLVER=global LINEAR=cholmod NEWTON=damped) label="gembem global, damped, CHOLMOD" scene=relax_friction;;
+      reference)
+        [ "$n" -le "$REF_MAX_N" ] || continue
+        env=(SOLVER=reference) label="gembem reference iteration" scene=relax_friction_reference;;
+    esac
+    v=$d/$variant
+    env "${env[@]}" PACKING="$d/packing.csv" "$root/tools/solver_packing.sh" "$build" "$v" "$n" 1 > /dev/null 2>&1 || {
+      echo "| $n | $label | tools/solver_packing.sh failed | | | | | | | |"; continue; }
+    timed "$v/$scene" "$v" "$build/gembem" run "$scene.yaml" -o "$scene" --overwrite --quiet
+    code=$?
+    read -r secs mb < <(secs_mb "$v/$scene")
+    if [ $code = 0 ]; then status=converged
+    else status="exit $code: $(grep -m1 . "$v/$scene.log" | sed 's/^gembem: //' | tr '|' '/' | cut -c1-120)"; fi
+    its=""
+    [ -s "$v/$scene/steps.csv" ] && its=$(awk -F, 'NR == 1 { for (k = 1; k <= NF; k++) c[$k] = k; next } $c["step"] > 0 { s += $c["iterations"] } END { print s + 0 }' "$v/$scene/steps.csv")
+    if [ $code != 0 ]; then # the failed step's iterations are not in steps.csv: its cap
+      cap=$(sed -n 's/.*did not converge in \([0-9]*\) iterations.*/\1/p' "$v/$scene.log" | head -1)
+      [ -z "$cap" ] || { its="$((its + cap)) (the cap reached)"; status="exit $code: not converged in $cap iterations"; }
+    fi
+    ratio=- force=- contacts="" stress=""
+    if [ -s "$v/$scene/state.yaml" ] && [ $code = 0 ]; then
+      check "$v/$scene"
+      status="$status, $chk"
+      [ "$chk" = "check passed" ] && [ "$lmp_ok" = 1 ] &&
+        ratio=$(awk -v a="$lmp_secs" -v b="$secs" 'BEGIN { printf "%.2f", a / b }')
+    else # not converged: gembem's own figure for its last iterate, not checked
+      force=$(sed -n 's/.*largest fixing force \([0-9.eE+-]*\),.*/\1/p' "$v/$scene.log" | head -1)
+      force=${force:+"$force (gembem's own, not checked)"}
+      force=${force:--}
+    fi
+    echo "| $n | $label | $status | $its | $secs | $mb | $force | $ratio | $contacts | $stress |"
+  done
+done
+exit 0
