@@ -161,7 +161,7 @@ typedef struct {
     int *grain_line, *grain_col; /* each grain's line and column there (messages) */
     double max_overlap;      /* grains.max_overlap: the admission's tolerance */
     gb_overlaps overlaps;    /* what the admission accepted */
-    char warning[512];       /* "" or what the command should say before running (also in run_info.yaml) */
+    char warning[2048];      /* "" or what the command should say before running (also in run_info.yaml) */
     int n_contacts;
     gb_contact_init *contacts;
     gb_box box;

@@ -7,6 +7,7 @@
 
 #include "core/clock.h"
 #include "gem/sim.h"
+#include "scene/admit.h"
 
 static void save_state(gb_sim *sim, gb_error *err, gb_status *st)
 {
@@ -210,21 +211,49 @@ gb_solver_work gb_sim_solver_work(const gb_sim *sim)
     return w;
 }
 
-/* The error of a failed step, naming it. */
+/* What to change after a step that did not converge. Forces within the round-off of the
+ * springs and coordinates (gb_scene_force_resolution) asks for a looser accuracy; otherwise the
+ * step was too large for the iterations it had: steps each the size of the finest sub-step tried
+ * (each of which may still be cut back as finely again), or more iterations. */
+static void failure_hint(const gb_sim *sim, const gb_stage *sg, double max_force, double residual, char *hint,
+                         size_t n)
+{
+    const gb_sim_step *c = &sim->cur;
+    const gb_solver_settings *sv = &sim->scene->solver;
+    double kn, x, res = gb_scene_force_resolution(sim->scene, &kn, &x);
+    if (fmax(max_force, residual) <= res) {
+        snprintf(hint, n, ". The largest fixing force is at the round-off of these springs and coordinates (kn eps "
+                 "|x|max = %.3g): give solver.accuracy: %g or more", res, gb_scene_suggested_accuracy(res));
+        return;
+    }
+    char more[80] = "";
+    if (sv->max_iterations < gb_solver_defaults().max_iterations)
+        snprintf(more, sizeof more, " (default %ld)", gb_solver_defaults().max_iterations);
+    if (sg->kind == GB_STAGE_RELAX) {
+        snprintf(hint, n, ". Give solver.max_iterations more than %ld%s", sv->max_iterations, more);
+        return;
+    }
+    double steps = sg->steps * fmax(2, 1 / c->finest); /* the finest sub-step tried, or a half without cut-backs */
+    snprintf(hint, n, ". Use smaller load steps: loading[%d].%s.steps: %.0f (now %d), or give solver.max_iterations "
+             "more than %ld%s", c->stage, gb_stage_name(sg->kind), steps, sg->steps, sv->max_iterations, more);
+}
+
+/* The error of a failed step, naming it and what to change. */
 static gb_status step_failed(const gb_sim *sim, const gb_stage *sg, gb_status st, double max_force, double residual,
                              gb_error *err)
 {
     const gb_sim_step *c = &sim->cur;
     const gb_solver_settings *sv = &sim->scene->solver;
     if (st == GB_ENOCONV) {
-        char cut[96] = "";
+        char cut[96] = "", hint[400];
         if (c->finest < 1) snprintf(cut, sizeof cut, ", nor in sub-steps down to 1/%.0f of the step", 1 / c->finest);
+        failure_hint(sim, sg, max_force, residual, hint, sizeof hint);
         return gb_fail(err, GB_ENOCONV,
                        "step %d (stage %d '%s', step %d of %d) did not converge in %ld iterations: largest fixing "
                        "force %.6g, walls off their target by %.6g (accuracy a = %g)%s; the outputs hold the %d "
-                       "completed steps",
+                       "completed steps%s",
                        c->step, c->stage + 1, gb_stage_name(sg->kind), c->stage_step, sg->steps, sv->max_iterations,
-                       max_force, residual, sim->accuracy, cut, c->step - 1);
+                       max_force, residual, sim->accuracy, cut, c->step - 1, hint);
     }
     char msg[GB_ERROR_MSG_MAX];
     snprintf(msg, sizeof msg, "%s", err->msg);

@@ -133,7 +133,13 @@ gb_status gb_run_verdict_read(const char *dir, const gb_scene *sc, gb_run_verdic
     watch w;
     memset(&w, 0, sizeof w);
     w.last_contacts = -1;
-    if (sc->warning[0]) warn(v, "%s", sc->warning); /* the scene's, said at the start */
+    /* the scene's, said at the start, joined by "; also " (src/scene/admit.c): one item each */
+    for (const char *w0 = sc->warning; *w0;) {
+        const char *end = strstr(w0, "; also ");
+        int len = end ? (int)(end - w0) : (int)strlen(w0);
+        warn(v, "%.*s", len, w0);
+        w0 += len + (end ? strlen("; also ") : 0);
+    }
     gb_status st = read_steps(dir, sc, v, &w, err);
     if (st) return st;
     if (w.accuracy_steps)

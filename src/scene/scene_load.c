@@ -1,4 +1,5 @@
 /* The granular scene file: see validation/three_discs/case1.yaml for a commented example. */
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -55,7 +56,9 @@ static gb_status read_material(gb_ymap *parent, const char *key, gb_material *ma
     if (!(mat->friction_deg < 90)) {
         struct fy_node *v;
         gb_ymap_find(&m, "friction_deg", 0, &v, err);
-        return gb_yaml_fail(m.doc, v, err, "%s.friction_deg: expected an angle from 0 to below 90 degrees", m.name);
+        return gb_yaml_fail(m.doc, v, err, "%s.friction_deg: expected an angle from 0 to below 90 degrees, found "
+                            "%g; for a friction coefficient mu give atan(mu) in degrees (mu 0.5: 26.6)", m.name,
+                            mat->friction_deg);
     }
     return gb_ymap_close(&m, err);
 }
@@ -253,6 +256,17 @@ static gb_status read_host_increments(gb_ymap *m, const char *sub, const gb_host
     return gb_ymap_close(&inc, err);
 }
 
+/* A stage's target stress on the walls: compression positive, as the strains. */
+static gb_status read_stress(gb_ymap *m, const char *key, double *out, gb_error *err)
+{
+    gb_status st = gb_ymap_number(m, key, GB_Y_REQUIRED, out, err);
+    if (st || *out > 0) return st;
+    struct fy_node *v;
+    gb_ymap_find(m, key, 0, &v, err);
+    return gb_yaml_fail(m->doc, v, err, "%s.%s: expected a positive stress (compression is positive in gembem), "
+                        "found %g%s", m->name, key, *out, *out < 0 ? ": drop the minus sign" : "");
+}
+
 static gb_status read_stage(const gb_yaml_doc *doc, struct fy_node *item, int k, const gb_host_def *host, gb_stage *sg,
                             gb_error *err)
 {
@@ -270,11 +284,15 @@ static gb_status read_stage(const gb_yaml_doc *doc, struct fy_node *item, int k,
     int kk = -1;
     for (int q = 0; q < 7; q++)
         if (kind && strlen(kinds[q]) == len && !strncmp(kinds[q], kind, len)) kk = q;
-    if (kk < 0)
+    if (kk < 0) {
+        int near = gb_yaml_closest(kind, len, kinds, 7);
+        char hint[64] = "";
+        if (near >= 0) snprintf(hint, sizeof hint, " did you mean '%s'?", kinds[near]);
         return gb_yaml_fail(doc, fy_node_pair_key(p), err,
-                            "%s: unknown stage '%.*s'; expected isotropic, strain, shear_mean_stress, biaxial_stress, relax, "
-                            "host_displacement or host_load",
-                            name, (int)len, kind ? kind : "");
+                            "%s: unknown stage '%.*s';%s expected isotropic, strain, shear_mean_stress, biaxial_stress, "
+                            "relax, host_displacement or host_load",
+                            name, (int)len, kind ? kind : "", hint);
+    }
     gb_ymap m;
     gb_status st;
     char sub[96];
@@ -289,7 +307,7 @@ static gb_status read_stage(const gb_yaml_doc *doc, struct fy_node *item, int k,
     switch (kk) {
     case 0:
         sg->kind = GB_STAGE_ISOTROPIC;
-        st = gb_ymap_number(&m, "stress", GB_Y_REQUIRED | GB_Y_POSITIVE, &sg->stress, err);
+        st = read_stress(&m, "stress", &sg->stress, err);
         break;
     case 1:
         sg->kind = GB_STAGE_STRAIN;
@@ -299,7 +317,7 @@ static gb_status read_stage(const gb_yaml_doc *doc, struct fy_node *item, int k,
     case 2:
         sg->kind = GB_STAGE_SHEAR_MEAN;
         if (!(st = gb_ymap_number(&m, "d_e1_minus_e2", GB_Y_REQUIRED, &sg->d_shear, err)))
-            st = gb_ymap_number(&m, "mean_stress", GB_Y_REQUIRED | GB_Y_POSITIVE, &sg->mean_stress, err);
+            st = read_stress(&m, "mean_stress", &sg->mean_stress, err);
         break;
     case 4:
         sg->kind = GB_STAGE_RELAX;
@@ -314,8 +332,7 @@ static gb_status read_stage(const gb_yaml_doc *doc, struct fy_node *item, int k,
         break;
     default:
         sg->kind = GB_STAGE_BIAXIAL_STRESS;
-        if (!(st = gb_ymap_number(&m, "s1", GB_Y_REQUIRED | GB_Y_POSITIVE, &sg->s1, err)))
-            st = gb_ymap_number(&m, "s2", GB_Y_REQUIRED | GB_Y_POSITIVE, &sg->s2, err);
+        if (!(st = read_stress(&m, "s1", &sg->s1, err))) st = read_stress(&m, "s2", &sg->s2, err);
         break;
     }
     if (st) return st;
@@ -433,6 +450,56 @@ static gb_status read_region(gb_ymap *top, gb_scene *s, gb_bem_mesh *mesh, gb_er
     return host ? gb_host_section_read(top, &s->host, mesh, err) : gb_box_read(top, &s->box, err);
 }
 
+/* The scene's node at a path such as "/solver/accuracy", for a message's line and column. */
+static struct fy_node *node_at(const gb_yaml_doc *doc, const char *path)
+{
+    return fy_node_by_path(fy_document_root(doc->fyd), path, FY_NT, FYNWF_DONT_FOLLOW);
+}
+
+/* An accuracy that doubles cannot reach for these springs and coordinates is refused, not
+ * iterated for hours (a force given in the scene: 0 is an accuracy not known before the run). */
+static gb_status check_accuracy(const gb_yaml_doc *doc, const gb_scene *s, gb_error *err)
+{
+    double kn, x, res = gb_scene_force_resolution(s, &kn, &x), a = s->solver.accuracy;
+    if (!(a > 0 && a < GB_RESOLUTION_REFUSED * res)) return GB_OK;
+    return gb_yaml_fail(doc, node_at(doc, "/solver/accuracy"), err,
+                        "solver.accuracy: %g is below what doubles resolve for these springs and coordinates: the "
+                        "fixing forces stall near kn eps |x|max = %.3g (kn %g, |x|max %g); give solver.accuracy: %g "
+                        "or more", a, res, kn, x, gb_scene_suggested_accuracy(res));
+}
+
+/* A contact under a wall stress sigma (force per length of wall) carries about sigma times a
+ * diameter and overlaps by about 2 sigma / kn of a radius, whatever the size. Above a radius the
+ * grains would pass through each other: kn or the stress is in another unit (kn in N/m in a cm
+ * and dyn scene is 1000 times too soft). Above 0.1 of a radius the small-overlap springs are
+ * stretched: warned. */
+static gb_status check_springs(const gb_yaml_doc *doc, gb_scene *s, gb_error *err)
+{
+    if (s->host.present) return GB_OK; /* no wall stress: the host's loads are displacements and tractions */
+    int soft_wall = s->grain_wall.kn < s->grain_grain.kn;
+    double kn = soft_wall ? s->grain_wall.kn : s->grain_grain.kn;
+    const char *name = soft_wall ? "grain_wall" : "grain_grain";
+    for (int k = 0; k < s->n_stages; k++) {
+        const gb_stage *sg = &s->stages[k];
+        double sigma = fmax(fmax(sg->stress, sg->mean_stress), fmax(sg->s1, sg->s2)), share = 2 * sigma / kn;
+        if (!(share > 0.1)) continue;
+        char where[64];
+        snprintf(where, sizeof where, "/materials/%s/kn", name);
+        const char *what = "a contact overlaps by about 2 stress / kn";
+        if (share > 1)
+            return gb_yaml_fail(doc, node_at(doc, where), err,
+                                "materials.%s.kn: %g is soft against loading[%d]'s stress %g: %s = %.3g radii, "
+                                "through the grains; check the units of kn (%s/%s) and of the stress (%s per %s of "
+                                "wall); a kn of %g or more keeps overlaps below 1 %% of a radius", name, kn, k, sigma,
+                                what, share, s->force_unit, s->length_unit, s->force_unit, s->length_unit, 200 * sigma);
+        gb_scene_warn(s, "materials.%s.kn %g is soft against loading[%d]'s stress %g: %s = %.2g of a radius, beyond "
+                      "the small overlaps the springs stand for; a kn of %g or more keeps them below 1 %% (check its "
+                      "units: %s/%s)", name, kn, k, sigma, what, share, 200 * sigma, s->force_unit, s->length_unit);
+        break; /* one warning for the scene */
+    }
+    return GB_OK;
+}
+
 /* mesh: the host's, as the scene's check meshed it (the caller frees it). read_pack: a pack scene
  * (src/scene/scene_pack.h), else a run scene. */
 static gb_status load(const gb_yaml_doc *doc, gb_scene *s, gb_bem_mesh *mesh, gb_scene_section_fn read_pack,
@@ -525,7 +592,9 @@ static gb_status load(const gb_yaml_doc *doc, gb_scene *s, gb_bem_mesh *mesh, gb
     }
     if ((st = gb_ymap_close(&top, err))) return st;
     if (read_pack) return check_pack_accuracy(doc, &top, s, err);
-    if ((st = gb_scene_admit(s, s->host.present ? mesh : NULL, err))) return st;
+    if ((st = gb_scene_admit(s, s->host.present ? mesh : NULL, err)) || (st = check_springs(doc, s, err)) ||
+        (st = check_accuracy(doc, s, err)))
+        return st;
     return check_force_scale(doc, &top, s, err);
 }
 

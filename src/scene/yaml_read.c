@@ -2,6 +2,7 @@
 
 #include "core/number.h"
 
+#include <ctype.h>
 #include <errno.h>
 #include <math.h>
 #include <stdarg.h>
@@ -143,10 +144,11 @@ gb_status gb_yaml_number(const gb_yaml_doc *doc, struct fy_node *node, const cha
     if (!node || fy_node_get_type(node) != FYNT_SCALAR)
         return gb_yaml_fail(doc, node, err, "%s: expected a number, found a %s", what,
                             node && fy_node_get_type(node) == FYNT_MAPPING ? "mapping" : "sequence");
-    if (fy_node_get_style(node) != FYNS_PLAIN)
-        return gb_yaml_fail(doc, node, err, "%s: expected a number, found a quoted string", what);
     size_t len = 0;
     const char *s = fy_node_get_scalar(node, &len);
+    if (fy_node_get_style(node) != FYNS_PLAIN)
+        return gb_yaml_fail(doc, node, err, "%s: expected a number, found a quoted string ('%.*s'): write it without "
+                            "quotes", what, (int)(len < 40 ? len : 40), s ? s : "");
     char buf[64];
     if (!s || len == 0 || len >= sizeof buf)
         return gb_yaml_fail(doc, node, err, "%s: expected a number, found '%.*s'", what, (int)(len < 40 ? len : 40),
@@ -175,6 +177,46 @@ gb_status gb_ymap_open(const gb_yaml_doc *doc, struct fy_node *node, const char 
     return GB_OK;
 }
 
+/* Optimal string alignment distance between a (length la) and b, letters compared without case:
+ * a typo is one or two edits (a letter missed, doubled, swapped with its neighbour, mistyped). */
+static int edit_distance(const char *a, size_t la, const char *b)
+{
+    enum { MAX = 64 };
+    size_t lb = strlen(b);
+    if (la >= MAX || lb >= MAX) return MAX;
+    int d[MAX][MAX];
+    for (size_t i = 0; i <= la; i++) d[i][0] = (int)i;
+    for (size_t j = 0; j <= lb; j++) d[0][j] = (int)j;
+    for (size_t i = 1; i <= la; i++)
+        for (size_t j = 1; j <= lb; j++) {
+            int same = tolower((unsigned char)a[i - 1]) == tolower((unsigned char)b[j - 1]);
+            int v = d[i - 1][j - 1] + !same;
+            if (d[i - 1][j] + 1 < v) v = d[i - 1][j] + 1;
+            if (d[i][j - 1] + 1 < v) v = d[i][j - 1] + 1;
+            if (i > 1 && j > 1 && tolower((unsigned char)a[i - 1]) == tolower((unsigned char)b[j - 2]) &&
+                tolower((unsigned char)a[i - 2]) == tolower((unsigned char)b[j - 1]) && d[i - 2][j - 2] + 1 < v)
+                v = d[i - 2][j - 2] + 1;
+            d[i][j] = v;
+        }
+    return d[la][lb];
+}
+
+/* Whether `written` (length len) is a likely misspelling of the key `meant`: at most one edit in
+ * a key of 4 to 7 letters, two from 8; short keys only by case (kn and kt, de1 and de2 are
+ * different keys one letter apart). */
+static int misspelt(const char *written, size_t len, const char *meant)
+{
+    int d = edit_distance(written, len, meant);
+    return 4 * d <= (int)strlen(meant) && d <= 2;
+}
+
+int gb_yaml_closest(const char *written, size_t len, const char *const *names, int n)
+{
+    for (int i = 0; written && i < n; i++)
+        if (misspelt(written, len, names[i])) return i;
+    return -1;
+}
+
 static void key_path(const gb_ymap *m, const char *key, char *out, size_t n)
 {
     if (m->name[0]) snprintf(out, n, "%s.%s", m->name, key);
@@ -196,6 +238,16 @@ gb_status gb_ymap_find(gb_ymap *m, const char *key, int flags, struct fy_node **
     if (!*out && (flags & GB_Y_REQUIRED)) {
         char path[256];
         key_path(m, key, path, sizeof path);
+        /* a key of the mapping written for this one: named at its own line */
+        void *it = NULL;
+        struct fy_node_pair *p;
+        while (m->node && (p = fy_node_mapping_iterate(m->node, &it))) {
+            size_t len = 0;
+            const char *s = fy_node_get_scalar(fy_node_pair_key(p), &len);
+            if (s && misspelt(s, len, key))
+                return gb_yaml_fail(m->doc, fy_node_pair_key(p), err, "missing key '%s' (found '%.*s': did you mean "
+                                    "'%s'?)", path, (int)len, s, key);
+        }
         return gb_yaml_fail(m->doc, m->node, err, "missing key '%s'", path);
     }
     return GB_OK;
@@ -319,12 +371,16 @@ gb_status gb_ymap_close(gb_ymap *m, gb_error *err)
         for (int i = 0; s && i < m->n_asked && !known; i++)
             known = strlen(m->asked[i]) == len && !strncmp(m->asked[i], s, len);
         if (known) continue;
-        char expected[600] = "";
+        char expected[600] = "", hint[96] = "";
         size_t used = 0;
-        for (int i = 0; i < m->n_asked && used < sizeof expected - 1; i++)
+        for (int i = 0; i < m->n_asked && used < sizeof expected - 1; i++) {
             used += (size_t)snprintf(expected + used, sizeof expected - used, "%s%s", i ? ", " : "", m->asked[i]);
-        return gb_yaml_fail(m->doc, k, err, "%s: unknown key '%.*s'; expected one of: %s",
-                            m->name[0] ? m->name : "(top level)", (int)(s ? len : 0), s ? s : "", expected);
+            if (s && !hint[0] && misspelt(s, len, m->asked[i]) &&
+                !fy_node_mapping_lookup_by_string(m->node, m->asked[i], FY_NT)) /* not a key given as well */
+                snprintf(hint, sizeof hint, " did you mean '%s'?", m->asked[i]);
+        }
+        return gb_yaml_fail(m->doc, k, err, "%s: unknown key '%.*s';%s expected one of: %s",
+                            m->name[0] ? m->name : "(top level)", (int)(s ? len : 0), s ? s : "", hint, expected);
     }
     return GB_OK;
 }

@@ -71,6 +71,10 @@ gb_status gb_ymap_numbers(gb_ymap *m, const char *key, int flags, int max, doubl
 /* Refuses any key that was never looked up, naming the keys that are expected. */
 gb_status gb_ymap_close(gb_ymap *m, gb_error *err);
 
+/* The first of names[0..n) that `written` (len bytes) is a likely misspelling of (an edit or two,
+ * case aside), or -1: for "did you mean" in messages. */
+int gb_yaml_closest(const char *written, size_t len, const char *const *names, int n);
+
 /* Resolve a path named in a scene relative to the scene file's directory. */
 void gb_yaml_relative_path(const gb_yaml_doc *doc, const char *name, char *out, size_t n);
 

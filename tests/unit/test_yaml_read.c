@@ -59,6 +59,25 @@ int main(void)
     CHECK(strstr(err.msg, "syntax error") != NULL);
     CHECK(gb_yaml_load("/nonexistent/scene.yaml", &doc, &err) == GB_EINPUT);
 
+    /* "did you mean": a typo of a long key (a swap, a letter missed, the case) is named at its
+     * own line; of a short key it is not (kn and kt, de1 and de2 are different keys) */
+    p = write_tmp("typo", "friciton_deg: 25\nkt: 7\nAccuracy: 1\nde2: 0\nmax_iteration: 5\n");
+    CHECK(gb_yaml_load(p, &doc, &err) == GB_OK);
+    gb_ymap_open(&doc, fy_document_root(doc.fyd), "m", &m, &err);
+    CHECK(gb_ymap_number(&m, "friction_deg", GB_Y_REQUIRED, &x, &err) == GB_EINPUT);
+    CHECK(strstr(err.msg, ":1:1: missing key 'm.friction_deg' (found 'friciton_deg': did you mean 'friction_deg'?)"));
+    CHECK(gb_ymap_number(&m, "accuracy", GB_Y_REQUIRED, &x, &err) == GB_EINPUT);
+    CHECK(strstr(err.msg, ":3:1: missing key 'm.accuracy' (found 'Accuracy': did you mean 'accuracy'?)"));
+    CHECK(gb_ymap_number(&m, "kn", GB_Y_REQUIRED, &x, &err) == GB_EINPUT && !strstr(err.msg, "did you mean"));
+    CHECK(gb_ymap_number(&m, "de1", GB_Y_REQUIRED, &x, &err) == GB_EINPUT && !strstr(err.msg, "did you mean"));
+    CHECK(gb_ymap_number(&m, "kt", 0, &x, &err) == GB_OK && gb_ymap_number(&m, "de2", 0, &x, &err) == GB_OK);
+    CHECK(gb_ymap_number(&m, "max_iterations", 0, &x, &err) == GB_OK);
+    CHECK(gb_ymap_close(&m, &err) == GB_EINPUT); /* the first key unread: friciton_deg */
+    CHECK(strstr(err.msg, "unknown key 'friciton_deg'; did you mean 'friction_deg'? expected one of:"));
+    gb_yaml_free(&doc);
+    static const char *const stages[] = {"isotropic", "strain"};
+    CHECK(gb_yaml_closest("strian", 6, stages, 2) == 1 && gb_yaml_closest("shear", 5, stages, 2) == -1);
+
     /* UTF-8 is checked before libfyaml, which looped forever on a directive with a byte that is not
      * (fuzz/regress/scene): the place of the bad byte; a character split across two reads is fine */
     p = write_tmp("latin1", "a: 1\n%YAML\xe9\n");
