@@ -37,7 +37,7 @@ for t in "${targets[@]}"; do
     -rss_limit_mb=2048 -detect_leaks=$leaks -print_final_stats=1 -artifact_prefix=$dir/findings/$t/ \
     >$dir/logs/$t.log 2>&1 || true
   secs=$(($(date +%s) - start))
-  runs=$(awk '/stat::number_of_executed_units/ {print $2}' $dir/logs/$t.log)
+  runs=$(awk '/stat::number_of_executed_units/ {print $2; exit}' $dir/logs/$t.log) # printed twice after a leak report
   n=$(ls $dir/findings/$t | wc -l)
   grep -q "ERROR: LeakSanitizer" $dir/logs/$t.log && n=$((n + 1)) # at exit: no input to keep
   found=$((found + n))
