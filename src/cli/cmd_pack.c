@@ -37,11 +37,8 @@ int gb_cli_pack(int argc, char **argv)
         usage(stderr);
         return 2;
     }
-    char command[1024] = "gembem";
-    for (int k = 0; k < argc; k++) {
-        size_t used = strlen(command);
-        snprintf(command + used, sizeof command - used, " %s", argv[k]);
-    }
+    char command[1024];
+    gb_cli_command_line(argc, argv, command, sizeof command);
     gb_error err = {0};
     gb_scene scene;
     gb_bem_mesh mesh;

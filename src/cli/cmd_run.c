@@ -67,11 +67,8 @@ int gb_cli_run(int argc, char **argv)
         usage(stderr);
         return 2;
     }
-    char command[1024] = "gembem";
-    for (int k = 0; k < argc; k++) {
-        size_t used = strlen(command);
-        snprintf(command + used, sizeof command - used, " %s", argv[k]);
-    }
+    char command[1024];
+    gb_cli_command_line(argc, argv, command, sizeof command);
 
     gb_error err = {0};
     char resume_scene[1024];

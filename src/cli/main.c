@@ -7,7 +7,7 @@ static void usage(FILE *to)
 {
     fprintf(to, "usage: gembem <command> [options]\n"
                 "commands:\n"
-                "  run SCENE.yaml -o RUNDIR   run a granular scene (reference GEM iteration)\n"
+                "  run SCENE.yaml -o RUNDIR   run a granular scene (reference or global solver)\n"
                 "  bem SCENE.yaml -o OUTDIR   solve a pure elastostatic scene (boundary elements)\n"
                 "  pack SCENE.yaml -o RUNDIR  fill a box or a host's cavity with grains in equilibrium\n"
                 "  version                    print the version\n"
@@ -23,6 +23,15 @@ int gb_cli_report(const gb_error *err)
     case GB_ENOCONV: return 3;
     case GB_EIO: return 4;
     default: return 1;
+    }
+}
+
+void gb_cli_command_line(int argc, char **argv, char *out, size_t cap)
+{
+    snprintf(out, cap, "gembem");
+    for (int k = 0; k < argc; k++) {
+        size_t used = strlen(out);
+        snprintf(out + used, cap - used, " %s", argv[k]);
     }
 }
 

@@ -117,16 +117,22 @@ static gb_status read_accuracy(gb_ymap *m, gb_solver_settings *sv, gb_error *err
 
 /* A relative accuracy needs a force to be relative to at the first step: a contact force of the
  * initial state, or a body force or stress target of the first stage (src/gem/accuracy.c). */
+/* Where an error about solver.accuracy points: the key, else the solver section, else the top. */
+static struct fy_node *accuracy_node(gb_ymap *top, gb_error *err)
+{
+    struct fy_node *v = NULL, *sv = NULL;
+    gb_ymap_find(top, "solver", 0, &sv, err);
+    if (sv) v = fy_node_mapping_lookup_by_string(sv, "accuracy", FY_NT);
+    return v ? v : sv ? sv : top->node;
+}
+
 static gb_status check_force_scale(const gb_yaml_doc *doc, gb_ymap *top, const gb_scene *s, gb_error *err)
 {
     const gb_overlaps *o = &s->overlaps;
     if (!(s->solver.accuracy_relative > 0) || o->grain_pairs || o->boundary || o->particles ||
         gb_scene_load_force(s, 0) > 0)
         return GB_OK;
-    struct fy_node *v = NULL, *sv = NULL;
-    gb_ymap_find(top, "solver", 0, &sv, err);
-    if (sv) v = fy_node_mapping_lookup_by_string(sv, "accuracy", FY_NT);
-    return gb_yaml_fail(doc, v ? v : sv ? sv : top->node, err,
+    return gb_yaml_fail(doc, accuracy_node(top, err), err,
                         "solver.accuracy: %s relative accuracy has no force scale at the first step: no grain "
                         "touches another or a boundary, there is no body force and the first stage imposes no "
                         "stress; expected an absolute accuracy (a force, e.g. 'accuracy: 1e-3')",
@@ -138,10 +144,7 @@ static gb_status check_force_scale(const gb_yaml_doc *doc, gb_ymap *top, const g
 static gb_status check_pack_accuracy(const gb_yaml_doc *doc, gb_ymap *top, const gb_scene *s, gb_error *err)
 {
     if (!(s->solver.accuracy_relative > 0)) return GB_OK;
-    struct fy_node *v = NULL, *sv = NULL;
-    gb_ymap_find(top, "solver", 0, &sv, err);
-    if (sv) v = fy_node_mapping_lookup_by_string(sv, "accuracy", FY_NT);
-    return gb_yaml_fail(doc, v ? v : sv ? sv : top->node, err,
+    return gb_yaml_fail(doc, accuracy_node(top, err), err,
                         "solver.accuracy: %s; a pack scene needs an absolute accuracy (a force, e.g. 1e-6 times kn "
                         "times the mean radius: %g x the mean radius here), since the force scale of a relative one "
                         "is the contact forces that the packing makes",
