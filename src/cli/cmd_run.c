@@ -1,5 +1,6 @@
 /* gembem run SCENE.yaml -o RUNDIR: a granular scene through its loading program. */
 #define _POSIX_C_SOURCE 200809L
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 #include <time.h>
@@ -27,9 +28,14 @@ static gb_status on_step(void *user, const gb_sim *sim, const gb_step_report *r,
 {
     run_ctx *c = user;
     gb_status st = gb_run_output_step(c->out, sim, r, err);
-    if (c->progress && !c->quiet)
-        fprintf(stderr, "\rstep %d of %d  stress ratio %.4f  iterations %ld  elapsed %.1f s   ", r->step,
-                r->total_steps, r->stress_ratio, r->iterations, elapsed(&c->t0));
+    if (c->progress && !c->quiet) {
+        /* a host has no box stresses: its steps show no stress ratio (steps.csv writes nan) */
+        char ratio[48] = "";
+        if (!gb_sim_scene(sim)->host.present && isfinite(r->stress_ratio))
+            snprintf(ratio, sizeof ratio, "  stress ratio %.4f", r->stress_ratio);
+        fprintf(stderr, "\rstep %d of %d%s  iterations %ld  elapsed %.1f s   ", r->step, r->total_steps, ratio,
+                r->iterations, elapsed(&c->t0));
+    }
     return st;
 }
 
@@ -37,7 +43,7 @@ static void usage(FILE *to)
 {
     fprintf(to, "usage: gembem run SCENE.yaml -o RUNDIR [--overwrite] [--quiet]\n"
                 "       gembem run --resume RUNDIR [SCENE.yaml] [--quiet]\n"
-                "  Runs the scene's loading program with the reference GEM iteration and writes RUNDIR/steps.csv,\n"
+                "  Runs the scene's loading program with the scene's solver and writes RUNDIR/steps.csv,\n"
                 "  RUNDIR/state.yaml (a scene can start from it), VTK snapshots and a copy of the scene.\n"
                 "  RUNDIR/checkpoint.txt follows the run; --resume continues an interrupted run from it, with\n"
                 "  the same scene (by default the path the run started with; refused if it changed).\n"
