@@ -10,9 +10,13 @@ into a wall), the normal force pn = kn d of docs/method.md section 3 (K 3), and 
 tangential forces pt (one per contact: K 6 is path-dependent, so pt cannot be recomputed from
 the positions) each grain's fixing force (K 5): sum over its contacts of pn n + pt t (n from the
 grain to the other side, t = (-ny, nx)) minus its body force, and its moment over its radius,
-sum of pt. It checks:
+sum of pt, minus the rolling moment mr / r_i on grain i and plus mr / r_j on grain j when the
+contacts file has the column mr (rolling resistance, docs/method.md section 3.1: stored like pt,
+path-dependent). It checks:
   - every grain's |(Fx, Fy, M/r)| <= A (K 14), A the last step's accuracy (steps.csv) unless given;
   - Coulomb without dilation (K 13): |pt| <= pn tan(phi) + c, to S (relative, 1e-9) of the cap;
+  - with rolling resistance, the rolling limit |mr| <= eta R* pn, R* = r_i r_j / (r_i + r_j)
+    (r_i against a wall), to S of the limit;
   - every stored contact is an overlap at the stored positions, with its stored pn = kn d to S
     (both beyond the rounding of an overlap computed from the coordinates, kn 1e3 eps |x|max),
     and every overlap found is a stored contact (an overlap with no stored contact carries pt = 0).
@@ -52,9 +56,10 @@ def material(scene, key):
     m = (scene.get("materials") or {}).get(key)
     if m is None:
         return None
+    rolling = m.get("rolling") or {}
     return {"kn": float(m["kn"]), "kt": float(m.get("kt", 0)),
             "tan_phi": math.tan(math.radians(float(m.get("friction_deg", 0)))),
-            "cohesion": float(m.get("cohesion", 0))}
+            "cohesion": float(m.get("cohesion", 0)), "eta": float(rolling.get("eta", 0))}
 
 
 def body_force_per_area(scene):
@@ -127,7 +132,7 @@ def main():
     d_round = 1e3 * np.finfo(float).eps * max(float(np.abs(x).max()) if n else 1.0, float(r.max()) if n else 1.0)
     F = np.zeros((n, 3))
     F[:, :2] -= body_force_per_area(scene)[None, :] * (math.pi * r * r)[:, None]
-    worst_coulomb = worst_pn = 0.0
+    worst_coulomb = worst_pn = worst_rolling = 0.0
     problems = []
     seen = set()
     for row in stored:
@@ -147,12 +152,16 @@ def main():
         worst_coulomb = max(worst_coulomb, (abs(pt) - cap - mat["kn"] * d_round * mat["tan_phi"]) / max(cap, 1e-300))
         t = np.array([-nrm[1], nrm[0]])
         f = pn * nrm + pt * t
+        mr = float(row.get("mr") or 0)
+        rstar = r[i] if side in WALLS else r[i] * r[int(side)] / (r[i] + r[int(side)])
+        mcap = mat["eta"] * rstar * pn
+        worst_rolling = max(worst_rolling, (abs(mr) - mcap - mat["eta"] * rstar * mat["kn"] * d_round) / max(mcap, 1e-300))
         F[i, :2] += f
-        F[i, 2] += pt
+        F[i, 2] += pt - mr / r[i]
         if side not in WALLS:
             j = int(side)
             F[j, :2] -= f
-            F[j, 2] += pt
+            F[j, 2] += pt + mr / r[j]
     for key, (d, nrm) in found.items():
         if key not in seen:  # an overlap without a stored contact: pt = 0 (a contact that just touched)
             mat = gw if isinstance(key[1], str) else gg
@@ -163,11 +172,14 @@ def main():
     k = int(np.argmax(norms)) if n else 0
     print(f"{a.run_dir}: {n} grains, {len(stored)} stored contacts, {len(found)} overlaps found; "
           f"largest fixing force {norms[k]:.6g} dyn (grain {k}, accuracy {accuracy:g}); "
-          f"Coulomb excess {max(worst_coulomb, 0):.3g} of the cap; pn against kn d {max(worst_pn, 0):.3g} (relative)")
+          f"Coulomb excess {max(worst_coulomb, 0):.3g} of the cap; pn against kn d {max(worst_pn, 0):.3g} (relative)"
+          + (f"; rolling excess {max(worst_rolling, 0):.3g} of the limit" if stored and "mr" in stored[0] else ""))
     if norms[k] > accuracy:
         problems.append(f"grain {k}: fixing force {norms[k]:.6g} > accuracy {accuracy:g}")
     if worst_coulomb > a.slack:
         problems.append(f"a tangential force exceeds its Coulomb cap by {worst_coulomb:.3g} of the cap")
+    if worst_rolling > a.slack:
+        problems.append(f"a rolling moment exceeds its limit eta R* pn by {worst_rolling:.3g} of the limit")
     if worst_pn > a.slack:
         problems.append(f"a stored normal force differs from kn d by {worst_pn:.3g} (relative)")
     gg_found = sum(1 for key in found if not isinstance(key[1], str))

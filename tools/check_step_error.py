@@ -11,7 +11,8 @@ and the normal of every contact: tools/check_equilibrium.py checks those against
 by its own sums, it recomputes (docs/run-directory.md, steps.csv):
   - force_scale: the larger of the mean pn of the step's start contacts (overlap above 1e3 eps of
     the coordinates) and the stage's load force (target stress x mean diameter, mean weight);
-  - relative_residual: the largest grain fixing force (K 5: contacts minus body force, moment / r)
+  - relative_residual: the largest grain fixing force (K 5: contacts minus body force, moment / r,
+    with the rolling moments mr of the contacts file when it has them, docs/method.md section 3.1)
     over the scale;
   - relative_wall_residual (stress-controlled stages): the walls' force error against the stage's
     final target over the scale;
@@ -97,11 +98,13 @@ def main():
     wall = {w: 0.0 for w in WALLS}
     particle = {}
     excess = -math.inf
-    for i, j, pn, pt, nx, ny in zip(c["i"], c["j"], c["pn"], c["pt"], c["nx"], c["ny"]):
-        i, j, pn, pt = int(i), str(j), float(pn), float(pt)
+    # the rolling moment on grain i (docs/method.md section 3.1), a column only with rolling resistance
+    mrs = c["mr"] if "mr" in c else np.zeros(c.nrows)
+    for i, j, pn, pt, nx, ny, mr in zip(c["i"], c["j"], c["pn"], c["pt"], c["nx"], c["ny"], mrs):
+        i, j, pn, pt, mr = int(i), str(j), float(pn), float(pt), float(mr)
         f = pn * np.array([nx, ny]) + pt * np.array([-ny, nx])
         F[i, :2] += f
-        F[i, 2] += pt
+        F[i, 2] += pt - mr / r[i]
         count[i] += 1
         kind = "grain_wall" if j in WALLS else "grain_boundary" if j.startswith("p") else "grain_grain"
         tan_phi, coh = material(scene, kind)
@@ -112,7 +115,7 @@ def main():
             particle[int(j[1:])] = particle.get(int(j[1:]), 0) + f
         else:
             F[int(j), :2] -= f
-            F[int(j), 2] += pt
+            F[int(j), 2] += pt + mr / r[int(j)]
             count[int(j)] += 1
     got["relative_residual"] = float(np.sqrt((F * F).sum(axis=1)).max()) / scale
     got["coulomb_excess"] = excess / scale

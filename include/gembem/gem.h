@@ -14,6 +14,7 @@ typedef struct {
     double overlap;    /* > 0 */
     double pn, pt;     /* normal (compression positive) and tangential force (K section 2.2) */
     double diss;       /* energy dissipated at the contact in the last load step (K 28) */
+    double mr;         /* rolling moment on grain i, -mr on j (docs/method.md section 3.1) */
 } gb_contact;
 
 /* The global solver's work (zero for the reference iteration). */

@@ -6,11 +6,14 @@
 #include "gembem/bem.h"
 #include "gembem/status.h"
 
-/* Contact springs and strength of one contact type (K 3, 4, 13). */
+/* Contact springs and strength of one contact type (K 3, 4, 13), and the optional rolling
+ * resistance (docs/method.md section 3.1): kr = 0 leaves it out. */
 typedef struct {
     double kn, kt;        /* normal and tangential spring stiffness [force/length] */
     double friction_deg;  /* Coulomb friction angle phi [degrees] */
     double cohesion;      /* c [force] */
+    double kr;            /* rolling spring [force length / radian]; 0: no rolling resistance */
+    double eta;           /* rolling limit |mr| <= eta R* pn [1] */
 } gb_material;
 
 enum { GB_WALL_LEFT = 0, GB_WALL_RIGHT = 1, GB_WALL_BOTTOM = 2, GB_WALL_TOP = 3, GB_N_WALLS = 4 };
@@ -24,10 +27,12 @@ typedef struct {
     double rot;      /* rotation [rad], counter-clockwise */
 } gb_grain;
 
-/* An initial tangential contact force; the normal force follows from the overlap (pn = kn d). */
+/* An initial tangential contact force (and rolling moment); the normal force follows from the
+ * overlap (pn = kn d). */
 typedef struct {
     int i, j;   /* grain indices; j < 0 names a wall: j = -1 - GB_WALL_xxx */
     double pt;
+    double mr;  /* rolling moment on grain i (docs/method.md section 3.1); 0 if the file has none */
 } gb_contact_init;
 
 typedef enum {
@@ -183,6 +188,9 @@ typedef struct {
     int checkpoint_every;
     double checkpoint_minutes;
 } gb_scene;
+
+/* Some contact type has rolling resistance (docs/method.md section 3.1). */
+static inline int gb_scene_rolling(const gb_scene *s) { return s->grain_grain.kr > 0 || s->grain_wall.kr > 0; }
 
 #define GB_MEASURES_DEFAULT_GRAINS 5000
 #define GB_MEASURES_DEFAULT_EVERY 1

@@ -82,12 +82,14 @@ double gb_pair_update(gb_pair *p, const gb_world *w, const double *dX, const dou
     else if (GB_IS_PARTICLE(p->j)) memcpy(b, &w->bp->dx[2 * GB_PARTICLE_OF(p->j)], 2 * sizeof(double));
     else memcpy(b, &wall_dx[2 * (-1 - p->j)], 2 * sizeof(double));
     double du_t = gb_pair_du_t(p, &dX[3 * p->i], b);
+    double dth = mat->kr > 0 ? gb_pair_dtheta_r(p, w, &dX[3 * p->i], b) : 0;
     gb_pair_geometry(p, w);
-    double pt0 = p->pt, diss = 0;
+    double pt0 = p->pt, mr0 = p->mr, diss = 0;
     if (!(p->d > 0)) {
         /* Opened (K section 2.5): both forces vanish, the tangential spring's energy is lost. */
         if (was_contact && mat->kt > 0) diss = pt0 * pt0 / (2 * mat->kt);
-        p->pn = p->pt = 0;
+        if (was_contact && mat->kr > 0) diss += mr0 * mr0 / (2 * mat->kr);
+        p->pn = p->pt = p->mr = 0;
         p->diss += diss;
         return diss;
     }
@@ -99,6 +101,14 @@ double gb_pair_update(gb_pair *p, const gb_world *w, const double *dX, const dou
     if (was_contact && mat->kt > 0 && pt0 != 0 && p->pt != 0) {
         double slip = du_t - (p->pt - pt0) / mat->kt;  /* (K 26, 27) */
         diss = 0.5 * (pt0 + p->pt) * slip;             /* (K 28) */
+    }
+    if (mat->kr > 0) {
+        /* Rolling resistance (docs/method.md section 3.1): the same incremental law on the moment. */
+        p->mr = was_contact ? p->mr - mat->kr * dth : 0.0;
+        double mlim = mat->eta * gb_pair_rolling_radius(p, w) * p->pn;
+        if (p->mr > mlim) p->mr = mlim;
+        else if (p->mr < -mlim) p->mr = -mlim;
+        if (was_contact && mr0 != 0 && p->mr != 0) diss += 0.5 * (mr0 + p->mr) * (-dth - (p->mr - mr0) / mat->kr);
     }
     p->diss += diss;
     return diss;

@@ -40,6 +40,7 @@ typedef struct {
     double nx, ny;   /* unit normal from i towards j, at the last geometry update */
     double d;        /* overlap; the pair is a contact when d > 0 */
     double pn, pt;   /* contact forces, compression positive; zero when open */
+    double mr;       /* rolling moment on grain i (counter-clockwise), -mr on j; 0 without rolling */
     double diss;     /* energy dissipated at this contact in the current load step */
 } gb_pair;
 
@@ -94,15 +95,42 @@ static inline double gb_pair_du_t(const gb_pair *p, const double a[3], const dou
     return -(a[0] - b[0]) * p->ny + (a[1] - b[1]) * p->nx + a[2] + b[2];
 }
 
+/* The elastic energy of a contact's springs (K 22), with the rolling spring's mr^2 / (2 kr). */
+static inline double gb_spring_energy(double pn, double pt, double mr, const gb_material *m)
+{
+    double e = 0.5 * pn * pn / m->kn + (m->kt > 0 ? 0.5 * pt * pt / m->kt : 0);
+    return m->kr > 0 ? e + 0.5 * mr * mr / m->kr : e;
+}
+
+/* The rolling radius R* of a pair (docs/method.md section 3.1): r_i r_j / (r_i + r_j) between
+ * grains, r_i against a wall (a flat wall is a disc of infinite radius). */
+static inline double gb_pair_rolling_radius(const gb_pair *p, const gb_world *w)
+{
+    double ri = w->g[p->i].r;
+    if (p->j < 0) return ri;
+    double rj = w->g[p->j].r;
+    return ri * rj / (ri + rj);
+}
+
+/* The relative rolling of a pair in a move (docs/method.md section 3.1): dw_i - dw_j, dw_i alone
+ * against a wall (walls do not rotate), for moves a = (dx, dy, r dw) of grain i and b of grain j. */
+static inline double gb_pair_dtheta_r(const gb_pair *p, const gb_world *w, const double a[3], const double b[3])
+{
+    return a[2] / w->g[p->i].r - (p->j >= 0 ? b[2] / w->g[p->j].r : 0);
+}
+
 /* Contact forces after a move (K 6, 13): the normal force follows the overlap, pn = kn d (a new
  * contact starts at kn d, see docs/method.md section 3); the tangential force is incremental,
  * pt += kt du_t with du_t from (K 25) in the tangent of the previous configuration; a contact
- * that opens (d <= 0) drops both forces; |pt| is capped at pn tan(phi) + c.
+ * that opens (d <= 0) drops both forces; |pt| is capped at pn tan(phi) + c. With rolling
+ * resistance (mat->kr > 0, docs/method.md section 3.1) the rolling moment follows the same
+ * incremental law: mr -= kr dtheta_r, capped at eta R* pn, dropped when the contact opens.
  * dX holds (dx, dy, r dw) per grain, wall_dx the translation (dx, dy) of each wall, w->bp->dx
  * the particles' moves.
  * Returns the energy dissipated by the update, also added to p->diss: the slip
  * du_d = du_t - dpt/kt times the mean tangential force, zero if either end is zero (K 26-28), and,
- * when the contact opens, the tangential spring energy pt^2/(2 kt) that it releases. */
+ * when the contact opens, the tangential spring energy pt^2/(2 kt) that it releases; the same for
+ * the rolling spring (slip -dtheta_r - dmr/kr times the mean moment, mr^2/(2 kr) on opening). */
 double gb_pair_update(gb_pair *p, const gb_world *w, const double *dX, const double *wall_dx,
                       const gb_material *mat, double tan_phi);
 

@@ -30,9 +30,12 @@ void gb_gem_add_contact(gb_sim *sim, const gb_pair *p, double sign)
     double pn = sign * p->pn, pt = sign * p->pt;
     double fx = c * pn - s * pt, fy = s * pn + c * pt;
     int i = p->i, count = sign > 0 ? 1 : -1;
+    /* Rolling resistance (docs/method.md section 3.1): the moment mr on i, -mr on j; in the DOF
+     * r w its stiffness is kr / r^2, kept at the cap as kt is (K 8). */
+    double ri = sim->g[i].r, mr = sign * p->mr, kr = sign * mat->kr;
     double *F = &sim->F[3 * i], *S = &sim->S[6 * i];
-    F[0] += fx, F[1] += fy, F[2] += pt;
-    S[0] += s00, S[1] += s01, S[2] += -kt * s, S[3] += s11, S[4] += kt * c, S[5] += kt;
+    F[0] += fx, F[1] += fy, F[2] += pt - mr / ri;
+    S[0] += s00, S[1] += s01, S[2] += -kt * s, S[3] += s11, S[4] += kt * c, S[5] += kt + kr / (ri * ri);
     sim->nc[i] += count;
     if (sign > 0) {
         double *one = &sim->one[3 * i];
@@ -41,9 +44,10 @@ void gb_gem_add_contact(gb_sim *sim, const gb_pair *p, double sign)
     if (p->j >= 0) {
         /* B's block T' = [[-c, -s, 0], [s, -c, 1]] (K 25): same moment, opposite force. */
         int j = p->j;
+        double rj = sim->g[j].r;
         F = &sim->F[3 * j], S = &sim->S[6 * j];
-        F[0] -= fx, F[1] -= fy, F[2] += pt;
-        S[0] += s00, S[1] += s01, S[2] += kt * s, S[3] += s11, S[4] += -kt * c, S[5] += kt;
+        F[0] -= fx, F[1] -= fy, F[2] += pt + mr / rj;
+        S[0] += s00, S[1] += s01, S[2] += kt * s, S[3] += s11, S[4] += -kt * c, S[5] += kt + kr / (rj * rj);
         sim->nc[j] += count;
         if (sign > 0) {
             double *one = &sim->one[3 * j];

@@ -167,7 +167,7 @@ gb_status gb_sim_create(const gb_scene *scene, gb_sim **out, gb_error *err)
         gb_pair *p = &sim->pairs.p[k];
         gb_pair_geometry(p, &sim->world);
         p->pn = p->d > 0 ? gb_sim_material(sim, p->j)->kn * p->d : 0;
-        p->pt = 0;
+        p->pt = p->mr = 0;
     }
     for (int c = 0; c < scene->n_contacts; c++) {
         const gb_contact_init *ci = &scene->contacts[c];
@@ -181,8 +181,11 @@ gb_status gb_sim_create(const gb_scene *scene, gb_sim **out, gb_error *err)
                                c, ci->i, GB_PARTICLE_OF(ci->j));
             return gb_fail(err, GB_EINPUT, "initial contact %d (grains %d, %d) does not overlap", c, ci->i, ci->j);
         }
-        /* Seen from the lower index the tangential force keeps its sign (K 25). */
+        /* Seen from the lower index the tangential force keeps its sign (K 25); the rolling moment
+         * on the lower index is the other's with the opposite sign. */
         p->pt = ci->pt;
+        p->mr = i == ci->i ? ci->mr : -ci->mr;
+        if (!(gb_sim_material(sim, p->j)->kr > 0)) p->mr = 0; /* rolling switched off: no moment */
     }
     if (scene->solver.method == GB_METHOD_GLOBAL &&
         (st = gb_global_create((gb_linear_kind)scene->solver.linear, n, sim->bp.n, &sim->global, err))) {
@@ -218,7 +221,7 @@ int gb_sim_contacts(const gb_sim *sim, gb_contact *out, int cap)
         const gb_pair *p = &sim->pairs.p[k];
         if (!(p->d > 0)) continue;
         if (out && m < cap) {
-            gb_contact c = {p->i, p->j, p->nx, p->ny, p->d, p->pn, p->pt, p->diss};
+            gb_contact c = {p->i, p->j, p->nx, p->ny, p->d, p->pn, p->pt, p->diss, p->mr};
             out[m] = c;
         }
         m++;
@@ -233,7 +236,7 @@ double gb_sim_elastic_energy(const gb_sim *sim)
         const gb_pair *p = &sim->pairs.p[k];
         if (!(p->d > 0)) continue;
         const gb_material *m = gb_sim_material(sim, p->j);
-        e += 0.5 * p->pn * p->pn / m->kn + (m->kt > 0 ? 0.5 * p->pt * p->pt / m->kt : 0); /* (K 22) */
+        e += gb_spring_energy(p->pn, p->pt, p->mr, m); /* (K 22) */
     }
     return e;
 }

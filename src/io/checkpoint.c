@@ -19,7 +19,7 @@
 
 /* 2: the load step in progress (a checkpoint within a step) and its states; 1 (before): between
  * steps only, not read. */
-enum { FORMAT = 2 };
+enum { FORMAT = 3 }; /* 3: each pair's rolling moment */
 
 static uint64_t fnv(uint64_t h, const void *data, size_t n)
 {
@@ -47,7 +47,7 @@ gb_status gb_checkpoint_scene_hash(const gb_sim *sim, uint64_t *hash, gb_error *
     for (int i = 0; i < sim->n; i++) h = fnv(h, &sim->g[i], sizeof sim->g[i]);
     for (int q = 0; q < sim->pairs.n; q++) {
         const gb_pair *p = &sim->pairs.p[q];
-        double v[3] = {p->d, p->pn, p->pt};
+        double v[4] = {p->d, p->pn, p->pt, p->mr};
         h = fnv(h, &p->i, sizeof p->i), h = fnv(h, &p->j, sizeof p->j), h = fnv(h, v, sizeof v);
     }
     double box[4] = {sim->box.left, sim->box.right, sim->box.bottom, sim->box.top};
@@ -142,7 +142,7 @@ static void put_state(FILE *f, const char *name, const gb_sim *sim, const gb_sim
     fprintf(f, "pairs %d\n", un != NULL);
     for (int q = 0; q < st->n_pairs; q++) {
         const gb_pair *p = &st->p[q];
-        fprintf(f, "%d %d %a %a %a %a %a %a %d\n", p->i, p->j, p->nx, p->ny, p->d, p->pn, p->pt, p->diss,
+        fprintf(f, "%d %d %a %a %a %a %a %a %a %d\n", p->i, p->j, p->nx, p->ny, p->d, p->pn, p->pt, p->mr, p->diss,
                 un ? un[q] : 0);
     }
     fprintf(f, "particles\n");
@@ -470,7 +470,8 @@ static void get_state(cursor *c, const gb_sim *sim, const char *name, gb_sim_sta
         gb_pair *p = &st->p[q];
         p->i = (int)integer(c, 0, n - 1);
         p->j = (int)integer(c, np > 0 ? GB_PARTICLE_J(np - 1) : -GB_N_WALLS, n - 1);
-        p->nx = num(c), p->ny = num(c), p->d = num(c), p->pn = num(c), p->pt = num(c), p->diss = num(c);
+        p->nx = num(c), p->ny = num(c), p->d = num(c), p->pn = num(c), p->pt = num(c), p->mr = num(c);
+        p->diss = num(c);
         unsigned char flag = (unsigned char)integer(c, 0, 1);
         if (un && *un) (*un)[q] = flag;
     }

@@ -13,8 +13,10 @@
 
 static void material(FILE *f, const char *name, const gb_material *m)
 {
-    fprintf(f, "    %s: {kn: %.17g, kt: %.17g, friction_deg: %.17g, cohesion: %.17g}\n", name, m->kn, m->kt,
+    fprintf(f, "    %s: {kn: %.17g, kt: %.17g, friction_deg: %.17g, cohesion: %.17g", name, m->kn, m->kt,
             m->friction_deg, m->cohesion);
+    if (m->kr > 0) fprintf(f, ", rolling: {kr: %.17g, eta: %.17g}", m->kr, m->eta);
+    fprintf(f, "}\n");
 }
 
 static void stage(FILE *f, const gb_stage *sg)

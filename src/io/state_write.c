@@ -30,19 +30,22 @@ gb_status gb_contacts_csv_write(const char *path, const gb_sim *sim, gb_error *e
     if (!st) {
         /* (xi, yi) - (xj, yj): grain i's centre to grain j's, or to the contact point on a wall or a
          * boundary particle, for drawing force chains. */
-        fprintf(a.f, "i,j,pn,pt,nx,ny,overlap,energy,dissipation,xi,yi,xj,yj\n");
+        int rolling = gb_scene_rolling(sim->scene); /* the column only where there is rolling resistance */
+        fprintf(a.f, "i,j,pn,pt,nx,ny,overlap,energy,dissipation,xi,yi,xj,yj%s\n", rolling ? ",mr" : "");
         const gb_grain *g = gb_sim_grains(sim);
         for (int k = 0; k < m; k++) {
             const gb_material *mat = gb_sim_material(sim, c[k].j);
-            double e = 0.5 * c[k].pn * c[k].pn / mat->kn + (mat->kt > 0 ? 0.5 * c[k].pt * c[k].pt / mat->kt : 0);
+            double e = gb_spring_energy(c[k].pn, c[k].pt, c[k].mr, mat);
             const gb_grain *gi = &g[c[k].i];
             double xj, yj;
             if (c[k].j >= 0) xj = g[c[k].j].x, yj = g[c[k].j].y;
             else xj = gi->x + c[k].nx * (gi->r - c[k].overlap), yj = gi->y + c[k].ny * (gi->r - c[k].overlap);
             char side[32];
             gb_side_name(c[k].j, side, sizeof side);
-            fprintf(a.f, "%d,%s,%.17g,%.17g,%.17g,%.17g,%.17g,%.10e,%.10e,%.17g,%.17g,%.17g,%.17g\n", c[k].i, side,
+            fprintf(a.f, "%d,%s,%.17g,%.17g,%.17g,%.17g,%.17g,%.10e,%.10e,%.17g,%.17g,%.17g,%.17g", c[k].i, side,
                     c[k].pn, c[k].pt, c[k].nx, c[k].ny, c[k].overlap, e, c[k].diss, gi->x, gi->y, xj, yj);
+            if (rolling) fprintf(a.f, ",%.17g", c[k].mr);
+            fprintf(a.f, "\n");
         }
         st = gb_atomic_commit(&a, err);
     }

@@ -62,7 +62,7 @@ void gb_micro_measure(const gb_sim *sim, gb_micro *m)
         if (p->diss > max_diss) max_diss = p->diss;
         if (!(p->d > 0) || !(p->pn > 0)) continue;
         const gb_material *mat = gb_sim_material(sim, p->j);
-        double e = 0.5 * p->pn * p->pn / mat->kn + (mat->kt > 0 ? 0.5 * p->pt * p->pt / mat->kt : 0); /* (K 22) */
+        double e = gb_spring_energy(p->pn, p->pt, p->mr, mat); /* (K 22) */
         double times = p->j >= 0 ? 2 : 1; /* seen from both grains, or from one */
         m->n_contacts++;
         m->n_wall_contacts += p->j < 0;
@@ -101,7 +101,7 @@ void gb_micro_rose(const gb_sim *sim, int nbins, double *count, double *energy)
         const gb_pair *p = &sim->pairs.p[k];
         if (!(p->d > 0) || !(p->pn > 0)) continue;
         const gb_material *mat = gb_sim_material(sim, p->j);
-        double e = 0.5 * p->pn * p->pn / mat->kn + (mat->kt > 0 ? 0.5 * p->pt * p->pt / mat->kt : 0);
+        double e = gb_spring_energy(p->pn, p->pt, p->mr, mat);
         /* Seen from grain i the normal is n; from grain j (if a grain) it is -n. */
         for (int side = 0; side < (p->j >= 0 ? 2 : 1); side++) {
             double a = atan2(side ? -p->ny : p->ny, side ? -p->nx : p->nx);

@@ -137,7 +137,8 @@ static gb_status read_grains_csv(const char *path, gb_scene *s, gb_error *err)
     return st;
 }
 
-/* Contacts file: columns i, j, pt (j a grain index or a wall name); the other columns gembem writes
+/* Contacts file: columns i, j, pt (j a grain index or a wall name), optionally mr (the rolling
+ * moment on grain i, docs/method.md section 3.1); the other columns gembem writes
  * (pn, nx, ny, overlap, energy, dissipation, end points) may be present and are not read: the
  * normal force follows from the overlap. */
 static gb_status read_contacts_csv(const char *path, gb_scene *s, gb_error *err)
@@ -146,16 +147,17 @@ static gb_status read_contacts_csv(const char *path, gb_scene *s, gb_error *err)
     gb_status st = gb_csv_open(path, &csv, err);
     if (st) return st;
     int ci = gb_csv_column(&csv, "i"), cj = gb_csv_column(&csv, "j"), cp = gb_csv_column(&csv, "pt");
+    int cm = gb_csv_column(&csv, "mr");
     static const char *const informative[] = {"pn", "nx", "ny", "overlap", "energy", "dissipation",
                                               "xi", "yi", "xj", "yj"};
     enum { N_INFORMATIVE = sizeof informative / sizeof *informative };
     if (ci < 0 || cj < 0 || cp < 0)
         st = gb_fail(err, GB_EINPUT, "%s:1: the header must name the columns i, j, pt", path);
     for (int k = 0; !st && k < csv.n_header; k++) {
-        int known = k == ci || k == cj || k == cp;
+        int known = k == ci || k == cj || k == cp || k == cm;
         for (int q = 0; q < N_INFORMATIVE; q++) known |= !strcmp(csv.header[k], informative[q]);
         if (!known)
-            st = gb_fail(err, GB_EINPUT, "%s:1:%d: unknown column '%s'; expected i, j, pt and those gembem writes",
+            st = gb_fail(err, GB_EINPUT, "%s:1:%d: unknown column '%s'; expected i, j, pt, mr and those gembem writes",
                          path, csv.column[k], csv.header[k]);
     }
     int cap = 1024;
@@ -170,8 +172,10 @@ static gb_status read_contacts_csv(const char *path, gb_scene *s, gb_error *err)
             }
             s->contacts = c;
         }
-        double i, j = 0, pt;
-        if ((st = gb_csv_number(&csv, ci, &i, err)) || (st = gb_csv_number(&csv, cp, &pt, err))) break;
+        double i, j = 0, pt, mr = 0;
+        if ((st = gb_csv_number(&csv, ci, &i, err)) || (st = gb_csv_number(&csv, cp, &pt, err)) ||
+            (cm >= 0 && (st = gb_csv_number(&csv, cm, &mr, err))))
+            break;
         int wall = gb_wall_from_name(csv.field[cj]), particle = -1;
         /* a boundary particle of a host, p<e> (a hybrid run's state) */
         if (s->host.present && csv.field[cj][0] == 'p' && csv.field[cj][1] >= '0' && csv.field[cj][1] <= '9') {
@@ -200,7 +204,7 @@ static gb_status read_contacts_csv(const char *path, gb_scene *s, gb_error *err)
             st = gb_csv_fail(&csv, cj, err, "another grain's index of the grains file");
             break;
         }
-        gb_contact_init c = {(int)i, wall >= 0 ? -1 - wall : particle >= 0 ? -1 - GB_N_WALLS - particle : (int)j, pt};
+        gb_contact_init c = {(int)i, wall >= 0 ? -1 - wall : particle >= 0 ? -1 - GB_N_WALLS - particle : (int)j, pt, mr};
         s->contacts[s->n_contacts++] = c;
     }
     gb_csv_close(&csv);

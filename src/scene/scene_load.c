@@ -47,6 +47,7 @@ static gb_status read_material(gb_ymap *parent, const char *key, gb_material *ma
     gb_ymap m;
     gb_status st;
     mat->cohesion = 0;
+    mat->kr = mat->eta = 0;
     if ((st = gb_ymap_map(parent, key, GB_Y_REQUIRED, &m, err)) ||
         (st = gb_ymap_number(&m, "kn", GB_Y_REQUIRED | GB_Y_POSITIVE, &mat->kn, err)) ||
         (st = gb_ymap_number(&m, "kt", GB_Y_REQUIRED | GB_Y_NONNEG, &mat->kt, err)) ||
@@ -59,6 +60,20 @@ static gb_status read_material(gb_ymap *parent, const char *key, gb_material *ma
         return gb_yaml_fail(m.doc, v, err, "%s.friction_deg: expected an angle from 0 to below 90 degrees, found "
                             "%g; for a friction coefficient mu give atan(mu) in degrees (mu 0.5: 26.6)", m.name,
                             mat->friction_deg);
+    }
+    struct fy_node *rolling;
+    if ((st = gb_ymap_find(&m, "rolling", 0, &rolling, err))) return st;
+    if (rolling) {
+        /* Boundary particles do not rotate and pass no moment to the host. */
+        if (!strcmp(key, "grain_boundary"))
+            return gb_yaml_fail(m.doc, rolling, err, "%s.rolling: boundary particles carry no moment; give rolling "
+                                "resistance in grain_grain and grain_wall only", m.name);
+        gb_ymap r;
+        if ((st = gb_ymap_map(&m, "rolling", 0, &r, err)) ||
+            (st = gb_ymap_number(&r, "kr", GB_Y_REQUIRED | GB_Y_POSITIVE, &mat->kr, err)) ||
+            (st = gb_ymap_number(&r, "eta", GB_Y_REQUIRED | GB_Y_POSITIVE, &mat->eta, err)) ||
+            (st = gb_ymap_close(&r, err)))
+            return st;
     }
     return gb_ymap_close(&m, err);
 }
@@ -527,7 +542,7 @@ static gb_status load(const gb_yaml_doc *doc, gb_scene *s, gb_bem_mesh *mesh, gb
         return st;
     /* Grains against boundary particles: normal springs only unless the scene says otherwise
      * (the hybrid paper's Table 1). */
-    gb_material gbm = {s->grain_grain.kn, 0, 0, 0};
+    gb_material gbm = {s->grain_grain.kn, 0, 0, 0, 0, 0};
     s->grain_boundary = gbm;
     struct fy_node *gbn;
     if ((st = gb_ymap_find(&mats, "grain_boundary", 0, &gbn, err))) return st;

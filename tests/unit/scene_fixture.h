@@ -10,7 +10,7 @@ static inline gb_scene fixture_scene(gb_grain *grains, int n, gb_box box, double
 {
     gb_scene s;
     memset(&s, 0, sizeof s);
-    gb_material m = {kn, kt, phi_deg, 0};
+    gb_material m = {kn, kt, phi_deg, 0, 0, 0};
     s.grain_grain = s.grain_wall = m;
     s.grains = grains;
     s.n_grains = n;

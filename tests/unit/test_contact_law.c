@@ -7,7 +7,7 @@ int main(void)
 {
     gb_grain g[2] = {{0, 0, 1, 0}, {1.99, 0, 1, 0}};
     gb_box box = {-100, 100, -100, 100};
-    gb_material m = {1e8, 7e7, 30, 0};
+    gb_material m = {1e8, 7e7, 30, 0, 0, 0};
     double tan_phi = tan(30 * 3.14159265358979323846 / 180);
     double walls[8] = {0};
     double dX[6] = {0};

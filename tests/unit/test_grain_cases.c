@@ -30,7 +30,7 @@ int main(void)
     {   /* a) a grain in the corner against two walls, tangential forces preloaded, body force. */
         gb_grain g[1] = {{1 - 2e-3, 1 - 1e-3, 1, 0}};
         gb_box box = {0, 10, 0, 10};
-        gb_contact_init ci[2] = {{0, -1 - GB_WALL_LEFT, 3e4}, {0, -1 - GB_WALL_BOTTOM, -5e4}};
+        gb_contact_init ci[2] = {{0, -1 - GB_WALL_LEFT, 3e4, 0}, {0, -1 - GB_WALL_BOTTOM, -5e4, 0}};
         gb_sim *sim = make(g, 1, box, KT, 2e4, -7e4, &s, ci, 2);
         CHECK(sim->nc[0] == 2);
         double F0[3] = {sim->F[0], sim->F[1], sim->F[2]};

@@ -1,0 +1,90 @@
+#!/usr/bin/env bash
+# Rolling resistance (docs/method.md section 3.1), issue 20 item 1: the oedometric path of
+# check_equilibrium.sh from the jammed fixture with rolling springs on every contact
+# (kr = kt R*^2 of the mean R*, eta 0.1), with each solver (reference, global, global line search).
+#  - tools/check_equilibrium.py recomputes every grain's force and moment from the positions, the
+#    stored tangential forces and the stored rolling moments (the contacts file's column mr) and
+#    checks the rolling limit |mr| <= eta R* pn; tools/check_step_error.py recomputes steps.csv's
+#    error columns with the moments;
+#  - the moments matter: some are nonzero, some at their limit, and the run's stresses differ from
+#    the same path without rolling;
+#  - negative controls: a moment changed by 500 dyn cm (the grains' moment balance fails), a moment past
+#    its limit (the limit check fails);
+#  - the state is read back exactly: a `relax` stage from it ends where it starts, mr unchanged
+#    to the last digit.
+#   check_equilibrium_rolling.sh GEMBEM JAMMED_DIR OUT_DIR
+set -euo pipefail
+gembem=$1 jammed=$2 out=$3
+check=$(cd "$(dirname "$0")/../.." && pwd)/tools/check_equilibrium.py
+steperr=$(dirname "$check")/check_step_error.py
+rm -rf "$out"; mkdir -p "$out"
+fails=0
+ok() { echo "ok: $*"; }
+bad() { echo "FAIL: $*"; fails=$((fails + 1)); }
+rolling="rolling: {kr: 2.5e6, eta: 0.1}"
+for method in reference global line_search; do
+  solver="method: $method"; [ $method = line_search ] && solver="method: global, newton: line_search"
+  sed -e "s|^grains: {file: jammed.csv}|grains: {file: $jammed/jammed.csv}|" \
+      -e "s|^solver: .*|solver: {$solver, accuracy: 100, max_iterations: 2000000}|" \
+      -e "s|friction_deg: 25}|friction_deg: 25, $rolling}|" -e "s|friction_deg: 0}|friction_deg: 0, $rolling}|" \
+      -e '/^loading:/,$d' "$jammed/scene.yaml" > "$out/$method.yaml"
+  grep -q "grain_wall: .*rolling" "$out/$method.yaml" || { echo "the scene has no rolling key"; exit 1; }
+  printf 'loading:\n  - strain: {de1: 0.0005, de2: 0, steps: 4}\n' >> "$out/$method.yaml"
+  OPENBLAS_NUM_THREADS=1 "$gembem" run "$out/$method.yaml" -o "$out/$method" --quiet > /dev/null
+  if /usr/bin/python3 "$check" "$out/$method"; then ok "$method: the final state is an equilibrium with rolling moments"
+  else bad "$method: the final state is not an equilibrium"; fi
+  if /usr/bin/python3 "$steperr" "$out/$method"; then ok "$method: steps.csv's error columns recomputed"
+  else bad "$method: steps.csv's error columns differ from the state's"; fi
+done
+# The moments are there: nonzero on most contacts, some at the limit eta R* pn.
+if /usr/bin/python3 - "$out/reference" <<'EOF'
+import csv, sys
+run = sys.argv[1]
+g = list(csv.DictReader(open(f"{run}/state_grains.csv")))
+rows = list(csv.DictReader(open(f"{run}/state_contacts.csv")))
+nonzero = at_limit = 0
+for c in rows:
+    ri = float(g[int(c["i"])]["r"])
+    rs = ri if not c["j"].isdigit() else ri * float(g[int(c["j"])]["r"]) / (ri + float(g[int(c["j"])]["r"]))
+    mr, limit = abs(float(c["mr"])), 0.1 * rs * float(c["pn"])
+    nonzero += mr > 0
+    at_limit += mr >= limit * (1 - 1e-9)
+print(f"  {len(rows)} contacts, {nonzero} with a rolling moment, {at_limit} at the limit")
+sys.exit(0 if nonzero > len(rows) / 2 and at_limit > 0 else 1)
+EOF
+then ok "rolling moments on most contacts, some at their limit"; else bad "too few rolling moments"; fi
+# Rolling changes the answer: the stresses of the same path without it differ.
+sed -e "s|, $rolling||" "$out/reference.yaml" > "$out/none.yaml"
+OPENBLAS_NUM_THREADS=1 "$gembem" run "$out/none.yaml" -o "$out/none" --quiet > /dev/null
+last_s() { awk -F, 'NR == 1 { for (k = 1; k <= NF; k++) c[$k] = k } END { print $c["s1"], $c["s2"] }' "$1/steps.csv"; }
+s_with=$(last_s "$out/reference"); s_none=$(last_s "$out/none")
+if [ "$s_with" != "$s_none" ] && ! head -1 "$out/none/state_contacts.csv" | grep -q mr; then
+  ok "without the rolling key: no mr column, another path (s1 s2: $s_none against $s_with)"
+else bad "rolling did not change the run, or a scene without it writes mr"; fi
+# Negative controls: the checker must refuse these.
+col=$(head -1 "$out/global/state_contacts.csv" | tr , '\n' | grep -nx mr | cut -d: -f1)
+cp -r "$out/global" "$out/moment"
+# the grain-grain contact with the largest pn (its limit is far): mr + 500 dyn cm, 1e3 dyn of moment / r
+awk -F, -v c=$col 'NR == FNR { if (FNR > 1 && $2 ~ /^[0-9]+$/ && $3 > best) { best = $3; row = FNR }; next }
+  FNR == row { $c = sprintf("%.17g", $c + 500) } 1' OFS=, \
+  "$out/global/state_contacts.csv" "$out/global/state_contacts.csv" > "$out/moment/state_contacts.csv"
+if /usr/bin/python3 "$check" "$out/moment" > "$out/moment.log" || ! grep -q "fixing force" "$out/moment.log" ||
+   grep -q "rolling moment exceeds" "$out/moment.log"; then
+  bad "a rolling moment changed by 500 dyn cm passed"
+else ok "a rolling moment changed by 500 dyn cm fails the moment balance: $(grep FAIL "$out/moment.log")"; fi
+cp -r "$out/global" "$out/limit"
+awk -F, -v c=$col 'NR > 1 && $2 ~ /^[0-9]+$/ && !done { $c = sprintf("%.17g", 0.05 * $3); done = 1 } 1' OFS=, \
+  "$out/global/state_contacts.csv" > "$out/limit/state_contacts.csv"
+if /usr/bin/python3 "$check" "$out/limit" > "$out/limit.log" || ! grep -q "rolling moment exceeds" "$out/limit.log"; then
+  bad "a rolling moment of 0.05 pn (the limit is at most 0.1 x 0.225 pn) passed"
+else ok "a rolling moment past its limit fails"; fi
+# Read back exactly: relax from the state; it is an equilibrium, so nothing moves and mr is unchanged.
+sed -e '/^grains:/d' -e '/^box:/d' -e '/^loading:/,$d' "$out/reference.yaml" > "$out/restart.yaml"
+printf 'initial_state: reference/state.yaml\nloading:\n  - relax: {steps: 1}\n' >> "$out/restart.yaml"
+OPENBLAS_NUM_THREADS=1 "$gembem" run "$out/restart.yaml" -o "$out/restart" --quiet > /dev/null 2> "$out/restart.log"
+cols() { awk -F, 'NR == 1 { for (k = 1; k <= NF; k++) c[$k] = k } { print $c["i"], $c["j"], $c["pn"], $c["pt"], $c["mr"] }' "$1"; }
+if [ "$(cols "$out/reference/state_contacts.csv")" = "$(cols "$out/restart/state_contacts.csv")" ] &&
+   grep -q mr "$out/restart/state_contacts.csv"; then
+  ok "a restart from the state reads every rolling moment back exactly"
+else bad "the restarted state's contacts differ"; fi
+[ $fails = 0 ] || { echo "$fails failure(s)"; exit 1; }
