@@ -38,8 +38,8 @@ void gb_gem_add_contact(gb_sim *sim, const gb_pair *p, double sign)
     S[0] += s00, S[1] += s01, S[2] += -kt * s, S[3] += s11, S[4] += kt * c, S[5] += kt + kr / (ri * ri);
     sim->nc[i] += count;
     if (sign > 0) {
-        double *one = &sim->one[3 * i];
-        one[0] = c, one[1] = s, one[2] = mat->kn;
+        double *one = &sim->one[GB_ONE * i];
+        one[0] = c, one[1] = s, one[2] = mat->kn, one[3] = mat->kr;
     }
     if (p->j >= 0) {
         /* B's block T' = [[-c, -s, 0], [s, -c, 1]] (K 25): same moment, opposite force. */
@@ -50,8 +50,8 @@ void gb_gem_add_contact(gb_sim *sim, const gb_pair *p, double sign)
         S[0] += s00, S[1] += s01, S[2] += kt * s, S[3] += s11, S[4] += -kt * c, S[5] += kt + kr / (rj * rj);
         sim->nc[j] += count;
         if (sign > 0) {
-            double *one = &sim->one[3 * j];
-            one[0] = -c, one[1] = -s, one[2] = mat->kn;
+            double *one = &sim->one[GB_ONE * j];
+            one[0] = -c, one[1] = -s, one[2] = mat->kn, one[3] = mat->kr;
         }
     } else if (GB_IS_PARTICLE(p->j)) {
         /* A boundary particle: the translational part of T' (K 25). */
@@ -113,10 +113,15 @@ void gb_gem_grain_move(const gb_sim *sim, int i, double dX[3])
         /* c) one contact (K 11): normal move by the normal stiffness; tangentially the grain rolls
          * over its neighbour under the body force. Rolling means du_t = 0, i.e. r dw = -(dx.t): the
          * printed third row (0, 1) of (K 11) contradicts the paper's own du_t = 0, we keep du_t = 0. */
-        const double *one = &sim->one[3 * i];
-        double c = one[0], s = one[1], knc = one[2];
+        const double *one = &sim->one[GB_ONE * i];
+        double c = one[0], s = one[1], knc = one[2], krc = one[3];
         double a = -sv->alpha1 * (F[0] * c + F[1] * s) / knc;
         double b = sv->beta1 * (-B[0] * s + B[1] * c) / knc;
+        /* With rolling resistance (docs/method.md section 3.1) the rolling spring resists this
+         * roll: rolling by r dw (du_t = 0, pt unchanged) changes F's moment / r by kr dw / r, so
+         * the roll also relaxes it, by alpha'. Without this a grain left with one contact keeps
+         * the moment mr of its lost neighbour's time and never converges. */
+        if (krc > 0) b += sv->alpha1 * F[2] * sim->g[i].r * sim->g[i].r / krc;
         dX[0] = c * a - s * b;
         dX[1] = s * a + c * b;
         dX[2] = -b;
@@ -285,7 +290,10 @@ double gb_gem_merit(const gb_sim *sim, const unsigned char *in_system, double wa
  * with kt in K even if it slides: the grain must unload it; a frictionless one with a tangent
  * stiffness of its own, see tangents() in src/global/global.c), where moved apart by the reference
  * case c) it would trade its force back and forth with the system every iteration (a two-cycle
- * that decays by a few per cent per iteration). With a body force it rolls: case c). */
+ * that decays by a few per cent per iteration). With a body force it rolls: case c). With rolling
+ * resistance (docs/method.md section 3.1) the rolling spring holds that mode: the grain moves with
+ * its rotation (GB_IN_SYSTEM_SINGLE), its contact's kt and kr kept in K even at their limits, so
+ * that the moment it kept from a lost neighbour relaxes. */
 static void mark_system(gb_sim *sim)
 {
     for (int i = 0; i < sim->n; i++) sim->in_system[i] = sim->nc[i] >= 2 ? GB_IN_SYSTEM : 0;
@@ -296,7 +304,7 @@ static void mark_system(gb_sim *sim)
         for (int e = 0; e < 2; e++) {
             int i = ends[e];
             if (i >= 0 && sim->nc[i] == 1 && sim->body[2 * i] == 0 && sim->body[2 * i + 1] == 0)
-                sim->in_system[i] = GB_IN_SYSTEM_NO_ROTATION;
+                sim->in_system[i] = gb_sim_material(sim, p->j)->kr > 0 ? GB_IN_SYSTEM_SINGLE : GB_IN_SYSTEM_NO_ROTATION;
         }
     }
 }

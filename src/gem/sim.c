@@ -123,7 +123,7 @@ gb_status gb_sim_create(const gb_scene *scene, gb_sim **out, gb_error *err)
     sim->S = calloc(nn * 6, sizeof(double));
     sim->dX = calloc(nn * 3, sizeof(double));
     sim->nc = calloc(nn, sizeof(int));
-    sim->one = calloc(nn * 3, sizeof(double));
+    sim->one = calloc(nn * GB_ONE, sizeof(double));
     sim->in_system = calloc(nn, 1);
     if (!sim->g || !sim->body || !sim->F || !sim->S || !sim->dX || !sim->nc || !sim->one || !sim->in_system) {
         gb_sim_free(sim);

@@ -97,7 +97,8 @@ struct gb_sim {
     double *S;          /* contact stiffness per grain (K 8): s00 s01 s02 s11 s12 s22 */
     double *dX;         /* move of the iteration: dx, dy, r dw */
     int *nc;            /* contacts per grain */
-    double *one;        /* per grain, of its last contact: normal towards the other side, kn */
+    double *one;        /* per grain, GB_ONE values of its last contact: normal towards the other side, kn, kr */
+#define GB_ONE 4
     gb_pair_list pairs;
     gb_world world;     /* what the grains touch: themselves, the box's walls, boundary particles */
     gb_particles bp;    /* boundary particles (none without a host) */
@@ -122,6 +123,9 @@ struct gb_sim {
 /* sim->in_system: 0 moved by the reference cases, else by the global system, its rotation held or not */
 #define GB_IN_SYSTEM 1
 #define GB_IN_SYSTEM_NO_ROTATION 2
+/* a grain without body force with a single contact that has rolling resistance: in the system with
+ * its rotation (the rolling spring holds it), the contact's kt and kr kept in K (mark_system) */
+#define GB_IN_SYSTEM_SINGLE 3
     double lm_history[LM_MEMORY]; /* merits before the last accepted moves */
     double lm_best;               /* lowest merit of the load step (stall detection) */
     long lm_since;                /* moves since one brought it below LM_STALL_FACTOR x lm_best */

@@ -134,8 +134,9 @@ static void fix_single(gb_sim *sim, int i)
         const gb_pair *p = &sim->pairs.p[w->adj[q]];
         if (!(p->d > 0)) continue;
         double sign = p->i == i ? 1 : -1;
-        sim->one[3 * i] = sign * p->nx, sim->one[3 * i + 1] = sign * p->ny;
-        sim->one[3 * i + 2] = gb_sim_material(sim, p->j)->kn;
+        const gb_material *m = gb_sim_material(sim, p->j);
+        double *one = &sim->one[GB_ONE * i];
+        one[0] = sign * p->nx, one[1] = sign * p->ny, one[2] = m->kn, one[3] = m->kr;
     }
 }
 

@@ -20,10 +20,12 @@ double gb_global_wall_lever(const gb_sim *sim, int w, int wall)
 }
 
 /* The rolling stiffness of a contact in the tangent (docs/method.md section 3.1): kr, or 0 at the
- * cap eta R* pn (it rolls on, as a sliding contact slides). */
-static double rolling_k(const gb_sim *sim, const gb_pair *p, const gb_material *m)
+ * cap eta R* pn (it rolls on, as a sliding contact slides) unless the contact sticks (gl->stick:
+ * a grain's single contact). */
+static double rolling_k(const gb_global *gl, const gb_sim *sim, const gb_pair *p, int k, const gb_material *m)
 {
     if (!(m->kr > 0)) return 0;
+    if (gl->stick[k]) return m->kr;
     double limit = m->eta * gb_pair_rolling_radius(p, &sim->world) * p->pn;
     return fabs(p->mr) >= limit * (1 - 1e-9) ? 0 : m->kr;
 }
@@ -69,7 +71,7 @@ void gb_global_tangents(gb_global *gl, const gb_sim *sim)
         gl->slide[k] = !(kt > 0) && exact && p->pt != 0 && (p->j >= 0 || GB_IS_PARTICLE(p->j)) ? (p->pt > 0 ? 1 : -1) * kn * gb_sim_tan_phi(sim, p->j) : 0;
         double c = p->nx, s = p->ny;
         double s00 = kn * c * c + kt * s * s, s01 = (kn - kt) * c * s, s11 = kn * s * s + kt * c * c;
-        double *S = &gl->S[6 * p->i], kr = rolling_k(sim, p, m), ri = sim->g[p->i].r;
+        double *S = &gl->S[6 * p->i], kr = rolling_k(gl, sim, p, k, m), ri = sim->g[p->i].r;
         S[0] += s00, S[1] += s01, S[2] += -kt * s, S[3] += s11, S[4] += kt * c, S[5] += kt + kr / (ri * ri);
         if (p->j >= 0) {
             double rj = sim->g[p->j].r;
@@ -108,7 +110,7 @@ static void add_exact_diagonal(gb_global *gl, const gb_sim *sim, const gb_pair *
     }
     double rj = p->j >= 0 ? sim->g[p->j].r : sim->bp.r[GB_PARTICLE_OF(p->j)];
     const gb_material *m = gb_sim_material(sim, p->j);
-    if (p->j >= 0 && m->kr > 0 && rolling_k(sim, p, m) == 0 && p->mr != 0) {
+    if (p->j >= 0 && m->kr > 0 && rolling_k(gl, sim, p, k, m) == 0 && p->mr != 0) {
         /* A rolling moment at its cap follows the overlap: mr = +-eta R* kn d, d(d)/dx_i = n = -d(d)/dx_j;
          * on i the fixing force's third row is -mr / r_i, on j +mr / r_j (docs/method.md section 3.1). */
         double g = (p->mr > 0 ? 1 : -1) * m->eta * gb_pair_rolling_radius(p, &sim->world) * m->kn, ri = sim->g[i].r;
@@ -212,7 +214,7 @@ void gb_global_assemble(gb_global *gl, const gb_sim *sim, double shift)
                 add(gl, j, b, gl->pos_ij[k], a, v + sl * r2[a] * q1[b]); /* (i, a) row, (j, b) column */
                 add(gl, i, a, gl->pos_ji[k], b, v + sl * q2[b] * r1[a]); /* (j, b) row, (i, a) column */
             }
-        double kr = p->j >= 0 ? rolling_k(sim, p, mat) : 0;
+        double kr = p->j >= 0 ? rolling_k(gl, sim, p, k, mat) : 0;
         if (kr > 0 && !held[3 * i + 2] && !held[gl->dof0[j] + 2]) {
             /* Rolling: F_i's third row holds -mr / r_i, F_j's +mr / r_j, mr -= kr (dw_i - dw_j). */
             double v = -kr / (sim->g[i].r * sim->g[p->j].r);

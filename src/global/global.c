@@ -452,8 +452,9 @@ gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const gb_wall_control *wc,
     /* A grain with a single contact in the system keeps that contact's kt (see mark_system). */
     for (int k = 0; k < sim->pairs.n; k++) {
         const gb_pair *p = &sim->pairs.p[k];
-        gl->stick[k] = p->d > 0 && (gl->unloading[k] || sim->in_system[p->i] == GB_IN_SYSTEM_NO_ROTATION ||
-                                    (p->j >= 0 && sim->in_system[p->j] == GB_IN_SYSTEM_NO_ROTATION));
+        int single_i = sim->in_system[p->i] >= GB_IN_SYSTEM_NO_ROTATION; /* NO_ROTATION or SINGLE */
+        int single_j = p->j >= 0 && sim->in_system[p->j] >= GB_IN_SYSTEM_NO_ROTATION;
+        gl->stick[k] = p->d > 0 && (gl->unloading[k] || single_i || single_j);
     }
     gb_global_tangents(gl, sim);
     gl->stats.assemble += gb_clock_seconds() - t0;

@@ -9,7 +9,10 @@
  *     by each solver: the walls' normals are fixed, so the springs are linear and the equilibrium
  *     is exact: u = s/2, w = -kt s r / (2 (kt r^2 + kr)), mr = -kr w on each wall (below the
  *     limit); at the limit mr = eta r pn and w = (2 mr / r - kt s) / (2 kt r).
- *     Without rolling resistance the disc rolls freely (w = -s / 2r, no force). */
+ *     Without rolling resistance the disc rolls freely (w = -s / 2r, no force);
+ *  4. a disc on the bottom wall alone under its weight, its contact holding a moment m0 (from a lost
+ *     neighbour): each solver rolls it (case c, K 11: du_t = 0) until the rolling spring is unloaded,
+ *     w = m0 / kr, x moved by -r w. */
 #include <math.h>
 #include <string.h>
 
@@ -212,6 +215,35 @@ static void sheared_disc(int solver, double kr, double eta, double tol_w)
     gb_sim_free(sim);
 }
 
+static void single_contact(int solver)
+{
+    double r = 1, W = 1e5, kr = 2e6, m0 = 500;
+    gb_grain g[1] = {{5, r - W / KN, r, 0}};
+    gb_box box = {0, 10, 0, 10};
+    gb_scene s = fixture_scene(g, 1, box, KN, KT, 30);
+    s.grain_wall.kr = kr, s.grain_wall.eta = 0.1;
+    s.body_force_per_area[1] = -W / (3.14159265358979323846 * r * r);
+    gb_contact_init ci[1] = {{0, -1 - GB_WALL_BOTTOM, 0, m0}};
+    s.contacts = ci, s.n_contacts = 1;
+    s.solver.accuracy = 1e-3;
+    s.solver.method = solver ? GB_METHOD_GLOBAL : GB_METHOD_REFERENCE;
+    s.solver.linear = GB_LINEAR_UMFPACK;
+    gb_error err;
+    gb_sim *sim;
+    CHECK(gb_sim_create(&s, &sim, &err) == GB_OK);
+    gb_wall_control wc = {GB_WALLS_FIXED, 0, 0, 0};
+    long it = 0;
+    double mf, wr;
+    CHECK(gb_gem_relax(sim, &wc, 100000, &it, &mf, &wr, &err) == GB_OK);
+    gb_pair *p = pair_of(sim, 0, -1 - GB_WALL_BOTTOM);
+    printf("single contact with a moment, %s: %ld iterations, w %.10g (analytic %.10g), mr %.3g, pt %.3g\n",
+           solver ? "global" : "reference", it, sim->g[0].rot, m0 / kr, p->mr, p->pt);
+    CHECK_NEAR(sim->g[0].rot, m0 / kr, 1e-3 * m0 / kr);
+    CHECK_NEAR(sim->g[0].x - 5, -r * m0 / kr, 1e-3 * r * m0 / kr);
+    CHECK_NEAR(p->mr, 0, 1e-3 * m0);
+    gb_sim_free(sim);
+}
+
 int main(void)
 {
     law();
@@ -223,5 +255,7 @@ int main(void)
         sheared_disc(solver, 0.5 * KT, 0.005, 1e-9); /* at the limit 500 */
         sheared_disc(solver, 0, 0, 1e-9);            /* none: rolls freely */
     }
+    single_contact(0);
+    single_contact(1);
     TEST_END();
 }
