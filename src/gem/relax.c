@@ -109,19 +109,18 @@ void gb_gem_grain_move(const gb_sim *sim, int i, double dX[3])
         dX[1] = sv->beta * B[1] / kn;
         return;
     }
-    if (nc == 1) {
+    /* With rolling resistance (docs/method.md section 3.1) one contact holds a grain in all three
+     * directions (kn, kt and kr: S is regular) and can hold it against its weight, as a block on a
+     * slope: case a). Rolling it over by case c) would keep the tangential force that its lost
+     * neighbours left, which nothing else relaxes. */
+    if (nc == 1 && !(sim->one[GB_ONE * i + 3] > 0)) {
         /* c) one contact (K 11): normal move by the normal stiffness; tangentially the grain rolls
          * over its neighbour under the body force. Rolling means du_t = 0, i.e. r dw = -(dx.t): the
          * printed third row (0, 1) of (K 11) contradicts the paper's own du_t = 0, we keep du_t = 0. */
         const double *one = &sim->one[GB_ONE * i];
-        double c = one[0], s = one[1], knc = one[2], krc = one[3];
+        double c = one[0], s = one[1], knc = one[2];
         double a = -sv->alpha1 * (F[0] * c + F[1] * s) / knc;
         double b = sv->beta1 * (-B[0] * s + B[1] * c) / knc;
-        /* With rolling resistance (docs/method.md section 3.1) the rolling spring resists this
-         * roll: rolling by r dw (du_t = 0, pt unchanged) changes F's moment / r by kr dw / r, so
-         * the roll also relaxes it, by alpha'. Without this a grain left with one contact keeps
-         * the moment mr of its lost neighbour's time and never converges. */
-        if (krc > 0) b += sv->alpha1 * F[2] * sim->g[i].r * sim->g[i].r / krc;
         dX[0] = c * a - s * b;
         dX[1] = s * a + c * b;
         dX[2] = -b;
@@ -291,9 +290,9 @@ double gb_gem_merit(const gb_sim *sim, const unsigned char *in_system, double wa
  * stiffness of its own, see tangents() in src/global/global.c), where moved apart by the reference
  * case c) it would trade its force back and forth with the system every iteration (a two-cycle
  * that decays by a few per cent per iteration). With a body force it rolls: case c). With rolling
- * resistance (docs/method.md section 3.1) the rolling spring holds that mode: the grain moves with
- * its rotation (GB_IN_SYSTEM_SINGLE), its contact's kt and kr kept in K even at their limits, so
- * that the moment it kept from a lost neighbour relaxes. */
+ * resistance (docs/method.md section 3.1) on its contact the rolling spring holds that mode, with
+ * or without a body force: the grain moves with the system, its rotation too (GB_IN_SYSTEM_SINGLE),
+ * its contact's kt and kr kept in K even at their limits (its block stays regular). */
 static void mark_system(gb_sim *sim)
 {
     for (int i = 0; i < sim->n; i++) sim->in_system[i] = sim->nc[i] >= 2 ? GB_IN_SYSTEM : 0;
@@ -303,8 +302,9 @@ static void mark_system(gb_sim *sim)
         int ends[2] = {p->i, p->j >= 0 ? p->j : -1};
         for (int e = 0; e < 2; e++) {
             int i = ends[e];
-            if (i >= 0 && sim->nc[i] == 1 && sim->body[2 * i] == 0 && sim->body[2 * i + 1] == 0)
-                sim->in_system[i] = gb_sim_material(sim, p->j)->kr > 0 ? GB_IN_SYSTEM_SINGLE : GB_IN_SYSTEM_NO_ROTATION;
+            if (i < 0 || sim->nc[i] != 1) continue;
+            if (gb_sim_material(sim, p->j)->kr > 0) sim->in_system[i] = GB_IN_SYSTEM_SINGLE;
+            else if (sim->body[2 * i] == 0 && sim->body[2 * i + 1] == 0) sim->in_system[i] = GB_IN_SYSTEM_NO_ROTATION;
         }
     }
 }

@@ -123,8 +123,8 @@ struct gb_sim {
 /* sim->in_system: 0 moved by the reference cases, else by the global system, its rotation held or not */
 #define GB_IN_SYSTEM 1
 #define GB_IN_SYSTEM_NO_ROTATION 2
-/* a grain without body force with a single contact that has rolling resistance: in the system with
- * its rotation (the rolling spring holds it), the contact's kt and kr kept in K (mark_system) */
+/* a grain with a single contact that has rolling resistance: in the system with its rotation (the
+ * rolling spring holds it), the contact's kt and kr kept in K (mark_system) */
 #define GB_IN_SYSTEM_SINGLE 3
     double lm_history[LM_MEMORY]; /* merits before the last accepted moves */
     double lm_best;               /* lowest merit of the load step (stall detection) */

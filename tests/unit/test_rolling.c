@@ -11,8 +11,9 @@
  *     limit); at the limit mr = eta r pn and w = (2 mr / r - kt s) / (2 kt r).
  *     Without rolling resistance the disc rolls freely (w = -s / 2r, no force);
  *  4. a disc on the bottom wall alone under its weight, its contact holding a moment m0 (from a lost
- *     neighbour): each solver rolls it (case c, K 11: du_t = 0) until the rolling spring is unloaded,
- *     w = m0 / kr, x moved by -r w. */
+ *     neighbour): one contact with rolling resistance holds the disc (case a, not c), and each solver
+ *     brings it to pt = 0 and mr = 0; the wall's normal is fixed, so the springs are linear and the
+ *     path is exact: w = m0 / kr, x moved by -r w. */
 #include <math.h>
 #include <string.h>
 
