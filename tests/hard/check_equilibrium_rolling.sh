@@ -11,7 +11,8 @@
 #  - negative controls: a moment changed by 500 dyn cm (the grains' moment balance fails), a moment past
 #    its limit (the limit check fails);
 #  - the state is read back exactly: a `relax` stage from it ends where it starts, mr unchanged
-#    to the last digit.
+#    to the last digit; and a run killed and resumed from its checkpoint ends byte for byte as the
+#    run that was not.
 #   check_equilibrium_rolling.sh GEMBEM JAMMED_DIR OUT_DIR
 set -euo pipefail
 gembem=$1 jammed=$2 out=$3
@@ -87,4 +88,16 @@ if [ "$(cols "$out/reference/state_contacts.csv")" = "$(cols "$out/restart/state
    grep -q mr "$out/restart/state_contacts.csv"; then
   ok "a restart from the state reads every rolling moment back exactly"
 else bad "the restarted state's contacts differ"; fi
+# And through a checkpoint (format 3 carries mr): killed at its 25th output write (GB_TEST_KILL_AT,
+# tests/cli/run_resume.sh), resumed to the end, the same final contacts byte for byte.
+sed -e 's/^loading:/output: {checkpoint_every: 1}\nloading:/' "$out/reference.yaml" > "$out/ck.yaml"
+OPENBLAS_NUM_THREADS=1 "$gembem" run "$out/ck.yaml" -o "$out/ck_full" --quiet > /dev/null 2>&1
+(GB_TEST_KILL_AT=25 OPENBLAS_NUM_THREADS=1 "$gembem" run "$out/ck.yaml" -o "$out/ck_kill" --quiet > /dev/null 2>&1) 2> /dev/null || true
+for k in 1 2 3 4 5; do
+  grep -q '^4,' "$out/ck_kill/steps.csv" 2> /dev/null && [ -f "$out/ck_kill/state.yaml" ] && break
+  OPENBLAS_NUM_THREADS=1 "$gembem" run --resume "$out/ck_kill" --quiet > /dev/null 2>&1 || true
+done
+if grep -q 'interrupted: 1' "$out/ck_kill/run_info.yaml" && cmp -s "$out/ck_full/state_contacts.csv" "$out/ck_kill/state_contacts.csv"; then
+  ok "killed and resumed from a checkpoint: the same rolling moments, byte for byte"
+else bad "a run resumed from a checkpoint ends with other contacts (or was not interrupted)"; fi
 [ $fails = 0 ] || { echo "$fails failure(s)"; exit 1; }
