@@ -4,11 +4,11 @@ stress (host_field.vtu), the body's outline (host_boundary.vtp) and the cavity's
 particles (host_particles.csv), saved as a PNG. The host is drawn displaced (true scale), where
 the grains are.
 
-  xvfb-run -a pvpython tools/paraview_render.py RUNDIR OUT.png [--size W H] [--colours N] [--report R.json]
-  pvpython tools/paraview_render.py ...        (where there is a display)
+  pvpython tools/paraview_render.py RUNDIR OUT.png [--size W H] [--colours N] [--report R.json]
 
 Debian's ParaView (tools/setup.sh --with-paraview) renders through X only: without a display it
-aborts ("bad X server connection"), even with --force-offscreen-rendering, hence xvfb-run.
+aborts ("bad X server connection"), even with --force-offscreen-rendering. Without $DISPLAY this
+script starts an Xvfb of its own for the run (-noreset: see virtual_display).
 --report writes what ParaView read and drew (counts, radii, ranges, the camera) for ctest
 paraview_render (tests/paraview/test_paraview.py), which checks it and the picture against the
 run's own files.
@@ -17,6 +17,8 @@ import argparse
 import json
 import math
 import os
+import shutil
+import subprocess
 import sys
 
 from paraview import servermanager
@@ -31,6 +33,32 @@ PARTICLE = [0.55, 0.55, 0.55]  # the boundary particles' fill
 RING = 0.92                    # the discs' dark rim spans RING r to r
 TUBE = 0.2                     # the contact line of the largest normal force: its half width over the mean radius
 MARGIN = 40                    # pixels left of the body; the colour bar goes right of it
+
+
+def virtual_display():
+    """Without $DISPLAY, an Xvfb server for this run (None with one). Xvfb picks a free display
+    and writes its number once it accepts clients (-displayfd: no race between parallel runs);
+    -noreset, because an X server resets when its last client leaves and refuses connections
+    meanwhile: pvpython connects more than once, and without it 1 run of 16 of `xvfb-run -a
+    pvpython` aborted here ("bad X server connection"), 0 of 16 with it."""
+    if os.environ.get("DISPLAY"):
+        return None
+    xvfb = shutil.which("Xvfb")
+    if not xvfb:
+        print("paraview_render: no display and no Xvfb (Debian's pvpython renders through X): "
+              "tools/setup.sh --with-paraview installs it", file=sys.stderr)
+        sys.exit(2)
+    r, w = os.pipe()
+    server = subprocess.Popen([xvfb, "-displayfd", str(w), "-screen", "0", "1920x1200x24", "-nolisten", "tcp",
+                               "-noreset"], pass_fds=(w,), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    os.close(w)
+    with os.fdopen(r) as f:
+        number = f.readline().strip()
+    if not number:
+        print(f"paraview_render: Xvfb did not start (exit {server.wait()})", file=sys.stderr)
+        sys.exit(1)
+    os.environ["DISPLAY"] = ":" + number
+    return server
 
 
 def fetch(proxy, time=None):
@@ -210,7 +238,13 @@ def main():
     p.add_argument("--report")
     p.add_argument("--colours", type=int, help="save the picture in so many colours (at most 256), dithered")
     a = p.parse_args()
-    render(a.rundir, a.out, a.size, a.report, a.colours)
+    server = virtual_display()
+    try:
+        render(a.rundir, a.out, a.size, a.report, a.colours)
+    finally:
+        if server:
+            server.terminate()
+            server.wait()
 
 
 if __name__ == "__main__":

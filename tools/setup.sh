@@ -8,7 +8,7 @@ packages=(build-essential cmake pkg-config libsuitesparse-dev libopenblas-dev li
           gmsh libgmsh-dev libfyaml-dev libqhull-dev python3-matplotlib python3-numpy python3-scipy python3-yaml snakemake valgrind)
 case "${1:-}" in
   "") ;;
-  --with-paraview) packages+=(paraview xvfb xauth) ;;   # Debian's pvpython renders through X: xvfb-run
+  --with-paraview) packages+=(paraview xvfb xauth) ;;   # Debian's pvpython renders through X: Xvfb
   *) echo "usage: tools/setup.sh [--with-paraview]" >&2; exit 2 ;;
 esac
 missing=()
