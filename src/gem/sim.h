@@ -73,15 +73,18 @@ typedef struct {
 /* The iterations a step has done so far. */
 static inline long gb_sim_step_iterations(const gb_sim_step *c) { return c->iters + c->phase_iters + c->relax_iters; }
 
-/* The sweeps' bookkeeping (src/gem/sweeps.c): scratch, rebuilt from the forces at each phase. */
+/* The sweeps' bookkeeping (src/gem/sweeps.c) and the inertial smoother's: scratch, rebuilt from the
+ * forces at each phase. */
 typedef struct {
     int *start, *adj;   /* each grain's pairs: adj[start[i] .. start[i + 1]) */
     int adj_cap;
     long adj_of;        /* the pair list's generation they were built for */
     double *f2;         /* squared fixing force per grain */
     unsigned char *flag;
-    int *movers, *touched, *unbalanced;
-    int n_touched, n_unbalanced;
+    int *movers, *unbalanced;
+    int *fill;          /* the adjacency's insertion points */
+    int n_unbalanced;
+    double *velocity, *acceleration; /* the inertial smoother's (src/gem/inertial.c), 3 per grain */
 } gb_sweep_scratch;
 
 /* What one load step leaves for the next (the state, the accounts, the damping), and within a step
@@ -244,6 +247,9 @@ double gb_gem_merit(const gb_sim *sim, const unsigned char *in_system, double wa
  * or after max_sweeps, or when every grain and wall is balanced. The forces are current on return. */
 gb_status gb_gem_sweeps(gb_sim *sim, const gb_wall_control *wc, double target, int max_sweeps, gb_error *err);
 gb_status gb_gem_sweeps_create(gb_sim *sim, gb_error *err);
+/* The inertial smoother (src/gem/inertial.c), the walls held: every grain moves, until the merit
+ * is at most `target` or after max_steps. The forces are current on return. */
+gb_status gb_gem_inertial(gb_sim *sim, double target, int max_steps, gb_error *err);
 void gb_gem_sweeps_free(gb_sim *sim);
 /* One iteration of the global solver with solver.newton: line_search (src/gem/line_search.c), from
  * the configuration saved in sim->trial, whose merit is m0. */
