@@ -49,7 +49,6 @@ typedef struct {
     int wall_contacts; /* of them, with the box's walls */
     double wall[GB_N_WALLS]; /* the walls' normal forces */
     double largest_overlap; /* between discs, over the smaller radius */
-    double stiffness;  /* sum over contacts of kn (ri + rj)^2 (kn ri^2 with a wall): 2 A dp/dln(scale) if affine */
     int capped;        /* the stress needs a scale beyond scale_max: stopped there */
 } gb_fire_report;
 
