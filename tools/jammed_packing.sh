@@ -13,6 +13,10 @@
 set -euo pipefail
 build=$1 out=$2 n=$3 seed=$4 tol=$5 wall_kn=${WALL_KN:-1.0e8}
 mkdir -p "$out"
+header() { # the scenes' first lines: units and the Table 3 materials
+  printf 'gembem: 1\nunits: {length: cm, force: dyn}\nmaterials:\n'
+  printf '  grain_grain: {kn: 1.0e8, kt: 7.0e7, friction_deg: 25}\n  grain_wall:  {kn: %s, kt: 7.0e7, friction_deg: 0}\n' "$wall_kn"
+}
 if [ "${KEEP:-0}" != 1 ] || [ ! -s "$out/jammed.csv" ] || [ ! -s "$out/jammed.box" ]; then
   # the box holds the discs at solid fraction 0.85: the mean disc area of the mix is
   # 1 / sum over sizes of (1/3) / (pi r^2)
@@ -20,12 +24,7 @@ if [ "${KEEP:-0}" != 1 ] || [ ! -s "$out/jammed.csv" ] || [ ! -s "$out/jammed.bo
                                 for (k = 1; k <= 3; k++) s += 1 / (3 * pi * r[k] * r[k]);
                                 printf "%.17g", sqrt(n / s / 0.85) }')
   box="{left: 0, right: $side, bottom: 0, top: $side}"
-  cat > "$out/pack.yaml" <<YAML
-gembem: 1
-units: {length: cm, force: dyn}
-materials:
-  grain_grain: {kn: 1.0e8, kt: 7.0e7, friction_deg: 25}
-  grain_wall:  {kn: $wall_kn, kt: 7.0e7, friction_deg: 0}
+  { header; cat <<YAML; } > "$out/pack.yaml"
 box: $box
 solver: {accuracy: $(awk -v t="$tol" 'BEGIN { printf "%g", 2 * t }')}   # FIRE goes to half of it
 pack:
@@ -41,12 +40,7 @@ YAML
   mv "$out/jammed.csv.part" "$out/jammed.csv"
   echo "box: $box" > "$out/jammed.box"
   # the walls' stresses, gembem's own measure of the state (step 0 of a held relax)
-  cat > "$out/walls.yaml" <<YAML
-gembem: 1
-units: {length: cm, force: dyn}
-materials:
-  grain_grain: {kn: 1.0e8, kt: 7.0e7, friction_deg: 25}
-  grain_wall:  {kn: $wall_kn, kt: 7.0e7, friction_deg: 0}
+  { header; cat <<YAML; } > "$out/walls.yaml"
 initial_state: pack/state.yaml
 solver: {accuracy: 100}
 loading:
@@ -60,12 +54,7 @@ YAML
        "largest fixing force $(info max_fixing_force), coordination $(info coordination)," \
        "wall stresses s_x $s1 s_y $s2" > "$out/jammed.log"
 fi
-cat > "$out/scene.yaml" <<YAML
-gembem: 1
-units: {length: cm, force: dyn}
-materials:
-  grain_grain: {kn: 1.0e8, kt: 7.0e7, friction_deg: 25}
-  grain_wall:  {kn: $wall_kn, kt: 7.0e7, friction_deg: 0}
+{ header; cat <<YAML; } > "$out/scene.yaml"
 grains: {file: jammed.csv}
 $(cat "$out/jammed.box")
 solver: {accuracy: 100, max_iterations: 2000000}

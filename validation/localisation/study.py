@@ -75,10 +75,7 @@ def disc_moduli():
     return out
 
 
-SCENE = """\
-# The localisation study (validation/localisation/study.py writes this scene): {name}
-gembem: 1
-units: {{length: cm, force: kgf}}
+HOST = """\
 materials:
   grain_grain: {{kn: {kn:g}, kt: {kt:g}, friction_deg: {friction:g}}}
   grain_wall: {{kn: {kn:g}, kt: {kt:g}, friction_deg: 0}}          # unused: the host replaces the walls
@@ -89,7 +86,19 @@ host:
   material: {{shear_modulus: {G:g}, poisson: {nu:g}, plane: strain}}
   boundary: {{bottom: fixed, top: {top_bc}, left: {{pressure: 0}}, right: {{pressure: 0}}}}
   cavity: cavity
-grains:
+"""
+
+
+def host(kn, friction, mesh, cavity, nu, top_bc):
+    """The materials and the host of a case's scenes (the run's and the packing's)."""
+    return HOST.format(kn=kn, kt=KT_KN * kn, friction=friction, mesh=mesh, cavity=cavity, G=G, nu=nu, top_bc=top_bc)
+
+
+SCENE = """\
+# The localisation study (validation/localisation/study.py writes this scene): {name}
+gembem: 1
+units: {{length: cm, force: kgf}}
+{host}grains:
   file: grains.csv           # gembem pack of pack.yaml ({pack})
 solver: {{method: global, linear: cholmod, accuracy: {a:g}, max_iterations: {max_it}}}
 loading:
@@ -184,17 +193,7 @@ PACK_SCENE = """\
 # less the boundary particles' bulge, R cos(pi/m) - R sin(pi/m)): {phi_polygon:.6f} of the polygon.
 gembem: 1
 units: {{length: cm, force: kgf}}
-materials:
-  grain_grain: {{kn: {kn:g}, kt: {kt:g}, friction_deg: 0}}
-  grain_wall: {{kn: {kn:g}, kt: {kt:g}, friction_deg: 0}}          # unused: the host replaces the walls
-  grain_boundary: {{kn: {kn:g}, kt: 0, friction_deg: 0}}
-host:
-  mesh: {mesh}
-  elements: {{bottom: 16, right: 16, top: 16, left: 16, cavity: {cavity}}}
-  material: {{shear_modulus: {G:g}, poisson: {nu:g}, plane: strain}}
-  boundary: {{bottom: fixed, top: displacement, left: {{pressure: 0}}, right: {{pressure: 0}}}}
-  cavity: cavity
-solver: {{method: global, accuracy: {a:g}}}
+{host}solver: {{method: global, accuracy: {a:g}}}
 pack:
   protocol: growth
   seed: {seed}
@@ -213,8 +212,9 @@ def pack_scene(name, mesh, radius=2.5):
     kn = c["kn_g"] * G if c is not None else next(k for m, _, _, k in cases() if m == name)
     usable = radius * (math.cos(math.pi / cavity) - math.sin(math.pi / cavity))
     polygon = 0.5 * cavity * radius**2 * math.sin(2 * math.pi / cavity)
-    return PACK_SCENE.format(name=name, kn=kn, kt=KT_KN * kn, mesh=mesh, cavity=cavity, G=G, nu=NU, a=A_KN * kn,
-                             seed=seed, n=n, phi=phi, phi_polygon=phi * math.pi * usable**2 / polygon)
+    nu = c["nu"] if c is not None else NU
+    return PACK_SCENE.format(name=name, host=host(kn, 0, mesh, cavity, nu, "displacement"), a=A_KN * kn, seed=seed,
+                             n=n, phi=phi, phi_polygon=phi * math.pi * usable**2 / polygon)
 
 
 def scene(name, mesh, refine=1):
@@ -224,16 +224,15 @@ def scene(name, mesh, refine=1):
         kn = c["kn_g"] * G
         shear = c["load"] == "shear"
         dp = c["P"] / STEPS_P
-        return SCENE.format(name=name, kn=kn, kt=KT_KN * kn, friction=c["friction"], mesh=mesh, G=G, nu=c["nu"],
-                            cavity=c["cavity"], top_bc="{ux: 0, ty: 0}" if shear else "displacement",
+        return SCENE.format(name=name, host=host(kn, c["friction"], mesh, c["cavity"], c["nu"],
+                                                 "{ux: 0, ty: 0}" if shear else "displacement"),
                             pack=pack_args(name), a=ext_accuracy(c),
                             max_it=c["max_it"], steps_p=STEPS_P, dp=dp,
                             top_p=f", top: [0, {-dp:g}]" if shear else "", steps=c["steps"] * refine,
                             dux=c["du"] / refine if shear else 0, duy=0 if shear else -c["du"] / refine)
     for n, phi, friction, kn in cases():
         if n == name:
-            return SCENE.format(name=name, kn=kn, kt=KT_KN * kn, friction=friction, mesh=mesh, G=G, nu=NU,
-                                cavity=64, top_bc="displacement", pack=pack_args(name),
+            return SCENE.format(name=name, host=host(kn, friction, mesh, 64, NU, "displacement"), pack=pack_args(name),
                                 a=kn * (A_FRICTIONLESS if friction == 0 else A_KN), max_it=3000,
                                 steps_p=STEPS_P, dp=P / STEPS_P, top_p="", steps=STEPS * refine, dux=0,
                                 duy=DUY / refine)
