@@ -15,7 +15,8 @@ build=$1 out=$2 n=$3 seed=$4 tol=$5 wall_kn=${WALL_KN:-1.0e8}
 mkdir -p "$out"
 header() { # the scenes' first lines: units and the Table 3 materials
   printf 'gembem: 1\nunits: {length: cm, force: dyn}\nmaterials:\n'
-  printf '  grain_grain: {kn: 1.0e8, kt: 7.0e7, friction_deg: 25}\n  grain_wall:  {kn: %s, kt: 7.0e7, friction_deg: 0}\n' "$wall_kn"
+  printf '  grain_grain: {kn: 1.0e8, kt: 7.0e7, friction_deg: 25}\n'
+  printf '  grain_wall:  {kn: %s, kt: 7.0e7, friction_deg: 0}\n' "$wall_kn"
 }
 if [ "${KEEP:-0}" != 1 ] || [ ! -s "$out/jammed.csv" ] || [ ! -s "$out/jammed.box" ]; then
   # the box holds the discs at solid fraction 0.85: the mean disc area of the mix is

@@ -203,8 +203,8 @@ gb_status gb_fire_relax_scaled(const gb_fire_world *w, const gb_fire_goal *goal,
             v[2 * n] = fmax(-lim, fmin(lim, v[2 * n]));
             set_scale(&S, S.scale * exp(dt * v[2 * n] / c));
         } else if (ramp && S.scale != goal->scale_to && !reached && worst <= goal->hold) {
-            double step = target_ln - log(S.scale);
-            set_scale(&S, fabs(step) <= goal->ramp ? goal->scale_to : S.scale * exp(step > 0 ? goal->ramp : -goal->ramp));
+            double step = target_ln - log(S.scale), grow = step > 0 ? goal->ramp : -goal->ramp;
+            set_scale(&S, fabs(step) <= goal->ramp ? goal->scale_to : S.scale * exp(grow));
         }
         if ((st = refresh(&S, err))) goto done;
         worst = forces(&S, f, rep, 0);
