@@ -4,9 +4,9 @@
 # mean stress is 1e-4 kn (just past jamming), frictionless, then Kishino's friction switched on.
 # The box holds the grains at solid fraction 0.84 (radius_scale near 1). Prints a Markdown row per
 # N: wall seconds per phase (pack_info.yaml) and the process's CPU seconds (user + system, the
-# measure that a loaded machine spoils least), FIRE iterations per phase and microseconds per
-# iteration, peak resident memory (/usr/bin/time -v), porosity, coordination (without rattlers),
-# mean stress and the largest fixing force. Runs in runs/bench_pack/nN (kept: state.yaml is a
+# measure that a loaded machine spoils least), FIRE iterations per phase, CPU microseconds per
+# iteration (CPU seconds over FIRE iterations), peak resident memory (/usr/bin/time -v), porosity,
+# coordination (without rattlers), mean stress and the largest fixing force. Runs in runs/bench_pack/nN (kept: state.yaml is a
 # packing that run scenes start from).
 #   tools/bench_pack.sh [BUILD_DIR] [N ...]      (N: 10000 100000 by default)
 set -euo pipefail
@@ -15,7 +15,7 @@ build=$root/${1:-build}; shift || true
 sizes=${*:-10000 100000}
 echo "machine: $(nproc --all) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); $(date -u +%Y-%m-%d); load average $(cut -d' ' -f1-3 /proc/loadavg)"
 echo
-echo "| discs | seconds: total [CPU] (place / grow / settle / equilibrium) | FIRE iterations: grow + settle | us per iteration | peak memory [MB] | porosity | coordination (without rattlers) | rattlers | mean stress / target | largest fixing force / accuracy |"
+echo "| discs | seconds: total [CPU] (place / grow / settle / equilibrium) | FIRE iterations: grow + settle | CPU us per iteration | peak memory [MB] | porosity | coordination (without rattlers) | rattlers | mean stress / target | largest fixing force / accuracy |"
 echo "|---:|---|---|---:|---:|---:|---|---:|---:|---:|"
 for n in $sizes; do
   d=$root/runs/bench_pack/n$n
@@ -41,11 +41,10 @@ for line in open(sys.argv[1]):
 def braces(v):
     return {a.strip(): float(b) for a, b in (x.split(":") for x in v.strip("{}").split(","))}
 sec, it = braces(info["seconds"]), braces(info["fire_iterations"])
-fire = sec["grow"] + sec["settle"]
 its = it["grow"] + it["settle"]
 target = float(re.search(r"stress: ([0-9.e+-]+)", info["target"]).group(1))
 print(f"| {sys.argv[2]} | {sec['total']:.1f} [{sys.argv[4]}] ({sec['place']:.2f} / {sec['grow']:.1f} / {sec['settle']:.1f} / "
-      f"{sec['equilibrium']:.2f}) | {it['grow']:.0f} + {it['settle']:.0f} | {1e6 * fire / its:.0f} | {sys.argv[3]} | "
+      f"{sec['equilibrium']:.2f}) | {it['grow']:.0f} + {it['settle']:.0f} | {1e6 * float(sys.argv[4]) / its:.0f} | {sys.argv[3]} | "
       f"{float(info['porosity']):.4f} | {float(info['coordination']):.3f} "
       f"({float(info['coordination_without_rattlers']):.3f}) | {info['rattlers']} | "
       f"{float(info['mean_stress']) / target:.4f} | {float(info['max_fixing_force']):.3g} / {info['accuracy']} |")
