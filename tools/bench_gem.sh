@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Benchmark of the granular solvers (not a test) on jammed random packings of the paper's three
-# sizes (tools/jammed_packing.sh: gb_packgen's deposit relaxed frictionless by gb_jam to |F| <= 10
-# dyn per disc, seed 1; cached in runs/bench_gem/nN/, since 1e5 discs take 20-50 minutes). Then
+# sizes (tools/jammed_packing.sh: gembem pack grows them to porosity 0.15, frictionless by FIRE
+# to |F| <= 10 dyn per disc, seed 1; cached in runs/bench_gem/nN/). Then
 # STEPS load steps of isotropic stress control, each adding 5 % of the stress the packing starts
 # with, with each solver (build/bench_jammed). Single-threaded BLAS unless the
 # caller sets OPENBLAS_NUM_THREADS / OMP_NUM_THREADS.

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# A packing of K x K N discs that no jamming run could make in a session (FIRE's iterations grow
-# with the packing's side: 1e6 discs would take days): one jammed packing of N discs
+# A packing of K x K N discs made from one of N (the 1e6 row of tools/bench_scaling.sh was made so
+# when jamming 1e6 discs took days; `gembem pack` is faster, docs/packing.md): one jammed packing of N discs
 # (tools/jammed_packing.sh, its walls twice as stiff as the contacts: WALL_KN = 2e8) mirrored
 # across its walls into K x K copies. A disc that presses a wall by d (force 2 kn d) presses its
 # mirror image by 2 d (force kn 2 d): the copies together are in equilibrium as the packing was,

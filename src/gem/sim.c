@@ -23,7 +23,7 @@ void gb_sim_free(gb_sim *sim)
     free(sim->one);
     free(sim->in_system);
     free(sim->ls_dir);
-    gb_gem_sweeps_free(sim);
+    gb_gem_inertial_free(sim);
     gb_sim_state_free(&sim->saved);
     gb_sim_state_free(&sim->trial);
     gb_sim_state_free(&sim->substep);
@@ -198,7 +198,7 @@ gb_status gb_sim_create(const gb_scene *scene, gb_sim **out, gb_error *err)
             gb_sim_free(sim);
             return gb_fail(err, GB_ENOMEM, "out of memory for %d grains", n);
         }
-        if ((st = gb_gem_sweeps_create(sim, err))) {
+        if ((st = gb_gem_inertial_create(sim, err))) {
             gb_sim_free(sim);
             return st;
         }

@@ -73,16 +73,10 @@ typedef struct {
 /* The iterations a step has done so far. */
 static inline long gb_sim_step_iterations(const gb_sim_step *c) { return c->iters + c->phase_iters + c->relax_iters; }
 
-/* The sweeps' bookkeeping (src/gem/sweeps.c): scratch, rebuilt from the forces at each phase. */
+/* The inertial smoother's scratch (src/gem/inertial.c): 3 per grain. */
 typedef struct {
-    int *start, *adj;   /* each grain's pairs: adj[start[i] .. start[i + 1]) */
-    int adj_cap;
-    long adj_of;        /* the pair list's generation they were built for */
-    double *f2;         /* squared fixing force per grain */
-    unsigned char *flag;
-    int *movers, *touched, *unbalanced;
-    int n_touched, n_unbalanced;
-} gb_sweep_scratch;
+    double *velocity, *acceleration;
+} gb_inertial_scratch;
 
 /* What one load step leaves for the next (the state, the accounts, the damping), and within a step
  * what an iteration leaves for the next and for the rest of the step (sim->cur, the last move, the
@@ -135,8 +129,8 @@ struct gb_sim {
     gb_solver_work work;      /* the global solver's work since the start of the process: only its changes within
                                  a load step are reported, so a resumed run needs none of it */
     double *ls_dir;           /* solver.newton: line_search: the Newton direction of grains, particles, walls */
-    gb_sweep_scratch sweeps;  /* and its sweeps' (src/gem/sweeps.c) */
-    double ls_length;         /* the share of Newton's step the last line search took (0: sweeps) */
+    gb_inertial_scratch inertial; /* and its smoother's (src/gem/inertial.c) */
+    double ls_length;         /* the share of Newton's step the last line search took (0: the smoother) */
     gb_iteration_fn on_iteration; /* solver.history */
     void *on_iteration_user;
     int attempt;              /* relaxations in the current load step */
@@ -243,12 +237,13 @@ double gb_gem_wall_moves(gb_sim *sim, const gb_wall_control *wc);
 /* The global solver's merit: squared fixing forces of the grains in the system, of the boundary
  * particles, and the walls' residual squared. */
 double gb_gem_merit(const gb_sim *sim, const unsigned char *in_system, double wall_residual);
-/* Reference sweeps (K 9-12) of the grains whose fixing force exceeds the accuracy and of their
- * neighbours in contact, the others held (src/gem/sweeps.c), until the merit is at most `target`
- * or after max_sweeps, or when every grain and wall is balanced. The forces are current on return. */
-gb_status gb_gem_sweeps(gb_sim *sim, const gb_wall_control *wc, double target, int max_sweeps, gb_error *err);
-gb_status gb_gem_sweeps_create(gb_sim *sim, gb_error *err);
-void gb_gem_sweeps_free(gb_sim *sim);
+
+/* The line-search iteration's smoother (src/gem/inertial.c): every grain moves, servo walls follow,
+ * until the merit is at most `target`, after max_steps, or when every grain and wall is balanced.
+ * The forces are current on return. */
+gb_status gb_gem_inertial(gb_sim *sim, const gb_wall_control *wc, double target, int max_steps, gb_error *err);
+gb_status gb_gem_inertial_create(gb_sim *sim, gb_error *err);
+void gb_gem_inertial_free(gb_sim *sim);
 /* One iteration of the global solver with solver.newton: line_search (src/gem/line_search.c), from
  * the configuration saved in sim->trial, whose merit is m0. */
 gb_status gb_gem_line_search_move(gb_sim *sim, const gb_wall_control *wc, double m0, gb_error *err);

@@ -1,5 +1,5 @@
 /* The packing protocols (docs/packing.md): the radii drawn, placed at random (scaled down so that
- * they fit), grown by FIRE stages to their size or to the target, settled by FIRE to the accuracy,
+ * they fit), grown while FIRE relaxes them to their size or to the target, settled by FIRE to the accuracy,
  * then brought to equilibrium by gembem's own solver with the scene's friction. */
 #include <math.h>
 #include <stdio.h>
@@ -16,14 +16,19 @@
 
 static const double PI = 3.14159265358979323846;
 
-/* Random sequential addition jams near 0.55 for discs: placing at 0.35 of the region is quick,
- * and each growth stage then adds at most PHI_STEP (finer near jamming, where a stage's overlaps
- * need the longest relaxation). */
-static const double PLACE_PHI = 0.35, PHI_STEP = 0.02, PHI_STEP_DENSE = 0.005, PHI_DENSE = 0.78;
-/* A growth stage is relaxed until overlaps are about this share of a radius (forces kn d); the
- * last relaxation goes to half the scene's accuracy, so that gembem's solver starts converged. */
-static const double STAGE_OVERLAP = 1e-3;
-/* A target stress is reached within this share of it. */
+/* Random sequential addition jams near 0.55 for discs: placing at 0.35 of the region is quick. */
+static const double PLACE_PHI = 0.35;
+/* The radii grow in steps of RAMP in ln(scale) (1 % of a radius, 2 % in solid fraction), one per
+ * FIRE iteration, whenever every disc's force is below that of an overlap of STAGE_OVERLAP of the
+ * mean radius (kn d): stages of growth relaxed loosely, the next one as soon as the last is
+ * (smaller steps took more iterations, docs/packing.md). */
+static const double RAMP = 1e-2, STAGE_OVERLAP = 1e-3;
+/* A growth to a stress ends once the stress is passed with every |F| below GROW_FORCE times the
+ * contact force of the target (stress times a mean diameter): a jammed state, from which the
+ * settling (to half the scene's accuracy, so that gembem's solver starts converged) frees the
+ * scale under the target. */
+static const double GROW_FORCE = 0.1;
+/* A target stress is reached within this share of it (the settling aims at half of it). */
 static const double STRESS_TOL = 0.01;
 
 typedef struct {
@@ -33,106 +38,79 @@ typedef struct {
     gb_fire_world w;
     gb_particles bp;
     double *r;          /* drawn radii */
+    double r_mean;      /* of the drawn radii */
     double grain_area;  /* of the drawn radii */
     double tol;         /* the final relaxations' */
     gb_pack_result *res;
 } packer;
 
-static void set_scale(packer *P, double scale)
-{
-    for (int i = 0; i < P->w.n; i++) P->w.g[i].r = scale * P->r[i];
-}
-
 static double phi_of(const packer *P, double scale) { return scale * scale * P->grain_area / P->rg.area; }
 static double scale_of(const packer *P, double phi) { return sqrt(phi * P->rg.area / P->grain_area); }
 
-/* One FIRE relaxation at this scale; its iterations are counted in the phase. */
-static gb_status relax(packer *P, double scale, int body, double tol, int phase, gb_fire_report *rep, gb_error *err)
+/* One FIRE relaxation from *scale, to every |F| <= tol: the radii ramped to `target` (a scale, or 0:
+ * until the mean stress passes `stress`), or with stress_tol > 0 free under `stress`, until it is
+ * within stress_tol. body: under the scene's body force. Its iterations and seconds go to `phase`. */
+static gb_status relax(packer *P, double *scale, double target, double stress, int body, double tol, double stress_tol,
+                       int phase, gb_error *err)
 {
-    set_scale(P, scale);
     gb_fire_world w = P->w;
     if (!body) w.body[0] = w.body[1] = 0;
-    gb_status st = gb_fire_relax(&w, tol, P->d->max_iterations, rep, err);
-    P->res->fire_iterations[phase] += rep->iterations;
+    double smax = scale_of(P, GB_PACK_MAX_SOLID_FRACTION);
+    double hold = STAGE_OVERLAP * P->w.kn_gg * (target ? target : *scale) * P->r_mean;
+    gb_fire_goal goal = {.tol = tol, .free = stress_tol > 0, .stress = stress, .stress_tol = stress_tol,
+                         .scale_max = smax, .scale_to = target ? target : smax, .ramp = RAMP,
+                         .hold = fmax(tol, hold), .max_iter = P->d->max_iterations};
+    gb_fire_report rep;
+    double t0 = gb_clock_seconds();
+    gb_status st = gb_fire_relax_scaled(&w, &goal, scale, &rep, err);
+    P->res->fire_iterations[phase] += rep.iterations;
+    P->res->seconds[phase] += gb_clock_seconds() - t0;
+    if (!st && rep.capped)
+        st = gb_fail(err, GB_EINPUT, "%s: pack.stress: the grains reach a mean stress of %g at solid fraction %.3f; "
+                                     "the stress %g needs more than %.2f, the densest the growth protocol makes",
+                     P->s->path, rep.virial / (2 * P->rg.area), phi_of(P, *scale), P->d->stress,
+                     GB_PACK_MAX_SOLID_FRACTION);
     return st;
 }
 
-static double stage_tol(const packer *P, double scale)
+typedef struct {
+    long cell;
+    int i;
+} cell_key;
+
+static int by_cell(const void *a, const void *b)
 {
-    double rsum = 0;
-    for (int i = 0; i < P->w.n; i++) rsum += P->r[i];
-    return fmax(P->tol, STAGE_OVERLAP * P->w.kn_gg * scale * rsum / P->w.n);
+    const cell_key *p = a, *q = b;
+    if (p->cell != q->cell) return p->cell < q->cell ? -1 : 1;
+    return (p->i > q->i) - (p->i < q->i);
 }
 
-static double mean_stress(const packer *P, const gb_fire_report *rep) { return rep->virial / (2 * P->rg.area); }
-
-/* Grows from scale s0 in stages of solid fraction to `target` (a scale), or, with a target stress,
- * until the mean stress passes it: *s_lo, *p_lo are then the last stage below it, *s, *p the first
- * above. body: under the scene's body force. */
-static gb_status grow(packer *P, double s0, double target, int body, double *s, double *s_lo, double *p_lo,
-                      double *p, gb_error *err)
+/* The grains (and their drawn radii) put in the order of cells a largest diameter wide, row by row:
+ * the discs of a pair then lie near each other in memory, which at 1e5 discs and more keeps the
+ * force loop in the cache; the placement left them in random order. */
+static gb_status sort_by_cell(packer *P, gb_error *err)
 {
-    gb_fire_report rep;
-    *s = s0, *s_lo = s0, *p_lo = 0, *p = 0;
-    while (target ? *s < target : *p < P->d->stress) {
-        double phi = phi_of(P, *s), next = phi + (phi < PHI_DENSE ? PHI_STEP : PHI_STEP_DENSE);
-        if (!target && next > GB_PACK_MAX_SOLID_FRACTION)
-            return gb_fail(err, GB_EINPUT, "%s: pack.stress: the grains reach a mean stress of %g at solid fraction "
-                                           "%.3f; the stress %g needs more than %.2f, the densest the growth protocol "
-                                           "makes", P->s->path, *p, phi, P->d->stress, GB_PACK_MAX_SOLID_FRACTION);
-        double sn = target ? fmin(target, scale_of(P, next)) : scale_of(P, next);
-        gb_status st = relax(P, sn, body, stage_tol(P, sn), GB_PACK_GROW, &rep, err);
-        if (st) return st;
-        *s_lo = *s, *p_lo = *p;
-        *s = sn, *p = mean_stress(P, &rep);
+    int n = P->w.n;
+    gb_grain *g = P->w.g;
+    cell_key *key = malloc(((size_t)n + 1) * sizeof *key);
+    gb_grain *g2 = malloc(((size_t)n + 1) * sizeof *g2);
+    double *r2 = malloc(((size_t)n + 1) * sizeof *r2), h = 0;
+    if (!key || !g2 || !r2) {
+        free(key), free(g2), free(r2);
+        return gb_fail(err, GB_ENOMEM, "out of memory for %d grains", n);
     }
+    for (int i = 0; i < n; i++) h = fmax(h, 2 * g[i].r);
+    long nx = (long)((P->rg.hi[0] - P->rg.lo[0]) / h) + 1;
+    for (int i = 0; i < n; i++) {
+        long cx = (long)((g[i].x - P->rg.lo[0]) / h), cy = (long)((g[i].y - P->rg.lo[1]) / h);
+        key[i].cell = cy * nx + cx, key[i].i = i;
+    }
+    qsort(key, (size_t)n, sizeof *key, by_cell);
+    for (int k = 0; k < n; k++) g2[k] = g[key[k].i], r2[k] = P->r[key[k].i];
+    memcpy(g, g2, (size_t)n * sizeof *g);
+    memcpy(P->r, r2, (size_t)n * sizeof *r2);
+    free(key), free(g2), free(r2);
     return GB_OK;
-}
-
-/* Between the stage below the stress (lo) and the one above (hi): regula falsi (Illinois) on the
- * scale, each trial relaxed to the accuracy, until the mean stress is within STRESS_TOL of it. */
-static gb_status find_stress(packer *P, double s_lo, double p_lo, double s_hi, double p_hi, double *s,
-                             gb_error *err)
-{
-    double target = P->d->stress;
-    int side = 0;
-    gb_fire_report rep;
-    gb_status st;
-    /* the growth stages' stresses are those of overlaps relaxed loosely: the upper end relaxed to
-     * the accuracy may still lie below the target, then the grains grow on in small steps */
-    for (;;) {
-        if ((st = relax(P, s_hi, 1, P->tol, GB_PACK_SETTLE, &rep, err))) return st;
-        p_hi = mean_stress(P, &rep);
-        *s = s_hi;
-        if (fabs(p_hi - target) <= STRESS_TOL * target) return GB_OK;
-        if (p_hi > target) break;
-        if (phi_of(P, s_hi) > GB_PACK_MAX_SOLID_FRACTION)
-            return gb_fail(err, GB_EINPUT, "%s: pack.stress: the grains reach a mean stress of %g at solid fraction "
-                                           "%.3f; the stress %g needs more than %.2f, the densest the growth protocol "
-                                           "makes", P->s->path, p_hi, phi_of(P, s_hi), target,
-                           GB_PACK_MAX_SOLID_FRACTION);
-        s_lo = s_hi, p_lo = p_hi;
-        s_hi *= 1 + 0.5 * PHI_STEP_DENSE;
-    }
-    for (int k = 0; k < 60; k++) {
-        double sn = s_lo + (target - p_lo) * (s_hi - s_lo) / (p_hi - p_lo);
-        if (!(sn > s_lo && sn < s_hi)) sn = 0.5 * (s_lo + s_hi);
-        if ((st = relax(P, sn, 1, P->tol, GB_PACK_SETTLE, &rep, err))) return st;
-        double pn = mean_stress(P, &rep);
-        *s = sn;
-        if (fabs(pn - target) <= STRESS_TOL * target) return GB_OK;
-        if (pn < target) {
-            s_lo = sn, p_lo = pn;
-            if (side == -1) p_hi = target + 0.5 * (p_hi - target);
-            side = -1;
-        } else {
-            s_hi = sn, p_hi = pn;
-            if (side == 1) p_lo = target - 0.5 * (target - p_lo);
-            side = 1;
-        }
-    }
-    return gb_fail(err, GB_ENOCONV, "%s: pack.stress: the mean stress %g was not reached within %g %% in 60 "
-                                    "relaxations", P->s->path, target, 100 * STRESS_TOL);
 }
 
 /* The drawn radii, placed at the largest scale up to `scale` that lets them in loose. */
@@ -145,15 +123,17 @@ static gb_status place(packer *P, double scale, double *s0, gb_error *err)
         st = gb_place_random(&P->rg, P->r, P->w.n, *s0, P->d->seed, 2000, P->w.g, err);
         if (st != GB_EINPUT) break;
     }
+    if (!st) st = sort_by_cell(P, err);
     P->res->seconds[GB_PACK_PLACE] = gb_clock_seconds() - t0;
     return st;
 }
 
+/* Placed loose, grown (the grow phase: relaxed loosely while the radii grow), settled to the
+ * accuracy (the settle phase) at the final radii. */
 static gb_status protocol(packer *P, gb_error *err)
 {
     const gb_pack_def *d = P->d;
-    double s0, s, s_lo, p_lo, p, t0;
-    gb_fire_report rep;
+    double s, loose = STAGE_OVERLAP * P->w.kn_gg * P->r_mean; /* at scale 1 */
     gb_status st;
     if (d->protocol == GB_PACK_DEPOSITION) {
         if (!(P->grain_area <= GB_PACK_MAX_FILL * P->rg.area))
@@ -161,31 +141,21 @@ static gb_status protocol(packer *P, gb_error *err)
                                            "their area %g is %.3g of it; a deposit holds at most %.2f of its region",
                            P->s->path, P->rg.area, P->w.n, P->grain_area, P->grain_area / P->rg.area,
                            GB_PACK_MAX_FILL);
-        if ((st = place(P, 1, &s0, err))) return st;
-        t0 = gb_clock_seconds();
-        if (s0 < 1 && (st = grow(P, s0, 1, 0, &s, &s_lo, &p_lo, &p, err))) return st;
-        P->res->seconds[GB_PACK_GROW] = gb_clock_seconds() - t0;
-        t0 = gb_clock_seconds();
-        st = relax(P, 1, 1, P->tol, GB_PACK_SETTLE, &rep, err);
-        P->res->radius_scale = 1;
+        if ((st = place(P, 1, &s, err))) return st;
+        if (s < 1 && (st = relax(P, &s, 1, 0, 0, fmax(P->tol, loose), 0, GB_PACK_GROW, err))) return st;
+        st = relax(P, &s, 1, 0, 1, P->tol, 0, GB_PACK_SETTLE, err);
     } else if (!d->stress) {
         double target = scale_of(P, d->solid_fraction);
-        if ((st = place(P, target, &s0, err))) return st;
-        t0 = gb_clock_seconds();
-        if ((st = grow(P, s0, target, 1, &s, &s_lo, &p_lo, &p, err))) return st;
-        P->res->seconds[GB_PACK_GROW] = gb_clock_seconds() - t0;
-        t0 = gb_clock_seconds();
-        st = relax(P, target, 1, P->tol, GB_PACK_SETTLE, &rep, err);
-        P->res->radius_scale = target;
+        if ((st = place(P, target, &s, err))) return st;
+        if ((st = relax(P, &s, target, 0, 1, fmax(P->tol, target * loose), 0, GB_PACK_GROW, err))) return st;
+        st = relax(P, &s, target, 0, 1, P->tol, 0, GB_PACK_SETTLE, err);
     } else {
-        if ((st = place(P, HUGE_VAL, &s0, err))) return st;
-        t0 = gb_clock_seconds();
-        if ((st = grow(P, s0, 0, 1, &s, &s_lo, &p_lo, &p, err))) return st;
-        P->res->seconds[GB_PACK_GROW] = gb_clock_seconds() - t0;
-        t0 = gb_clock_seconds();
-        st = find_stress(P, s_lo, p_lo, s, p, &P->res->radius_scale, err);
+        if ((st = place(P, HUGE_VAL, &s, err))) return st;
+        double jammed = GROW_FORCE * d->stress * 2 * s * P->r_mean; /* s: the placement's scale */
+        if ((st = relax(P, &s, 0, d->stress, 1, fmax(P->tol, jammed), 0, GB_PACK_GROW, err))) return st;
+        st = relax(P, &s, 0, d->stress, 1, P->tol, 0.5 * STRESS_TOL, GB_PACK_SETTLE, err);
     }
-    P->res->seconds[GB_PACK_SETTLE] = gb_clock_seconds() - t0;
+    P->res->radius_scale = s;
     return st;
 }
 
@@ -311,7 +281,7 @@ gb_status gb_pack_make(gb_scene *scene, const gb_bem_mesh *mesh, const gb_pack_d
     }
     scene->n_grains = n;
     gb_sizes_draw(&def->sizes, n, def->seed, P.r);
-    for (int i = 0; i < n; i++) P.grain_area += PI * P.r[i] * P.r[i];
+    for (int i = 0; i < n; i++) P.grain_area += PI * P.r[i] * P.r[i], P.r_mean += P.r[i] / n;
     gb_status st = GB_OK;
     if (mesh) {
         int *elem = malloc((size_t)mesh->n * sizeof(int)), m = 0;
@@ -323,7 +293,7 @@ gb_status gb_pack_make(gb_scene *scene, const gb_bem_mesh *mesh, const gb_pack_d
     }
     gb_fire_world w = {scene->grains, n, mesh ? NULL : &scene->box, mesh ? &P.bp : NULL, scene->grain_grain.kn,
                        scene->grain_wall.kn, scene->grain_boundary.kn,
-                       {scene->body_force_per_area[0], scene->body_force_per_area[1]}};
+                       {scene->body_force_per_area[0], scene->body_force_per_area[1]}, P.r, P.rg.area};
     P.w = w;
     P.tol = 0.5 * scene->solver.accuracy;
     res->n = n;

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # tools/mirrored_packing.sh: a jammed packing (walls of 2 kn) mirrored into 2 x 2 copies is in
 # equilibrium as it stands: gembem's fixing forces (bench_jammed with no load step and no
-# iteration allowed) stay below a = 5 dyn, where gb_jam left every disc below 1 dyn. Control: with
+# iteration allowed) stay below a = 5 dyn, where gembem pack's FIRE left every disc below 1 dyn. Control: with
 # the walls of the copies at kn, the discs against the outer walls lose half their wall force
 # (kn d ~ 1e5 dyn) and the same check fails. And gb_jam refuses --wall-kn 0.
 #   test_mirrored_packing.sh BUILD_DIR WORK_DIR
@@ -22,8 +22,8 @@ if [ $? -eq 3 ]; then echo "ok   control: walls of kn leave it out of equilibriu
 else echo "FAIL control: walls of kn should leave it out of equilibrium: $row"; fail=1; fi
 # gb_jam refuses a wall stiffness that is not positive, writing nothing.
 box=$(sed -n 's/^box: {left: \([^,]*\), right: \([^,]*\), bottom: \([^,]*\), top: \([^}]*\)}$/\1,\2,\3,\4/p' \
-      "$work/base/deposit.box.yaml")
-msg=$("$build/gb_jam" "$work/base/deposit.csv" --box "$box" --porosity 0.15 --kn 1e8 --tol 1 --wall-kn 0 \
+      "$work/base/jammed.box")
+msg=$("$build/gb_jam" "$work/base/jammed.csv" --box "$box" --porosity 0.14 --kn 1e8 --tol 1 --wall-kn 0 \
       --out "$work/bad.csv" 2>&1 >/dev/null); code=$?
 if [ $code -eq 2 ] && grep -q -- '--wall-kn > 0' <<< "$msg" && [ ! -e "$work/bad.csv" ]; then echo "ok   gb_jam --wall-kn 0 refused: $msg"
 else echo "FAIL gb_jam --wall-kn 0: exit $code, '$msg'"; fail=1; fi

@@ -3,12 +3,9 @@
  *
  * Host: a body with a cavity (a .geo with groups bottom, right, top, left, cavity), condensed to
  * its cavity, F_h = K_h u + f0_h (bem.h: F_h is the force the outside puts on the host). Disc: a
- * second BEM body whose only loop is the cavity's polygon (the same vertices, hence matching
- * elements; its outer loop runs counter-clockwise where the host's cavity runs clockwise, so the
- * elements are matched by their midpoints), condensed to its whole boundary, F_d = K_d u (no load
- * of its own, f0 = 0; K_d has the disc's three rigid modes, the host holds them). Continuity of
- * the displacement and action-reaction on the interface (the disc pushes the host with -F_d):
- *     K_h u + f0_h = -K_d u   ->   (K_h + K_d) u = -f0_h.
+ * second BEM body on the cavity's polygon, condensed over its whole boundary, F_d = K_d u, and
+ * coupled by continuity of the displacement and action-reaction, (K_h + K_d) u = -f0_h
+ * (validation/bem/filling.h, shared with the elliptic inclusion check validation/bem/inclusion.c).
  * A disc modulus of 0 leaves K_d out: the traction-free cavity. The host is then solved with its
  * cavity displaced by u (gb_bem_solve_group_displacement) and the hoop stress t.s.t of the host
  * side taken at each cavity element's midpoint (gb_bem_boundary_stress), as the run output does
@@ -27,12 +24,12 @@
  *   steps=n [20] steps_p=n [0]   out=PREFIX (PREFIX_wall.csv: every step, PREFIX_curve.csv)
  *   check=1: the ctest (a disc of the host's own modulus under rollers makes the body homogeneous;
  *       a disc of modulus 1e-9 mu gives the empty cavity); exit 1 on a failed check. */
-#include <lapacke.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "filling.h"
 #include "gembem/bem.h"
 
 #define PI 3.14159265358979323846
@@ -82,12 +79,12 @@ static void parse(int argc, char **argv, opts *o)
 
 /* The host and the disc, set up once. */
 typedef struct {
-    gb_bem_mesh mesh, dmesh;
-    gb_bem_system sys, dsys;
-    gb_bem_stiffness Kd; /* condensed disc, in the disc's element order */
-    int cav, m, *perm;   /* perm[k]: the disc element matching the host's k-th cavity element */
+    gb_bem_mesh mesh;
+    gb_bem_system sys;
+    v_filling disc; /* validation/bem/filling.h */
+    int filled;     /* 0: the empty cavity */
+    int cav, m;
     int g_bottom, g_right, g_top, g_left;
-    double *Kd_h;        /* K_d in the host's cavity DOF order, m x m column-major (NULL: empty) */
 } model;
 
 static void setup(const opts *o, double disc_mu, model *M)
@@ -110,61 +107,17 @@ static void setup(const opts *o, double disc_mu, model *M)
         die("the mesh needs groups bottom, right, top, left, cavity", NULL);
     gb_bem_material mat = {o->mu, o->nu, o->plane_stress ? GB_BEM_PLANE_STRESS : GB_BEM_PLANE_STRAIN};
     if (gb_bem_assemble(&M->mesh, &mat, &M->sys, &err)) die("host assembly", &err);
-    int nc = 0;
-    for (int e = 0; e < M->mesh.n; e++) nc += M->mesh.group[e] == M->cav;
-    M->m = 2 * nc;
+    for (int e = 0; e < M->mesh.n; e++) M->m += 2 * (M->mesh.group[e] == M->cav);
     if (disc_mu <= 0) return;
-    /* The disc: the cavity's loop, vertex by vertex. */
-    int loop = -1;
-    for (int e = 0; e < M->mesh.n; e++)
-        if (M->mesh.group[e] == M->cav) loop = M->mesh.loop[e];
-    int a = M->mesh.loop_start[loop], b = M->mesh.loop_start[loop + 1], nv = b - a;
-    if (nv != nc) die("the cavity group must be one whole loop", NULL);
-    double *xy = malloc(2 * (size_t)nv * sizeof *xy);
-    int *eg = calloc((size_t)nv, sizeof *eg);
-    for (int e = a; e < b; e++) xy[2 * (e - a)] = M->mesh.p0[2 * e], xy[2 * (e - a) + 1] = M->mesh.p0[2 * e + 1];
-    const char *names[1] = {"wall"};
-    if (gb_bem_mesh_from_polygons(1, &nv, xy, eg, 1, names, 0, &M->dmesh, &err)) die("disc mesh", &err);
-    free(xy), free(eg);
     gb_bem_material dmat = {disc_mu, o->disc_nu, mat.plane};
-    if (gb_bem_assemble(&M->dmesh, &dmat, &M->dsys, &err)) die("disc assembly", &err);
-    gb_bem_problem dp;
-    memset(&dp, 0, sizeof dp);
-    dp.bc[0].kind = GB_BEM_BC_FREE; /* ignored: the group condensed */
-    if (gb_bem_condense(&M->dmesh, &M->dsys, &dp, 0, NULL, &M->Kd, &err)) die("disc condensation", &err);
-    /* Host cavity DOFs come in the order of gb_bem_condense's elem[], which we get from a first
-     * host condensation in main; here: match every host cavity element to a disc element. */
-    M->perm = malloc((size_t)nc * sizeof *M->perm);
-    double tol = 1e-9 * (fabs(M->mesh.mid[0]) + 1);
-    int k = 0;
-    for (int e = 0; e < M->mesh.n; e++) {
-        if (M->mesh.group[e] != M->cav) continue;
-        int found = -1;
-        for (int f = 0; f < M->dmesh.n; f++)
-            if (fabs(M->dmesh.mid[2 * f] - M->mesh.mid[2 * e]) < tol &&
-                fabs(M->dmesh.mid[2 * f + 1] - M->mesh.mid[2 * e + 1]) < tol)
-                found = f;
-        if (found < 0) die("a cavity element without a matching disc element", NULL);
-        M->perm[k++] = found; /* k: the element's rank among the cavity elements in mesh order */
-    }
-    /* K_d's DOFs come in the order of its elem[]: perm goes through its inverse. */
-    int m = M->m, *pos = malloc((size_t)M->dmesh.n * sizeof *pos);
-    for (int q = 0; q < m / 2; q++) pos[M->Kd.elem[q]] = q;
-    for (int q = 0; q < m / 2; q++) M->perm[q] = pos[M->perm[q]];
-    free(pos);
-    M->Kd_h = malloc((size_t)m * m * sizeof *M->Kd_h);
-    for (int j = 0; j < m; j++)
-        for (int i = 0; i < m; i++) {
-            int di = 2 * M->perm[i / 2] + i % 2, dj = 2 * M->perm[j / 2] + j % 2;
-            M->Kd_h[i + (size_t)m * j] = M->Kd.K[di + (size_t)m * dj];
-        }
+    M->filled = 1;
+    if (v_filling_setup(&M->mesh, M->cav, &dmat, &M->disc, &err)) die("disc", &err);
 }
 
 static void model_free(model *M)
 {
     gb_bem_system_free(&M->sys), gb_bem_mesh_free(&M->mesh);
-    if (M->Kd_h) gb_bem_system_free(&M->dsys), gb_bem_mesh_free(&M->dmesh), gb_bem_stiffness_free(&M->Kd);
-    free(M->perm), free(M->Kd_h);
+    v_filling_free(&M->disc);
 }
 
 static void set_problem(const opts *o, const model *M, double uy, double p, gb_bem_problem *pr)
@@ -201,18 +154,10 @@ static void solve(const opts *o, const model *M, double uy, double p, result *r)
     gb_bem_stiffness Kh;
     if (gb_bem_condense(&M->mesh, &M->sys, &pr, M->cav, NULL, &Kh, &err)) die("host condensation", &err);
     int m = M->m;
-    double *A = malloc((size_t)m * m * sizeof *A);
-    int *ipiv = malloc((size_t)m * sizeof *ipiv);
     r->u = malloc((size_t)m * sizeof *r->u);
     r->elem = malloc((size_t)m / 2 * sizeof *r->elem);
     memcpy(r->elem, Kh.elem, (size_t)m / 2 * sizeof *r->elem);
-    /* perm was built in mesh order of the cavity elements: check it is K's elem order. */
-    for (int k = 1; k < m / 2; k++)
-        if (Kh.elem[k] <= Kh.elem[k - 1]) die("cavity elements not in mesh order", NULL);
-    for (size_t i = 0; i < (size_t)m * m; i++) A[i] = Kh.K[i] + (M->Kd_h ? M->Kd_h[i] : 0);
-    for (int i = 0; i < m; i++) r->u[i] = -Kh.f0[i];
-    if (LAPACKE_dgesv(LAPACK_COL_MAJOR, m, 1, A, m, ipiv, r->u, m) != 0) die("singular coupled system", NULL);
-    free(A), free(ipiv);
+    if (v_filling_couple(M->filled ? &M->disc : NULL, &Kh, r->u, &err)) die("coupled system", &err);
     gb_bem_stiffness_free(&Kh);
     memset(&r->sol, 0, sizeof r->sol);
     if (gb_bem_solve_group_displacement(&M->mesh, &M->sys, &pr, M->cav, r->u, NULL, &r->sol, &err))

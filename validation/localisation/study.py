@@ -5,7 +5,7 @@ A 10 x 10 cm elastic square (meshes/square_cavity_sides.geo: 16 elements a side,
 of radius 2.5 cm; shear modulus G = 95000 kgf/cm^2, Poisson 0.1, plane strain) in biaxial
 compression: bottom fixed, a confining pressure P on the left and right grown in STEPS_P steps
 with the top held, then the top (ux = 0) pushed down by DUY per step for STEPS steps. The cavity
-holds N grains packed by pack_cavity.py to a solid fraction phi; kn between grains and against the
+holds N grains packed by gembem pack (pack_scene) to a solid fraction phi; kn between grains and against the
 boundary particles, kt = 0.7 kn between grains (none against the particles, frictionless).
 
 The sweep varies one parameter at a time around the base case (phi 0.82, 30 deg, kn/G = 0.1 cm):
@@ -16,7 +16,8 @@ travel, more grains, simple shear of the body, a nearly incompressible host, a l
 
 Usage: study.py cases                 one line per case: name phi friction kn
        study.py extended              one line per extended case: name load n kn_g nu P
-       study.py pack NAME             pack_cavity.py's arguments for the case
+       study.py pack NAME             the case's packing in one line (pack_args)
+       study.py pack_scene NAME MESH  the case's pack scene (gembem pack)
        study.py scene NAME DIR MESH [R] writes DIR/scene.yaml (R > 1: DIR/scene_refineR.yaml, the
                                       top's steps R times smaller); the grains file: DIR/grains.csv
        study.py disc_moduli           one line per reference disc: name shear_modulus poisson
@@ -74,10 +75,7 @@ def disc_moduli():
     return out
 
 
-SCENE = """\
-# The localisation study (validation/localisation/study.py writes this scene): {name}
-gembem: 1
-units: {{length: cm, force: kgf}}
+HOST = """\
 materials:
   grain_grain: {{kn: {kn:g}, kt: {kt:g}, friction_deg: {friction:g}}}
   grain_wall: {{kn: {kn:g}, kt: {kt:g}, friction_deg: 0}}          # unused: the host replaces the walls
@@ -88,8 +86,20 @@ host:
   material: {{shear_modulus: {G:g}, poisson: {nu:g}, plane: strain}}
   boundary: {{bottom: fixed, top: {top_bc}, left: {{pressure: 0}}, right: {{pressure: 0}}}}
   cavity: cavity
-grains:
-  file: grains.csv           # pack_cavity.py {pack}
+"""
+
+
+def host(kn, friction, mesh, cavity, nu, top_bc):
+    """The materials and the host of a case's scenes (the run's and the packing's)."""
+    return HOST.format(kn=kn, kt=KT_KN * kn, friction=friction, mesh=mesh, cavity=cavity, G=G, nu=nu, top_bc=top_bc)
+
+
+SCENE = """\
+# The localisation study (validation/localisation/study.py writes this scene): {name}
+gembem: 1
+units: {{length: cm, force: kgf}}
+{host}grains:
+  file: grains.csv           # gembem pack of pack.yaml ({pack})
 solver: {{method: global, linear: cholmod, accuracy: {a:g}, max_iterations: {max_it}}}
 loading:
   - relax: {{steps: 1}}
@@ -159,14 +169,52 @@ def extended():
     return [(n, ext(n)) for n, _ in EXTENDED]
 
 
-def pack_args(name):
+def pack_values(name):
+    """(grains, solid fraction of the usable disc, seed, cavity elements) of the case's packing."""
     c = ext(name)
     if c is not None:
-        return f"--n {c['n']} --phi {c['phi']} --seed {c['seed']} --elements {c['cavity']}"
+        return c["n"], c["phi"], c["seed"], c["cavity"]
     for n, phi, friction, kn in cases():
         if n == name:
-            return f"--n {N_GRAINS} --phi {phi} --seed {SEED}"
+            return N_GRAINS, phi, SEED, 64
     raise SystemExit(f"unknown case {name}")
+
+
+def pack_args(name):
+    """The case's packing in one line (the workflow repacks a case when it changes)."""
+    n, phi, seed, cavity = pack_values(name)
+    return f"--n {n} --phi {phi} --seed {seed} --elements {cavity}"
+
+
+PACK_SCENE = """\
+# The localisation study's packing (validation/localisation/study.py writes this pack scene): {name}
+# N discs of radii uniform in [0.75, 1.25] x r0 grown by gembem pack (docs/packing.md) into the
+# cavity, frictionless, to the solid fraction phi = {phi} of the usable disc (the cavity's radius
+# less the boundary particles' bulge, R cos(pi/m) - R sin(pi/m)): {phi_polygon:.6f} of the polygon.
+gembem: 1
+units: {{length: cm, force: kgf}}
+{host}solver: {{method: global, accuracy: {a:g}}}
+pack:
+  protocol: growth
+  seed: {seed}
+  sizes: {{uniform: [0.75, 1.25]}}   # radii, scaled to the solid fraction
+  count: {n}
+  solid_fraction: {phi_polygon:.6f}
+"""
+
+
+def pack_scene(name, mesh, radius=2.5):
+    """The pack scene of the case (gembem pack -o DIR; the grains of DIR/state_grains.csv). The
+    grains are packed frictionless whatever the case's friction, with its kn; the accuracy is
+    5e-5 kn (the sweep's), the balance of every grain at the end of the packing."""
+    n, phi, seed, cavity = pack_values(name)
+    c = ext(name)
+    kn = c["kn_g"] * G if c is not None else next(k for m, _, _, k in cases() if m == name)
+    usable = radius * (math.cos(math.pi / cavity) - math.sin(math.pi / cavity))
+    polygon = 0.5 * cavity * radius**2 * math.sin(2 * math.pi / cavity)
+    nu = c["nu"] if c is not None else NU
+    return PACK_SCENE.format(name=name, host=host(kn, 0, mesh, cavity, nu, "displacement"), a=A_KN * kn, seed=seed,
+                             n=n, phi=phi, phi_polygon=phi * math.pi * usable**2 / polygon)
 
 
 def scene(name, mesh, refine=1):
@@ -176,16 +224,15 @@ def scene(name, mesh, refine=1):
         kn = c["kn_g"] * G
         shear = c["load"] == "shear"
         dp = c["P"] / STEPS_P
-        return SCENE.format(name=name, kn=kn, kt=KT_KN * kn, friction=c["friction"], mesh=mesh, G=G, nu=c["nu"],
-                            cavity=c["cavity"], top_bc="{ux: 0, ty: 0}" if shear else "displacement",
+        return SCENE.format(name=name, host=host(kn, c["friction"], mesh, c["cavity"], c["nu"],
+                                                 "{ux: 0, ty: 0}" if shear else "displacement"),
                             pack=pack_args(name), a=ext_accuracy(c),
                             max_it=c["max_it"], steps_p=STEPS_P, dp=dp,
                             top_p=f", top: [0, {-dp:g}]" if shear else "", steps=c["steps"] * refine,
                             dux=c["du"] / refine if shear else 0, duy=0 if shear else -c["du"] / refine)
     for n, phi, friction, kn in cases():
         if n == name:
-            return SCENE.format(name=name, kn=kn, kt=KT_KN * kn, friction=friction, mesh=mesh, G=G, nu=NU,
-                                cavity=64, top_bc="displacement", pack=pack_args(name),
+            return SCENE.format(name=name, host=host(kn, friction, mesh, 64, NU, "displacement"), pack=pack_args(name),
                                 a=kn * (A_FRICTIONLESS if friction == 0 else A_KN), max_it=3000,
                                 steps_p=STEPS_P, dp=P / STEPS_P, top_p="", steps=STEPS * refine, dux=0,
                                 duy=DUY / refine)
@@ -201,6 +248,8 @@ def main():
             print(n, c["load"], c["n"], c["kn_g"], c["nu"], c["P"])
     elif sys.argv[1] == "pack":
         print(pack_args(sys.argv[2]))
+    elif sys.argv[1] == "pack_scene":
+        print(pack_scene(sys.argv[2], sys.argv[3]), end="")
     elif sys.argv[1] == "scene":
         refine = int(sys.argv[5]) if len(sys.argv) > 5 else 1
         with open(f"{sys.argv[3]}/scene{'' if refine == 1 else f'_refine{refine}'}.yaml", "w") as f:
