@@ -418,6 +418,15 @@ static gb_status solve_system(gb_global *gl, const gb_sim *sim, const gb_wall_co
         gl->stats.pcg_solves++;
         return GB_OK;
     }
+    if (reuse_factor && gl->kind == GB_LINEAR_PETSC) {
+        int done = gb_petsc_solve_on_factor(gl->petsc, gl->Ax, gl->rhs, gl->x, &gl->stats.solve, &gl->stats.pcg_steps,
+                                            err, &st);
+        if (st) return st;
+        if (done) {
+            gl->stats.pcg_solves++;
+            return GB_OK;
+        }
+    }
     for (;;) {
         int singular = factor_solve(gl, err, &st);
         if (st) return st;

@@ -20,7 +20,7 @@ typedef struct {
     long analyses, factorisations, regularised;
     long corrections; /* iterations solved twice: sliding contacts that the first solution unloads */
     long moves;       /* calls of gb_global_moves: iterations plus moves retried with more damping */
-    long pcg_solves;  /* systems solved by conjugate gradients on an earlier factor (CHOLMOD) */
+    long pcg_solves;  /* systems solved by conjugate gradients on an earlier factor (CHOLMOD, PETSc direct) */
     long pcg_steps;   /* their conjugate-gradient steps */
     long ksp_iterations; /* PETSc: the KSP's iterations (1 per solve for a direct solver) */
 } gb_global_stats;

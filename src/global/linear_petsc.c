@@ -4,6 +4,7 @@
  * receive it, so that both sides make the same collective calls in the same order. */
 #define _POSIX_C_SOURCE 199309L
 #include <petscksp.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
@@ -12,7 +13,7 @@
 #include "gembem/petsc.h"
 #include "global/linear_petsc.h"
 
-enum { CMD_STOP = 0, CMD_CREATE = 1, CMD_PATTERN = 2, CMD_SOLVE = 3, CMD_FREE = 4 };
+enum { CMD_STOP = 0, CMD_CREATE = 1, CMD_PATTERN = 2, CMD_SOLVE = 3, CMD_FREE = 4, CMD_ON_FACTOR = 5 };
 
 /* MPI and PETSc are started once per process, and the workers keep their systems by id: this
  * process-wide state mirrors theirs. */
@@ -27,6 +28,7 @@ static struct {
 
 struct gb_petsc {
     int id, symmetric;
+    int direct;               /* preonly with a factorisation: its factor can precondition a Krylov solve */
     gb_petsc_settings s;
     PetscInt n, m, rstart;    /* global size, this rank's rows [rstart, rstart + m) */
     PetscInt *ri, *cj;        /* this rank's rows, compressed (global columns) */
@@ -103,6 +105,44 @@ static PetscErrorCode system_setup(gb_petsc *ps)
         if (!set) PetscCall(PetscOptionsSetValue(NULL, "-mg_levels_pc_type", "sor"));
     }
     PetscCall(KSPSetFromOptions(ps->ksp));
+    PetscBool preonly, factor;
+    PetscCall(PetscObjectTypeCompare((PetscObject)ps->ksp, KSPPREONLY, &preonly));
+    PetscCall(PetscObjectTypeCompareAny((PetscObject)pc, &factor, PCLU, PCCHOLESKY, ""));
+    ps->direct = preonly && factor;
+    return 0;
+}
+
+/* A correction's system (a few contacts given kt back) by CG (GMRES if unsymmetric) preconditioned
+ * by the previous factorisation, kept (PCSetReusePreconditioner): as CHOLMOD's
+ * pcg_previous_factor in global.c, converged to 1e-6 of |rhs| within max_it steps or not at all.
+ * `on` switches the KSP to it, then back to the scene's solver. */
+typedef struct {
+    char type[64];
+    PetscReal rtol, atol, dtol;
+    PetscInt max_it;
+    KSPNormType norm;
+} saved_ksp;
+
+static PetscErrorCode krylov_on_factor(gb_petsc *ps, int on, int max_it, saved_ksp *sv)
+{
+    PC pc;
+    PetscCall(KSPGetPC(ps->ksp, &pc));
+    if (on) {
+        KSPType type;
+        PetscCall(KSPGetType(ps->ksp, &type));
+        snprintf(sv->type, sizeof sv->type, "%s", type);
+        PetscCall(KSPGetTolerances(ps->ksp, &sv->rtol, &sv->atol, &sv->dtol, &sv->max_it));
+        PetscCall(KSPGetNormType(ps->ksp, &sv->norm));
+        PetscCall(PCSetReusePreconditioner(pc, PETSC_TRUE));
+        PetscCall(KSPSetType(ps->ksp, ps->symmetric ? KSPCG : KSPGMRES));
+        PetscCall(KSPSetNormType(ps->ksp, ps->symmetric ? KSP_NORM_UNPRECONDITIONED : KSP_NORM_PRECONDITIONED));
+        PetscCall(KSPSetTolerances(ps->ksp, 1e-6, 0, PETSC_DEFAULT, max_it));
+        return 0;
+    }
+    PetscCall(PCSetReusePreconditioner(pc, PETSC_FALSE));
+    PetscCall(KSPSetType(ps->ksp, sv->type));
+    PetscCall(KSPSetNormType(ps->ksp, sv->norm));
+    PetscCall(KSPSetTolerances(ps->ksp, sv->rtol, sv->atol, sv->dtol, sv->max_it));
     return 0;
 }
 
@@ -190,8 +230,8 @@ static PetscErrorCode system_pattern(gb_petsc *ps, PetscInt n, const int *Ap, co
 
 /* New values and right-hand side, sent from rank 0 by rows; the solve; the solution gathered to
  * rank 0. The pattern is unchanged, so that a direct solver keeps its symbolic analysis. */
-static PetscErrorCode system_solve(gb_petsc *ps, const double *Ax, const double *rhs, double *x, int *failed,
-                                   PetscInt *its, double *t_setup, double *t_solve)
+static PetscErrorCode system_solve(gb_petsc *ps, const double *Ax, const double *rhs, double *x, int on_factor,
+                                   int *failed, PetscInt *its, double *t_setup, double *t_solve)
 {
     MPI_Comm comm = PETSC_COMM_WORLD;
     double t0 = gb_clock_seconds();
@@ -212,6 +252,8 @@ static PetscErrorCode system_solve(gb_petsc *ps, const double *Ax, const double 
     PetscCall(MatAssemblyEnd(ps->A, MAT_FINAL_ASSEMBLY));
     /* New values: the set-up (a direct solver's numerical factorisation, on the symbolic one of
      * the same pattern) is done here, not inside KSPSolve, so that it is timed as such. */
+    saved_ksp sv;
+    if (on_factor) PetscCall(krylov_on_factor(ps, 1, on_factor, &sv));
     PetscCall(KSPSetOperators(ps->ksp, ps->A, ps->A));
     PetscCall(KSPSetUp(ps->ksp));
     double t1 = gb_clock_seconds();
@@ -220,6 +262,7 @@ static PetscErrorCode system_solve(gb_petsc *ps, const double *Ax, const double 
     PetscCall(KSPGetConvergedReason(ps->ksp, &reason));
     PetscCall(KSPGetIterationNumber(ps->ksp, its));
     *failed = reason < 0 ? (int)reason : 0;
+    if (on_factor) PetscCall(krylov_on_factor(ps, 0, 0, &sv));
     PetscCall(VecScatterBegin(ps->to0, ps->x, ps->x0, INSERT_VALUES, SCATTER_FORWARD));
     PetscCall(VecScatterEnd(ps->to0, ps->x, ps->x0, INSERT_VALUES, SCATTER_FORWARD));
     if (proc.rank == 0) {
@@ -312,7 +355,7 @@ int gb_petsc_solve(gb_petsc *ps, const double *Ax, const double *rhs, double *x,
     PetscInt its = 0;
     *st = GB_OK;
     command(CMD_SOLVE, ps->id);
-    PetscErrorCode e = system_solve(ps, Ax, rhs, x, &failed, &its, t_setup, t_solve);
+    PetscErrorCode e = system_solve(ps, Ax, rhs, x, 0, &failed, &its, t_setup, t_solve);
     if (e) return *st = petsc_failed("the solve", e, err), 0;
     *iterations += its;
     if (failed == KSP_DIVERGED_PC_FAILED || failed == KSP_DIVERGED_INDEFINITE_PC ||
@@ -322,6 +365,22 @@ int gb_petsc_solve(gb_petsc *ps, const double *Ax, const double *rhs, double *x,
         *st = gb_fail(err, GB_ENUMERIC, "PETSc: the %s solve did not converge (%s after %d iterations, rtol %g)",
                       ps->s.ksp, KSPConvergedReasons[failed], (int)its, ps->s.rtol);
     return 0;
+}
+
+int gb_petsc_solve_on_factor(gb_petsc *ps, const double *Ax, const double *rhs, double *x, double *t_solve,
+                             long *iterations, gb_error *err, gb_status *st)
+{
+    int failed;
+    PetscInt its = 0;
+    double t_setup = 0;
+    *st = GB_OK;
+    if (!ps->direct) return 0;
+    command(CMD_ON_FACTOR, ps->id);
+    PetscErrorCode e = system_solve(ps, Ax, rhs, x, GB_PETSC_ON_FACTOR_MAX, &failed, &its, &t_setup, t_solve);
+    if (e) return *st = petsc_failed("the solve on the previous factor", e, err), 0;
+    *iterations += its;
+    *t_solve += t_setup;
+    return !failed;
 }
 
 /* ---- the workers ---- */
@@ -349,11 +408,12 @@ static PetscErrorCode serve_one(int cmd, int id)
         PetscCallMPI(MPI_Bcast(&n, 1, MPI_INT, 0, PETSC_COMM_WORLD));
         return system_pattern(ps, n, NULL, NULL);
     }
-    if (cmd == CMD_SOLVE) {
+    if (cmd == CMD_SOLVE || cmd == CMD_ON_FACTOR) {
         int failed;
         PetscInt its;
         double t1 = 0, t2 = 0;
-        return system_solve(ps, NULL, NULL, NULL, &failed, &its, &t1, &t2);
+        return system_solve(ps, NULL, NULL, NULL, cmd == CMD_ON_FACTOR ? GB_PETSC_ON_FACTOR_MAX : 0, &failed, &its,
+                            &t1, &t2);
     }
     proc.table[id] = NULL;
     return system_free(ps);

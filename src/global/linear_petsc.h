@@ -23,5 +23,11 @@ gb_status gb_petsc_pattern(gb_petsc *ps, int n, const int *Ap, const int *Ai, gb
  * iterations. */
 int gb_petsc_solve(gb_petsc *ps, const double *Ax, const double *rhs, double *x, double *t_setup, double *t_solve,
                    long *iterations, gb_error *err, gb_status *st);
+/* A correction's system solved by CG (GMRES if unsymmetric) preconditioned by the previous
+ * factorisation (a direct solver only), to 1e-6 of |rhs| within GB_PETSC_ON_FACTOR_MAX steps.
+ * Returns 1 if it converged (x holds the solution), 0 if a factorisation is needed (or *st set). */
+enum { GB_PETSC_ON_FACTOR_MAX = 20 };
+int gb_petsc_solve_on_factor(gb_petsc *ps, const double *Ax, const double *rhs, double *x, double *t_solve,
+                             long *iterations, gb_error *err, gb_status *st);
 
 #endif
