@@ -26,3 +26,25 @@ target_link_libraries(gb_gmsh INTERFACE ${GMSH_LIBRARY})
 
 # Debian's python3 with matplotlib, for figures (not the python3 first on PATH).
 set(GB_PYTHON /usr/bin/python3 CACHE FILEPATH "Python with matplotlib, for figures")
+
+# PETSc (optional, libpetsc-real-dev; tools/setup.sh --with-petsc): the distributed linear solver of
+# solver.linear: petsc (src/global/linear_petsc.c). AUTO builds it when the pkg-config file is found.
+set(GB_WITH_PETSC AUTO CACHE STRING "Build the PETSc linear solver: AUTO, ON or OFF")
+set_property(CACHE GB_WITH_PETSC PROPERTY STRINGS AUTO ON OFF)
+set(GB_HAVE_PETSC OFF)
+if(NOT GB_WITH_PETSC STREQUAL "OFF")
+  if(GB_WITH_PETSC STREQUAL "ON")
+    pkg_check_modules(PETSC REQUIRED IMPORTED_TARGET PETSc)
+  else()
+    pkg_check_modules(PETSC QUIET IMPORTED_TARGET PETSc)
+  endif()
+  if(PETSC_FOUND)
+    find_package(MPI COMPONENTS C)
+    if(MPI_C_FOUND)
+      set(GB_HAVE_PETSC ON)
+    elseif(GB_WITH_PETSC STREQUAL "ON")
+      message(FATAL_ERROR "GB_WITH_PETSC=ON: PETSc found but not MPI's C library (libopenmpi-dev)")
+    endif()
+  endif()
+endif()
+message(STATUS "PETSc linear solver (solver.linear: petsc): ${GB_HAVE_PETSC}")

@@ -65,6 +65,15 @@ typedef struct {
     double host_remote_increment[3];
 } gb_stage;
 
+/* solver.petsc: the PETSc linear solver of the global solver (solver.linear: petsc, docs/scaling.md). */
+typedef struct {
+    char ksp[16];         /* KSP type: preonly (a direct solve), cg, gmres, bcgs, minres */
+    char pc[16];          /* PC type; "": cholesky for a symmetric system, lu otherwise */
+    char factor[16];      /* the direct solver of lu and cholesky: mumps, superlu_dist or petsc */
+    double rtol;          /* an iterative KSP's relative residual tolerance */
+    char options[512];    /* more PETSc options, e.g. "-pc_gamg_threshold 0.01" (PETSC_OPTIONS wins) */
+} gb_petsc_settings;
+
 /* Correction factors of the reference iteration (K 9-12) and its convergence test (K 14). */
 typedef struct {
     double alpha, alpha1;  /* alpha: case a) and d); alpha1 (alpha'): normal move of case c) */
@@ -74,7 +83,8 @@ typedef struct {
     int accuracy_default;  /* the scene gave no accuracy: accuracy_relative is GB_ACCURACY_RELATIVE_DEFAULT */
     long max_iterations;   /* cap per load step */
     int method;            /* GB_METHOD_REFERENCE (Jacobi-like, per grain) or GB_METHOD_GLOBAL */
-    int linear;            /* global: GB_LINEAR_CHOLMOD or GB_LINEAR_UMFPACK */
+    int linear;            /* global: GB_LINEAR_CHOLMOD, GB_LINEAR_UMFPACK or GB_LINEAR_PETSC */
+    gb_petsc_settings petsc; /* linear: petsc */
     double global_alpha;   /* global: share of the solution taken per iteration (default 1) */
     double max_move;       /* global: largest move per iteration, as a share of the grain's radius */
     int cutbacks;          /* a load step that does not converge is retried in halves, down to 1/2^cutbacks */

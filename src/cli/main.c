@@ -2,6 +2,7 @@
 #include <string.h>
 
 #include "cli/cli.h"
+#include "gembem/petsc.h"
 
 static void usage(FILE *to)
 {
@@ -37,6 +38,8 @@ void gb_cli_command_line(int argc, char **argv, char *out, size_t cap)
 
 int main(int argc, char **argv)
 {
+    int code;
+    if (gb_petsc_serve(&code)) return code; /* an MPI worker of the linear solves (solver.linear: petsc) */
     if (argc < 2) {
         usage(stderr);
         return 2;

@@ -138,8 +138,8 @@ static void add_exact_diagonal(gb_global *gl, const gb_sim *sim, const gb_pair *
 
 /* K = sum over contacts of [T T']^t S_c [T T'] (K 1-8, 25) over grains, boundary particles (the
  * translational part of T') and walls, plus the host's condensed stiffness on the particles (its
- * symmetric part for CHOLMOD), held DOFs as identity rows. A wall DOF that moves walls inward by
- * lever x its value changes a wall contact's overlap by as much: its coupling with grain i is
+ * symmetric part for a symmetric system: CHOLMOD, PETSc with newton: damped), held DOFs as identity
+ * rows. A wall DOF that moves walls inward by lever x its value changes a wall contact's overlap by as much: its coupling with grain i is
  * kn lever (c, s, 0). */
 void gb_global_assemble(gb_global *gl, const gb_sim *sim, double shift)
 {
@@ -159,7 +159,7 @@ void gb_global_assemble(gb_global *gl, const gb_sim *sim, double shift)
     }
     if (np > 0) {
         const gb_host *host = sim->host;
-        const double *K = gl->kind == GB_LINEAR_CHOLMOD ? host->Ksym : host->K.K;
+        const double *K = gl->symmetric ? host->Ksym : host->K.K;
         int m = host->m;
         for (int e = 0; e < np; e++) {
             int first = entry_of(gl, n + e, n); /* the particles are contiguous in every particle's list */

@@ -1,7 +1,8 @@
-/* The global system's solution: its sparse pattern, factorisation (CHOLMOD or UMFPACK), the
+/* The global system's solution: its sparse pattern, factorisation (CHOLMOD, UMFPACK or PETSc), the
  * corrections of sliding contacts it unloads, and the moves it gives (assembly: assemble.c). */
 #include <math.h>
 #include <omp.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -19,6 +20,7 @@ gb_status gb_global_create(gb_linear_kind kind, int n_grains, int n_particles, g
     gb_global *gl = calloc(1, sizeof *gl);
     if (!gl) return gb_fail(err, GB_ENOMEM, "out of memory");
     gl->kind = kind;
+    gl->symmetric = kind != GB_LINEAR_UMFPACK;
     gl->n = n_grains;
     gl->np = n_particles;
     gl->nodes = n_grains + n_particles + NW;
@@ -67,6 +69,7 @@ void gb_global_free(gb_global *gl)
 {
     if (!gl) return;
     free_factors(gl);
+    gb_petsc_free(gl->petsc);
     cholmod_finish(&gl->cc);
     free(gl->dof0), free(gl->adj_start), free(gl->adj), free(gl->adj_off), free(gl->collen), free(gl->colstart);
     free(gl->pos_ij), free(gl->pos_ji), free(gl->wall_in_grain), free(gl->grain_in_wall), free(gl->touch);
@@ -201,6 +204,9 @@ static gb_status analyse(gb_global *gl, gb_error *err)
         memcpy(gl->A->x, gl->Ax, (size_t)gl->nnz * sizeof(double));
         gl->L = cholmod_analyze(gl->A, &gl->cc);
         if (!gl->L) return gb_fail(err, GB_ENUMERIC, "CHOLMOD analysis failed (status %d)", gl->cc.status);
+    } else if (gl->kind == GB_LINEAR_PETSC) {
+        gb_status st = gb_petsc_pattern(gl->petsc, n3, gl->Ap, gl->Ai, err);
+        if (st) return st;
     } else {
         int st = umfpack_di_symbolic(n3, n3, gl->Ap, gl->Ai, gl->Ax, &gl->symbolic, gl->control, gl->info);
         if (st != UMFPACK_OK) return gb_fail(err, GB_ENUMERIC, "UMFPACK symbolic analysis failed (status %d)", st);
@@ -250,6 +256,12 @@ static int factor_solve(gb_global *gl, gb_error *err, gb_status *st)
         }
         memcpy(gl->x, X->x, (size_t)n3 * sizeof(double));
         cholmod_free_dense(&X, &gl->cc);
+    } else if (gl->kind == GB_LINEAR_PETSC) {
+        /* set-up (distribution and factorisation) and solve are timed inside */
+        int singular = gb_petsc_solve(gl->petsc, gl->Ax, gl->rhs, gl->x, &gl->stats.factorise, &gl->stats.solve,
+                                      &gl->stats.ksp_iterations, err, st);
+        gl->stats.factorisations++;
+        return singular;
     } else {
         if (gl->numeric) umfpack_di_free_numeric(&gl->numeric);
         int s = umfpack_di_numeric(gl->Ap, gl->Ai, gl->Ax, gl->symbolic, &gl->numeric, gl->control, gl->info);
@@ -361,6 +373,19 @@ done:
     return ok;
 }
 
+/* A test hook: with GB_DUMP_FIRST_SOLVE=FILE, the first solution of the process (one value a line)
+ * is written to FILE if it does not exist yet, to compare linear solvers on the same system
+ * (tests/petsc). */
+static void dump_first_solution(gb_global *gl)
+{
+    const char *path = getenv("GB_DUMP_FIRST_SOLVE");
+    gl->dumped = 1;
+    FILE *f = path ? fopen(path, "wx") : NULL;
+    if (!f) return;
+    for (int k = 0; k < gl->ndof; k++) fprintf(f, "%.17g\n", gl->x[k]);
+    fclose(f);
+}
+
 /* Holds what the system does not move, sets the right-hand side -F, assembles with the damping mu
  * and solves (analysing first on a new pattern), regularising a singular matrix. */
 static gb_status solve_system(gb_global *gl, const gb_sim *sim, const gb_wall_control *wc, double mu, int new_pattern,
@@ -393,6 +418,15 @@ static gb_status solve_system(gb_global *gl, const gb_sim *sim, const gb_wall_co
         gl->stats.pcg_solves++;
         return GB_OK;
     }
+    if (reuse_factor && gl->kind == GB_LINEAR_PETSC) {
+        int done = gb_petsc_solve_on_factor(gl->petsc, gl->Ax, gl->rhs, gl->x, &gl->stats.solve, &gl->stats.pcg_steps,
+                                            err, &st);
+        if (st) return st;
+        if (done) {
+            gl->stats.pcg_solves++;
+            return GB_OK;
+        }
+    }
     for (;;) {
         int singular = factor_solve(gl, err, &st);
         if (st) return st;
@@ -406,6 +440,7 @@ static gb_status solve_system(gb_global *gl, const gb_sim *sim, const gb_wall_co
         gb_global_assemble(gl, sim, shift);
         gl->stats.assemble += gb_clock_seconds() - t0;
     }
+    if (!gl->dumped) dump_first_solution(gl);
     return GB_OK;
 }
 
@@ -438,6 +473,11 @@ gb_status gb_global_resume(gb_global *gl, const gb_pair_list *P, const unsigned 
 gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const gb_wall_control *wc, double mu, gb_error *err)
 {
     gb_status st;
+    /* PETSc's solver, made at the first move: the scene's settings and its symmetry are known then. */
+    if (gl->kind == GB_LINEAR_PETSC && !gl->petsc) {
+        gl->symmetric = sim->scene->solver.newton != GB_NEWTON_LINE_SEARCH;
+        if ((st = gb_petsc_create(&sim->scene->solver.petsc, gl->symmetric, &gl->petsc, err))) return st;
+    }
     double t0 = gb_clock_seconds();
     gl->stats.moves++;
     int new_pattern = gl->pattern_of != sim->pairs.generation;

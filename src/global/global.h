@@ -1,6 +1,6 @@
 /* The global solver for granular scenes: every grain's move from one sparse system, the contact
  * stiffness assembled over all contacts (3 DOFs per grain, docs/method.md section 3), K dX = -F, solved
- * with CHOLMOD (symmetric) or UMFPACK; the symbolic analysis is reused while the candidate-pair
+ * with CHOLMOD (symmetric), UMFPACK or PETSc (distributed, linear_petsc.h); the symbolic analysis is reused while the candidate-pair
  * list (the sparsity pattern) stays the same. */
 #ifndef GB_GLOBAL_H
 #define GB_GLOBAL_H
@@ -11,7 +11,8 @@
 struct gb_sim;
 typedef struct gb_global gb_global;
 
-typedef enum { GB_LINEAR_CHOLMOD = 0, GB_LINEAR_UMFPACK = 1 } gb_linear_kind;
+/* PETSC: the matrix distributed over the MPI ranks (linear_petsc.h); symmetric with newton: damped. */
+typedef enum { GB_LINEAR_CHOLMOD = 0, GB_LINEAR_UMFPACK = 1, GB_LINEAR_PETSC = 2 } gb_linear_kind;
 
 /* Time spent, for benchmarks (seconds, cumulative). */
 typedef struct {
@@ -19,8 +20,9 @@ typedef struct {
     long analyses, factorisations, regularised;
     long corrections; /* iterations solved twice: sliding contacts that the first solution unloads */
     long moves;       /* calls of gb_global_moves: iterations plus moves retried with more damping */
-    long pcg_solves;  /* systems solved by conjugate gradients on an earlier factor (CHOLMOD) */
+    long pcg_solves;  /* systems solved by conjugate gradients on an earlier factor (CHOLMOD, PETSc direct) */
     long pcg_steps;   /* their conjugate-gradient steps */
+    long ksp_iterations; /* PETSc: the KSP's iterations (1 per solve for a direct solver) */
 } gb_global_stats;
 
 gb_status gb_global_create(gb_linear_kind kind, int n_grains, int n_particles, gb_global **out, gb_error *err);

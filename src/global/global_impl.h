@@ -8,6 +8,7 @@
 
 #include "gem/sim.h"
 #include "global/global.h"
+#include "global/linear_petsc.h"
 
 /* Wall DOFs: x axis (left and right walls inward), y axis (bottom and top inward), and the
  * isotropic strain of constant mean stress control. */
@@ -19,6 +20,7 @@ enum { NW = 3, W_X = 0, W_Y = 1, W_MEAN = 2 };
  * same rows. */
 struct gb_global {
     gb_linear_kind kind;
+    int symmetric;            /* the host's symmetric part and CHOLMOD's matrix (else the exact tangent) */
     int n, np;                /* grains, boundary particles */
     int nodes, ndof;
     long pattern_of;          /* pairs.generation the pattern was built for (-1: none) */
@@ -51,6 +53,8 @@ struct gb_global {
     cholmod_factor *L;
     void *symbolic, *numeric;
     double control[UMFPACK_CONTROL], info[UMFPACK_INFO];
+    gb_petsc *petsc;
+    int dumped;               /* the first solution was written (GB_DUMP_FIRST_SOLVE, a test hook) */
     gb_global_stats stats;
 };
 

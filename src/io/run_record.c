@@ -10,6 +10,8 @@
 #include "core/clock.h"
 #include "core/memory.h"
 #include "gem/sim.h"
+#include "gembem/petsc.h"
+#include "io/scene_report.h"
 
 static void material(FILE *f, const char *name, const gb_material *m)
 {
@@ -56,8 +58,15 @@ void gb_run_record_settings(FILE *f, const gb_scene *sc)
     fprintf(f, "  solver:\n    method: %s\n", sv->method == GB_METHOD_GLOBAL ? "global" : "reference");
     if (sv->method == GB_METHOD_GLOBAL)
         fprintf(f, "    linear: %s\n    newton: %s\n    global_alpha: %.17g\n    max_move: %.17g\n",
-                sv->linear ? "umfpack" : "cholmod", sv->newton == GB_NEWTON_LINE_SEARCH ? "line_search" : "damped",
-                sv->global_alpha, sv->max_move);
+                sv->linear == 2 ? "petsc" : sv->linear ? "umfpack" : "cholmod",
+                sv->newton == GB_NEWTON_LINE_SEARCH ? "line_search" : "damped", sv->global_alpha, sv->max_move);
+    if (sv->method == GB_METHOD_GLOBAL && sv->linear == 2) {
+        const gb_petsc_settings *p = &sv->petsc;
+        fprintf(f, "    petsc:\n      ranks: %d   # MPI processes in the solves\n      ksp: %s\n      pc: %s\n"
+                   "      factor: %s\n      rtol: %.17g\n      ", gb_petsc_ranks(), p->ksp,
+                p->pc[0] ? p->pc : sv->newton == GB_NEWTON_LINE_SEARCH ? "lu" : "cholesky", p->factor, p->rtol);
+        gb_info_quoted(f, "options", p->options);
+    }
     if (sv->accuracy_relative > 0)
         fprintf(f, "    accuracy: {relative: %.17g}%s\n", sv->accuracy_relative,
                 sv->accuracy_default ? "   # the default: the scene gives none" : "");

@@ -8,6 +8,7 @@
 #include "scene/admit.h"
 #include "scene/grains_file.h"
 #include "scene/host_read.h"
+#include "scene/petsc_read.h"
 #include "scene/scene_pack.h"
 #include "scene/state_read.h"
 #include "scene/yaml_read.h"
@@ -17,7 +18,8 @@ gb_solver_settings gb_solver_defaults(void)
 {
     gb_solver_settings s = {.alpha = 0.75, .alpha1 = 0.5, .beta = 20.0, .beta1 = 20.0, .max_iterations = 100000,
                             .method = GB_METHOD_REFERENCE, .global_alpha = 1.0, .max_move = 0.1, .cutbacks = 4,
-                            .newton = GB_NEWTON_DAMPED};
+                            .newton = GB_NEWTON_DAMPED,
+                            .petsc = {.ksp = "preonly", .factor = "mumps", .rtol = 1e-12}};
     return s;
 }
 
@@ -189,15 +191,17 @@ static gb_status read_solver(gb_ymap *top, gb_solver_settings *sv, gb_error *err
         gb_ymap_find(&m, "newton", 0, &v, err);
         return gb_yaml_fail(m.doc, v, err, "solver.newton: expected 'damped' or 'line_search', found '%s'", newton);
     }
+    gb_ymap_find(&m, "linear", 0, &v, err);
     if (!strcmp(linear, "umfpack") || (!linear[0] && sv->newton == GB_NEWTON_LINE_SEARCH)) sv->linear = 1;
-    else if (linear[0] && strcmp(linear, "cholmod")) {
-        gb_ymap_find(&m, "linear", 0, &v, err);
-        return gb_yaml_fail(m.doc, v, err, "solver.linear: expected 'cholmod' or 'umfpack', found '%s'", linear);
-    }
-    if (sv->newton == GB_NEWTON_LINE_SEARCH && (sv->method != GB_METHOD_GLOBAL || sv->linear != 1)) {
+    else if (!strcmp(linear, "petsc")) sv->linear = 2;
+    else if (linear[0] && strcmp(linear, "cholmod"))
+        return gb_yaml_fail(m.doc, v, err, "solver.linear: expected 'cholmod', 'umfpack' or 'petsc', found '%s'",
+                            linear);
+    if ((st = gb_read_petsc(&m, sv->linear == 2 ? v : NULL, sv, err))) return st;
+    if (sv->newton == GB_NEWTON_LINE_SEARCH && (sv->method != GB_METHOD_GLOBAL || sv->linear == 0)) {
         gb_ymap_find(&m, "newton", 0, &v, err);
         return gb_yaml_fail(m.doc, v, err, "solver.newton: line_search is an iteration of method: global with "
-                                           "linear: umfpack (its exact tangent is not symmetric)");
+                                           "linear: umfpack or petsc (its exact tangent is not symmetric)");
     }
     if ((st = gb_ymap_number(&m, "global_alpha", GB_Y_POSITIVE, &sv->global_alpha, err)) ||
         (st = gb_ymap_number(&m, "max_move", GB_Y_POSITIVE, &sv->max_move, err)))
