@@ -6,9 +6,15 @@
 #ifndef GB_CHECKPOINT_H
 #define GB_CHECKPOINT_H
 
+#include <limits.h>
 #include <stdint.h>
 
 #include "gembem/gem.h"
+
+/* realpath() writes up to PATH_MAX bytes into its buffer */
+#ifndef PATH_MAX
+#define PATH_MAX 4096
+#endif
 
 #define GB_CHECKPOINT_NAME "checkpoint.txt"
 #define GB_CHECKPOINT_TAIL 64
@@ -25,7 +31,7 @@ typedef struct {
 
 typedef struct {
     uint64_t scene_hash;
-    char scene_path[1024];  /* absolute */
+    char scene_path[PATH_MAX]; /* absolute, by realpath() */
     int n_files;
     gb_checkpoint_file file[GB_CHECKPOINT_MAX_FILES];
 } gb_checkpoint_meta;
