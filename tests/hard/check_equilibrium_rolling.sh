@@ -16,21 +16,13 @@
 #   check_equilibrium_rolling.sh GEMBEM JAMMED_DIR OUT_DIR
 set -euo pipefail
 gembem=$1 jammed=$2 out=$3
-check=$(cd "$(dirname "$0")/../.." && pwd)/tools/check_equilibrium.py
-steperr=$(dirname "$check")/check_step_error.py
+source "$(dirname "$0")/path_scene.sh"
 rm -rf "$out"; mkdir -p "$out"
-fails=0
-ok() { echo "ok: $*"; }
-bad() { echo "FAIL: $*"; fails=$((fails + 1)); }
 rolling="rolling: {kr: 2.5e6, eta: 0.1}"
 for method in reference global line_search; do
-  solver="method: $method"; [ $method = line_search ] && solver="method: global, newton: line_search"
-  sed -e "s|^grains: {file: jammed.csv}|grains: {file: $jammed/jammed.csv}|" \
-      -e "s|^solver: .*|solver: {$solver, accuracy: 100, max_iterations: 2000000}|" \
-      -e "s|friction_deg: 25}|friction_deg: 25, $rolling}|" -e "s|friction_deg: 0}|friction_deg: 0, $rolling}|" \
-      -e '/^loading:/,$d' "$jammed/scene.yaml" > "$out/$method.yaml"
+  path_scene $method "$jammed" "$out/$method.yaml" "" "" \
+    -e "s|friction_deg: 25}|friction_deg: 25, $rolling}|" -e "s|friction_deg: 0}|friction_deg: 0, $rolling}|"
   grep -q "grain_wall: .*rolling" "$out/$method.yaml" || { echo "the scene has no rolling key"; exit 1; }
-  printf 'loading:\n  - strain: {de1: 0.0005, de2: 0, steps: 4}\n' >> "$out/$method.yaml"
   OPENBLAS_NUM_THREADS=1 "$gembem" run "$out/$method.yaml" -o "$out/$method" --quiet > /dev/null
   if /usr/bin/python3 "$check" "$out/$method"; then ok "$method: the final state is an equilibrium with rolling moments"
   else bad "$method: the final state is not an equilibrium"; fi
