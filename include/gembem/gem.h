@@ -22,7 +22,8 @@ typedef struct {
     long trials;          /* moves tried: Newton iterations plus rejected moves (damped: retried with more
                              damping; line_search: shorter trial lengths) */
     long factorisations;  /* of the sparse tangent */
-    long sweeps;          /* reference sweeps of unbalanced grains where the line search found no decrease */
+    long sweeps;          /* line_search: steps of its inertial smoother (src/gem/inertial.c), where Newton's
+                             whole step did not lower the merit tenfold */
 } gb_solver_work;
 
 /* One converged (or failed) load step. Stresses and strains: compression positive, 1 = vertical. */
@@ -66,8 +67,8 @@ typedef struct {
     double wall_residual;    /* the walls' distance from their targets then */
     double largest_move;     /* largest grain move of the iteration over its radius */
     double damping;          /* global, newton: damped: the Levenberg-Marquardt damping after it; else 0 */
-    double length;           /* global, newton: line_search: the share of Newton's step taken, 0 when reference
-                                sweeps took over; else 0 */
+    double length;           /* global, newton: line_search: the share of Newton's step taken, 0 when its
+                                smoother took over; else 0 */
 } gb_iteration_report;
 
 typedef void (*gb_iteration_fn)(void *user, const gb_iteration_report *rep);

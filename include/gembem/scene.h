@@ -95,9 +95,9 @@ typedef struct {
 enum { GB_METHOD_REFERENCE = 0, GB_METHOD_GLOBAL = 1 };
 /* The global solver's iteration. DAMPED: Levenberg-Marquardt damping with non-monotone acceptance
  * (src/gem/relax.c). LINE_SEARCH: the exact tangent (sliding contacts and the contacts' rotation
- * included, unsymmetric: UMFPACK), a monotone line search, reference sweeps of the unbalanced
- * grains where it finds no decrease, and an affine predictor for strain steps
- * (src/gem/line_search.c). */
+ * included, unsymmetric: UMFPACK); Newton's whole step where it lowers the merit tenfold, else an
+ * inertial smoother (FIRE on the reference moves, src/gem/inertial.c) and, where that fails,
+ * backtracking; an affine predictor for strain steps (src/gem/line_search.c). */
 enum { GB_NEWTON_DAMPED = 0, GB_NEWTON_LINE_SEARCH = 1 };
 
 /* An elastic host with a cavity that holds the grains (the hybrid method, docs/method.md sections 9-11). */

@@ -33,22 +33,33 @@ gb_status gb_gem_inertial(gb_sim *sim, const gb_wall_control *wc, double target,
     double dt = DT_START, mixing = ALPHA_START;
     int since_uphill = 0;
     gb_status st = GB_OK;
-    for (int step = 0; step < max_steps; step++) {
+    double a2 = sim->accuracy * sim->accuracy;
+    int step = 0;
+    for (; step < max_steps; step++) {
         /* servo walls follow the grains, each step by their own stiffness (K section 2.6) */
         double wall_residual = gb_gem_wall_moves(sim, wc);
-        if (gb_gem_merit(sim, sim->in_system, wall_residual) <= target) break;
-        /* what is left is on the boundary particles, which it does not move */
-        if (gb_gem_largest_grain_force2(sim) <= sim->accuracy * sim->accuracy && wall_residual <= sim->accuracy) break;
-        /* The power of the forces (minus the fixing forces) on the velocities. */
-        double power = 0, vv = 0, aa = 0;
+        /* One pass over the grains (the step's cost is its pass over the contacts, and this): the
+         * merit and the largest force (gb_gem_merit, gb_gem_largest_grain_force2), the second
+         * half of the last move's fixing work (the trapezoid of gb_gem_iterate), the moves, and
+         * the power of the forces (minus the fixing forces) on the velocities. */
+        double merit = wall_residual * wall_residual, work = 0, power = 0, vv = 0, aa = 0;
+        int balanced = 1;
         for (int i = 0; i < n; i++) {
+            const double *F = &sim->F[3 * i];
+            if (sim->in_system[i]) merit += F[0] * F[0], merit += F[1] * F[1], merit += F[2] * F[2];
+            balanced &= gb_gem_force2(sim, i) <= a2;
             gb_gem_grain_move(sim, i, &acc[3 * i]);
             for (int q = 3 * i; q < 3 * i + 3; q++) {
+                work += sim->F[q] * sim->dX[q];
                 acc[q] *= inv_alpha;
                 power -= sim->F[q] * v[q];
                 vv += v[q] * v[q], aa += acc[q] * acc[q];
             }
         }
+        sim->relaxation -= 0.5 * work;
+        if (gb_gem_particle_merit(sim, merit) <= target) break;
+        /* what is left is on the boundary particles, which it does not move */
+        if (balanced && wall_residual <= sim->accuracy) break;
         if (power > 0) { /* downhill: turn the velocity towards the force, and speed up */
             double mix = aa > 0 ? mixing * sqrt(vv / aa) : 0;
             for (int q = 0; q < 3 * n; q++) v[q] = (1 - mixing) * v[q] + mix * acc[q];
@@ -57,16 +68,17 @@ gb_status gb_gem_inertial(gb_sim *sim, const gb_wall_control *wc, double target,
             since_uphill = 0, dt *= F_DEC, mixing = ALPHA_START;
             memset(v, 0, 3 * (size_t)n * sizeof(double));
         }
+        work = 0;
         for (int q = 0; q < 3 * n; q++) { /* semi-implicit Euler */
             v[q] += dt * acc[q];
             sim->dX[q] = dt * v[q];
+            work += sim->F[q] * sim->dX[q];
         }
         sim->work.sweeps++;
-        sim->relaxation -= 0.5 * gb_gem_fixing_work(sim);
-        if ((st = gb_gem_apply_moves(sim, err))) break;
-        gb_gem_forces(sim);
-        sim->relaxation -= 0.5 * gb_gem_fixing_work(sim);
+        sim->relaxation -= 0.5 * work;
+        if ((st = gb_gem_move_and_forces(sim, err))) break;
     }
+    if (step == max_steps) sim->relaxation -= 0.5 * gb_gem_fixing_work(sim);
     memset(sim->dX, 0, 3 * (size_t)n * sizeof(double));
     memset(sim->wall_dx, 0, sizeof sim->wall_dx);
     sim->half_pending = 0;

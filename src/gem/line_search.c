@@ -47,9 +47,7 @@ static gb_status take_move(gb_sim *sim, gb_error *err)
 {
     sim->relaxation -= 0.5 * gb_gem_fixing_work(sim);
     sim->half_pending = 1;
-    gb_status st = gb_gem_apply_moves(sim, err);
-    if (!st) gb_gem_forces(sim);
-    return st;
+    return gb_gem_move_and_forces(sim, err);
 }
 
 /* Tries lengths 1/2^first .. 1/2^last of Newton's step, every trial from the iteration's start;

@@ -32,10 +32,11 @@ void gb_gem_add_contact(gb_sim *sim, const gb_pair *p, double sign)
     int i = p->i, count = sign > 0 ? 1 : -1;
     /* Rolling resistance (docs/method.md section 3.1): the moment mr on i, -mr on j; in the DOF
      * r w its stiffness is kr / r^2, kept at the cap as kt is (K 8). */
-    double ri = sim->g[i].r, mr = sign * p->mr, kr = sign * mat->kr;
-    double *F = &sim->F[3 * i], *S = &sim->S[6 * i];
-    F[0] += fx, F[1] += fy, F[2] += pt - mr / ri;
-    S[0] += s00, S[1] += s01, S[2] += -kt * s, S[3] += s11, S[4] += kt * c, S[5] += kt + kr / (ri * ri);
+    double mr = sign * p->mr, kr = sign * mat->kr;
+    int rolling = mat->kr > 0; /* without, no divisions: they are a good part of a contact's cost */
+    double ri = sim->g[i].r, *F = &sim->F[3 * i], *S = &sim->S[6 * i];
+    F[0] += fx, F[1] += fy, F[2] += rolling ? pt - mr / ri : pt;
+    S[0] += s00, S[1] += s01, S[2] += -kt * s, S[3] += s11, S[4] += kt * c, S[5] += rolling ? kt + kr / (ri * ri) : kt;
     sim->nc[i] += count;
     if (sign > 0) {
         double *one = &sim->one[GB_ONE * i];
@@ -46,8 +47,8 @@ void gb_gem_add_contact(gb_sim *sim, const gb_pair *p, double sign)
         int j = p->j;
         double rj = sim->g[j].r;
         F = &sim->F[3 * j], S = &sim->S[6 * j];
-        F[0] -= fx, F[1] -= fy, F[2] += pt + mr / rj;
-        S[0] += s00, S[1] += s01, S[2] += kt * s, S[3] += s11, S[4] += -kt * c, S[5] += kt + kr / (rj * rj);
+        F[0] -= fx, F[1] -= fy, F[2] += rolling ? pt + mr / rj : pt;
+        S[0] += s00, S[1] += s01, S[2] += kt * s, S[3] += s11, S[4] += -kt * c, S[5] += rolling ? kt + kr / (rj * rj) : kt;
         sim->nc[j] += count;
         if (sign > 0) {
             double *one = &sim->one[GB_ONE * j];
@@ -65,23 +66,28 @@ void gb_gem_add_contact(gb_sim *sim, const gb_pair *p, double sign)
     }
 }
 
-void gb_gem_forces(gb_sim *sim)
+/* The forces before any contact: the body forces (K 5: F = sum T^t P - B), and on boundary
+ * particles the force K u + f0 that their displacement asks of the host. */
+static void reset_forces(gb_sim *sim)
 {
     int n = sim->n;
-    memset(sim->F, 0, (size_t)n * 3 * sizeof(double));
     memset(sim->S, 0, (size_t)n * 6 * sizeof(double));
     memset(sim->nc, 0, (size_t)n * sizeof(int));
     for (int w = 0; w < GB_N_WALLS; w++) sim->wall_force[w] = sim->wall_k[w] = 0;
     if (sim->host) {
-        /* A particle must pass to the host the force K u + f0 that its displacement asks for. */
         memcpy(sim->bp_F, sim->host->force, (size_t)sim->host->m * sizeof(double));
         memset(sim->bp_S, 0, 3 * (size_t)sim->bp.n * sizeof(double));
     }
     for (int i = 0; i < n; i++) {
-        /* (K 5): F = sum T^t P - B */
         sim->F[3 * i] = -sim->body[2 * i];
         sim->F[3 * i + 1] = -sim->body[2 * i + 1];
+        sim->F[3 * i + 2] = 0;
     }
+}
+
+void gb_gem_forces(gb_sim *sim)
+{
+    reset_forces(sim);
     for (int k = 0; k < sim->pairs.n; k++)
         if (sim->pairs.p[k].d > 0) gb_gem_add_contact(sim, &sim->pairs.p[k], 1);
 }
@@ -209,7 +215,9 @@ double gb_gem_wall_moves(gb_sim *sim, const gb_wall_control *wc)
     return residual;
 }
 
-gb_status gb_gem_apply_moves(gb_sim *sim, gb_error *err)
+/* Moves grains, boundary particles (and the host with them) and walls by dX, bp.dx and wall_dx, and
+ * rebuilds the pair list if it may miss a contact now. */
+static gb_status move_bodies(gb_sim *sim, gb_error *err)
 {
     for (int i = 0; i < sim->n; i++) {
         gb_grain *g = &sim->g[i];
@@ -234,27 +242,56 @@ gb_status gb_gem_apply_moves(gb_sim *sim, gb_error *err)
         return gb_fail(err, GB_ENUMERIC, "the box turned inside out (width %g, height %g): the load step is too "
                        "large for these springs", b->right - b->left, b->top - b->bottom);
     double t0 = gb_clock_seconds();
-    if (gb_pairs_stale(&sim->pairs, &sim->world)) {
-        gb_status st = gb_pairs_rebuild(&sim->pairs, &sim->world, err);
-        if (st) return st;
-    }
+    gb_status st = gb_pairs_stale(&sim->pairs, &sim->world) ? gb_pairs_rebuild(&sim->pairs, &sim->world, err) : GB_OK;
     sim->detect_seconds += gb_clock_seconds() - t0;
-    gb_pair *P = sim->pairs.p;
-    double diss = 0, wall_after[GB_N_WALLS] = {0, 0, 0, 0};
-    for (int k = 0; k < sim->pairs.n; k++) {
-        gb_pair *p = &P[k];
-        diss += gb_pair_update(p, &sim->world, sim->dX, &sim->wall_dx[0][0], gb_sim_material(sim, p->j),
-                               gb_sim_tan_phi(sim, p->j));
-        if (p->j < 0 && !GB_IS_PARTICLE(p->j)) wall_after[-1 - p->j] += p->pn;
-    }
-    /* The walls' work in this move: mean normal force times inward displacement (sim->wall_force
-     * holds the forces before the move). */
+    return st;
+}
+
+/* The accounts of a move: the energy its contacts dissipated, and the walls' work, mean normal
+ * force (before: `before`, after: `after`) times inward displacement. */
+static void account_move(gb_sim *sim, double diss, const double before[GB_N_WALLS], const double after[GB_N_WALLS])
+{
     double inward[GB_N_WALLS] = {sim->wall_dx[GB_WALL_LEFT][0], -sim->wall_dx[GB_WALL_RIGHT][0],
                                  sim->wall_dx[GB_WALL_BOTTOM][1], -sim->wall_dx[GB_WALL_TOP][1]};
-    for (int w = 0; w < GB_N_WALLS; w++)
-        sim->work_walls_iter += 0.5 * (sim->wall_force[w] + wall_after[w]) * inward[w];
+    for (int w = 0; w < GB_N_WALLS; w++) sim->work_walls_iter += 0.5 * (before[w] + after[w]) * inward[w];
     sim->dissipation += diss;
     sim->dissipation_step += diss;
+}
+
+static double update_pair(gb_sim *sim, gb_pair *p)
+{
+    return gb_pair_update(p, &sim->world, sim->dX, &sim->wall_dx[0][0], gb_sim_material(sim, p->j),
+                          gb_sim_tan_phi(sim, p->j));
+}
+
+gb_status gb_gem_apply_moves(gb_sim *sim, gb_error *err)
+{
+    gb_status st = move_bodies(sim, err);
+    if (st) return st;
+    double diss = 0, wall_after[GB_N_WALLS] = {0, 0, 0, 0};
+    for (int k = 0; k < sim->pairs.n; k++) {
+        gb_pair *p = &sim->pairs.p[k];
+        diss += update_pair(sim, p);
+        if (p->j < 0 && !GB_IS_PARTICLE(p->j)) wall_after[-1 - p->j] += p->pn;
+    }
+    account_move(sim, diss, sim->wall_force, wall_after);
+    return GB_OK;
+}
+
+gb_status gb_gem_move_and_forces(gb_sim *sim, gb_error *err)
+{
+    double wall_before[GB_N_WALLS];
+    memcpy(wall_before, sim->wall_force, sizeof wall_before);
+    gb_status st = move_bodies(sim, err);
+    if (st) return st;
+    reset_forces(sim);
+    double diss = 0;
+    for (int k = 0; k < sim->pairs.n; k++) {
+        gb_pair *p = &sim->pairs.p[k];
+        diss += update_pair(sim, p);
+        if (p->d > 0) gb_gem_add_contact(sim, p, 1);
+    }
+    account_move(sim, diss, wall_before, sim->wall_force);
     return GB_OK;
 }
 
@@ -278,6 +315,11 @@ double gb_gem_merit(const gb_sim *sim, const unsigned char *in_system, double wa
     for (int i = 0; i < sim->n; i++)
         if (in_system[i])
             for (int k = 3 * i; k < 3 * i + 3; k++) m += sim->F[k] * sim->F[k];
+    return gb_gem_particle_merit(sim, m);
+}
+
+double gb_gem_particle_merit(const gb_sim *sim, double m)
+{
     for (int k = 0; k < 2 * sim->bp.n && !sim->scene->host.rigid; k++) m += sim->bp_F[k] * sim->bp_F[k];
     return m;
 }
@@ -340,8 +382,7 @@ static gb_status global_move(gb_sim *sim, const gb_wall_control *wc, double wall
         if ((st = gb_global_moves(sim->global, sim, wc, sim->lm_mu, err))) return st;
         sim->relaxation -= 0.5 * gb_gem_fixing_work(sim);
         sim->half_pending = 1;
-        if ((st = gb_gem_apply_moves(sim, err))) return st;
-        gb_gem_forces(sim);
+        if ((st = gb_gem_move_and_forces(sim, err))) return st;
         double m1 = gb_gem_merit(sim, sim->in_system, gb_gem_wall_moves(sim, wc));
         if (m1 <= bound || trial == MAX_TRIALS || sim->lm_mu >= MU_MAX) {
             sim->lm_mu = fmax(sim->lm_mu / 4, MU_MIN);

@@ -200,6 +200,10 @@ void gb_gem_add_contact(gb_sim *sim, const gb_pair *p, double sign);
 
 /* Moves grains by dX and walls by wall_dx simultaneously, then updates every contact. */
 gb_status gb_gem_apply_moves(gb_sim *sim, gb_error *err);
+/* gb_gem_apply_moves then gb_gem_forces, bitwise the same, in one pass over the pairs: each contact
+ * is updated and added to its ends at once (the smoother's step, src/gem/inertial.c, is mostly
+ * this pass). */
+gb_status gb_gem_move_and_forces(gb_sim *sim, gb_error *err);
 
 /* Relaxes to equilibrium under the wall control, at most `cap` iterations. A relaxation resumed from
  * a checkpoint within it (sim->cur.relax_iters > 0) goes on from there: its iterations, attempt and
@@ -237,6 +241,8 @@ double gb_gem_wall_moves(gb_sim *sim, const gb_wall_control *wc);
 /* The global solver's merit: squared fixing forces of the grains in the system, of the boundary
  * particles, and the walls' residual squared. */
 double gb_gem_merit(const gb_sim *sim, const unsigned char *in_system, double wall_residual);
+/* m plus the boundary particles' part of the merit. */
+double gb_gem_particle_merit(const gb_sim *sim, double m);
 
 /* The line-search iteration's smoother (src/gem/inertial.c): every grain moves, servo walls follow,
  * until the merit is at most `target`, after max_steps, or when every grain and wall is balanced.

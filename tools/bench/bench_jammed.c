@@ -1,5 +1,5 @@
 /* Benchmark of load steps on jammed random packings (not a test).
- *   bench_jammed SCENE.yaml STEPS reference|cholmod|umfpack [PREP_CAP (5000)] [ACCURACY]
+ *   bench_jammed SCENE.yaml STEPS reference|cholmod|umfpack|line_search [PREP_CAP (5000)] [ACCURACY]
  * ACCURACY: a in force units, or "target" for issue 4's 1e-6 kn r_mean (default: the scene's).
  * The scene's packing is jammed (tools/bench_gem.sh makes it with gb_jam): the grains are first
  * relaxed with the walls fixed by the global solver (CHOLMOD; no iteration if gb_jam's packing is
@@ -21,7 +21,7 @@
 
 int main(int argc, char **argv)
 {
-    if (argc < 4) return fprintf(stderr, "usage: %s SCENE.yaml STEPS reference|cholmod|umfpack\n", argv[0]), 2;
+    if (argc < 4) return fprintf(stderr, "usage: %s SCENE.yaml STEPS reference|cholmod|umfpack|line_search\n", argv[0]), 2;
     int steps = atoi(argv[2]);
     const char *method = argv[3];
     long prep_cap = argc > 4 ? atol(argv[4]) : 5000;
@@ -32,6 +32,11 @@ int main(int argc, char **argv)
     bench_set_accuracy(&sc, argc > 5 ? argv[5] : NULL);
     sc.solver.method = GB_METHOD_GLOBAL;
     sc.solver.linear = GB_LINEAR_CHOLMOD;
+    if (!strcmp(method, "line_search")) {
+        /* the line search, preparation included, on the exact (unsymmetric) tangent: UMFPACK */
+        sc.solver.linear = GB_LINEAR_UMFPACK;
+        sc.solver.newton = GB_NEWTON_LINE_SEARCH;
+    }
     if (gb_sim_create(&sc, &sim, &err)) return fprintf(stderr, "%s\n", err.msg), 1;
     gb_wall_control wc = {GB_WALLS_FIXED, 0, 0, 0};
     long prep = 0, it = 0;
@@ -60,6 +65,7 @@ int main(int argc, char **argv)
     }
     /* The load steps' share of the solver's time accounts (the preparation's subtracted). */
     double detect0 = sim->detect_seconds;
+    long sweeps0 = sim->work.sweeps;
     gb_global_stats g0 = {0};
     if (sim->global) g0 = *gb_global_statistics(sim->global);
     double contact_its = 0, t_steps = 0;
@@ -90,10 +96,10 @@ int main(int argc, char **argv)
                so = g->solve - g0.solve;
         fprintf(stderr, "  %s %d, load steps: contact detection %.2f s, assembly %.2f s, %ld analyses %.2f s, "
                 "%ld factorisations %.2f s, solves %.2f s, the rest (forces, contact update, moves) %.2f s; %ld moves, "
-                "%ld corrections, %ld systems by CG (%ld steps), %ld regularised\n", method, sim->n, detect, as,
+                "%ld corrections, %ld systems by CG (%ld steps), %ld regularised, %ld smoother steps\n", method, sim->n, detect, as,
                 g->analyses - g0.analyses, an, g->factorisations - g0.factorisations, fa, so,
                 t_steps - detect - as - an - fa - so, g->moves - g0.moves, g->corrections - g0.corrections,
-                g->pcg_solves - g0.pcg_solves, g->pcg_steps - g0.pcg_steps, g->regularised - g0.regularised);
+                g->pcg_solves - g0.pcg_solves, g->pcg_steps - g0.pcg_steps, g->regularised - g0.regularised, sim->work.sweeps - sweeps0);
     } else {
         fprintf(stderr, "  %s %d, load steps: contact detection %.2f s, the rest (forces, moves, contact update) %.2f s\n",
                 method, sim->n, detect, t_steps - detect);
