@@ -2,7 +2,7 @@
 """gembem.table's one reader on hand-written CSV text: parse_csv (text a tool printed) and
 read_csv (the same text in a file) give the same columns, each of the type its values need, with
 the numbers written in the text; comments and blank lines are skipped; a short row is an error
-naming its line."""
+naming its line. And gembem.figures.iteration_forces on a hand-written run directory."""
 import os
 import unittest
 
@@ -47,6 +47,21 @@ class Table(RunDirTest):
             gembem.parse_csv("# nothing\n\n", "bench output")
         with self.assertRaisesRegex(KeyError, "no column 'err'"):
             gembem.parse_csv(TEXT)["err"]
+
+
+class IterationForces(RunDirTest):
+    def test_history(self):
+        files = {"run_info.yaml": "status: completed\n",
+                 "history.csv": "step,attempt,iteration,max_fixing_force\n1,1,1,50\n2,1,1,8\n2,1,2,0.5\n2,2,1,4\n",
+                 "steps.csv": "step,max_fixing_force\n0,0\n1,0.25\n2,0.03125\n"}
+        for name, text in files.items():
+            with open(os.path.join(self.tmp, name), "w") as f:
+                f.write(text)
+        from gembem.figures import iteration_forces
+        self.assertEqual(iteration_forces(gembem.Run(self.tmp), 2).tolist(), [8.0, 0.5, 4.0, 0.03125])
+        self.assertEqual(iteration_forces(self.tmp, 1).tolist(), [50.0, 0.25])
+        with self.assertRaisesRegex(ValueError, "no iteration of step 0"):
+            iteration_forces(self.tmp, 0)
 
 
 if __name__ == "__main__":
