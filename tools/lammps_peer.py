@@ -42,7 +42,6 @@ length falls by 1 - cos dtheta; gembem's pt is a scalar turning with the contact
 uses the normal force with its damping term; its damping forces vanish with the velocities.
 """
 import argparse
-import csv
 import math
 import os
 import subprocess
@@ -50,12 +49,15 @@ import sys
 
 import yaml
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
+import gembem  # noqa: E402
+
 KN, KT, PHI_DEG, RHO = 1.0e8, 7.0e7, 25.0, 2.65
 
 
 def read_packing(path):
-    with open(path) as f:
-        return [(float(r["x"]), float(r["y"]), float(r["r"])) for r in csv.DictReader(f)]
+    g = gembem.read_csv(path)
+    return list(zip(*(g[k].astype(float).tolist() for k in ("x", "y", "r"))))
 
 
 def read_box(path):
