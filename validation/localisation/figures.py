@@ -14,7 +14,6 @@
 Usage: validation/localisation/figures.py [RUNS_DIR]   (from anywhere; PNGs next to this file)
        validation/localisation/figures.py --episodes NAME ...   the band episodes of extended cases
 """
-import csv
 import math
 import os
 import sys
@@ -31,6 +30,8 @@ import matplotlib.tri as mtri  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.join(HERE, "..", "..", "python"))
+import gembem  # noqa: E402
 import study  # noqa: E402
 
 RUNS = (sys.argv[1] if len(sys.argv) > 1 and not sys.argv[1].startswith("--")
@@ -40,17 +41,8 @@ WTHRESHOLD = 0.4  # the same for the windowed index
 
 
 def read_csv(path):
-    with open(path) as f:
-        rows = [r for r in csv.reader(line for line in f if not line.startswith("#"))]
-    head, body = rows[0], rows[1:]
-    out = {}
-    for k, name in enumerate(head):
-        col = [r[k] for r in body]
-        try:
-            out[name] = np.array([float(v) for v in col])
-        except ValueError:
-            out[name] = np.array(col)
-    return out
+    """gembem.read_csv with its integer columns as float64, as this script's arithmetic expects."""
+    return {k: v.astype(float) if v.dtype.kind == "i" else v for k, v in gembem.read_csv(path).items()}
 
 
 def status_line(case_dir, name):

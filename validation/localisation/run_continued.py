@@ -34,6 +34,8 @@ import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.join(HERE, "..", "..", "python"))
+import gembem  # noqa: E402
 import study  # noqa: E402
 
 HALVED = 5         # steps of the case's size gone over by a bridge after a stall
@@ -42,10 +44,9 @@ MAX_SEGMENTS = 40
 
 def top_travel(run, shear):
     """The top's travel (|uy| for biaxial, |ux| for shear) at the last row of host_steps.csv."""
-    with open(os.path.join(run, "host_steps.csv")) as f:
-        rows = [r for r in csv.DictReader(f) if r["group"] == "top"]
-    r = rows[-1]
-    return int(r["step"]), abs(float(r["ux" if shear else "uy"]))
+    h = gembem.read_csv(os.path.join(run, "host_steps.csv"))
+    top = h.select(h["group"] == "top")
+    return int(top["step"][-1]), abs(float(top["ux" if shear else "uy"][-1]))
 
 
 def continued_scene(base, state, parts, shear):
