@@ -1,8 +1,9 @@
 #!/usr/bin/python3
-"""gembem.table's one reader on hand-written CSV text: parse_csv (text a tool printed) and
+"""Package functions on hand-written inputs. gembem.table's one reader on CSV text: parse_csv (text a tool printed) and
 read_csv (the same text in a file) give the same columns, each of the type its values need, with
 the numbers written in the text; comments and blank lines are skipped; a short row is an error
-naming its line. And gembem.figures.iteration_forces on a hand-written run directory."""
+naming its line. gembem.figures.iteration_forces on a hand-written run directory. A scene
+written with a comment: the comment's lines first, the sections read back unchanged."""
 import os
 import unittest
 
@@ -62,6 +63,22 @@ class IterationForces(RunDirTest):
         self.assertEqual(iteration_forces(self.tmp, 1).tolist(), [50.0, 0.25])
         with self.assertRaisesRegex(ValueError, "no iteration of step 0"):
             iteration_forces(self.tmp, 0)
+
+
+class SceneComment(RunDirTest):
+    def test_comment(self):
+        from gembem.yamlfile import read_yaml
+        s = gembem.Scene(units={"length": "cm", "force": "kgf"}, solver={"accuracy": 0.475},
+                         extra={"pack": {"count": 250, "solid_fraction": 0.876543}})
+        path = s.write(os.path.join(self.tmp, "pack.yaml"), comment="case phi0.82\nline two")
+        with open(path) as f:
+            head = [f.readline() for _ in range(3)]
+        self.assertEqual(head, ["# case phi0.82\n", "# line two\n", "# a gembem scene written by the gembem Python package\n"])
+        self.assertEqual(read_yaml(path), {"gembem": 1, "units": {"length": "cm", "force": "kgf"},
+                                           "solver": {"accuracy": 0.475},
+                                           "pack": {"count": 250, "solid_fraction": 0.876543}})
+        self.assertEqual(s.to_yaml(), s.to_yaml(comment=None))
+        self.assertTrue(s.to_yaml().startswith("# a gembem scene written by the gembem Python package\ngembem: 1\n"))
 
 
 if __name__ == "__main__":
