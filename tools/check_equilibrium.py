@@ -84,8 +84,8 @@ def last_accuracy(run_dir):
     """The accuracy a that the last step was solved to: steps.csv's `accuracy` (a relative
     accuracy resolves to a force per step)."""
     try:
-        return float(read_table(os.path.join(run_dir, "steps.csv"))["accuracy"][-1])
-    except (KeyError, IndexError) as e:
+        return float(read_csv(os.path.join(run_dir, "steps.csv"))["accuracy"][-1])
+    except (OSError, KeyError, IndexError, ValueError) as e:
         fail_input(f"{run_dir}/steps.csv: no accuracy of the last step ({e})")
 
 
