@@ -14,6 +14,9 @@ import subprocess
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(ROOT, "python"))
+import gembem  # noqa: E402
+
 BUILD = os.path.join(ROOT, sys.argv[1] if len(sys.argv) > 1 else "build")
 SIZES = [int(a) for a in sys.argv[2:]] or [27, 1000, 10000]
 OUT = os.path.join(ROOT, "runs", "bench_hybrid")
@@ -65,27 +68,17 @@ Plane Surface(1) = {{1, 2}};
 Physical Curve("outer") = {{1, 2, 3, 4}};
 Physical Curve("cavity") = {{5, 6, 7, 8}};
 """)
-    grains = place(n, usable - 0.02, random.Random(n))
-    with open(os.path.join(d, "grains.csv"), "w") as f:
-        f.write("x,y,r\n" + "".join(f"{x:.6f},{y:.6f},{r}\n" for x, y, r in grains))
-    with open(os.path.join(d, "scene.yaml"), "w") as f:
-        f.write(f"""gembem: 1
-units: {{length: cm, force: kgf}}
-materials:
-  grain_grain: {{kn: 1000, kt: 700, friction_deg: 25}}
-  grain_wall: {{kn: 1000, kt: 700, friction_deg: 0}}
-host:
-  mesh: host.geo
-  elements: {{outer: 80, cavity: {ncav}}}
-  material: {{shear_modulus: 95000, poisson: 0.1, plane: strain}}
-  boundary: {{outer: fixed}}
-  cavity: cavity
-grains: {{file: grains.csv}}
-solver: {{method: global, linear: umfpack, accuracy: 0.001, max_iterations: 5000}}
-loading:
-  - relax: {{steps: 1}}
-""")
-    return os.path.join(d, "scene.yaml")
+    grains = [(round(x, 6), round(y, 6), r) for x, y, r in place(n, usable - 0.02, random.Random(n))]
+    return gembem.Scene(
+        units={"length": "cm", "force": "kgf"},
+        materials={"grain_grain": {"kn": 1000, "kt": 700, "friction_deg": 25},
+                   "grain_wall": {"kn": 1000, "kt": 700, "friction_deg": 0}},
+        host={"mesh": "host.geo", "elements": {"outer": 80, "cavity": ncav},
+              "material": {"shear_modulus": 95000, "poisson": 0.1, "plane": "strain"},
+              "boundary": {"outer": "fixed"}, "cavity": "cavity"},
+        grains=grains, solver={"method": "global", "linear": "umfpack", "accuracy": 0.001, "max_iterations": 5000},
+        loading=[{"relax": {"steps": 1}}]).write(os.path.join(d, "scene.yaml"), grains_file="grains.csv",
+                                                comment=f"bench_hybrid.py: {n} grains in the cavity of host.geo")
 
 
 def main():

@@ -27,7 +27,6 @@ and exits 0 when all hold, 1 when one fails, 2 on unusable input.
 Host scenes (boundary particles) are refused: their forces need the host's stiffness.
 """
 import argparse
-import csv
 import math
 import os
 import sys
@@ -35,6 +34,9 @@ import sys
 import numpy as np
 import yaml
 from scipy.spatial import cKDTree
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
+from gembem import read_csv  # noqa: E402  (the package's one CSV reader, not gembem's C code)
 
 WALLS = ("left", "right", "bottom", "top")
 
@@ -71,13 +73,18 @@ def body_force_per_area(scene):
     return float(b["density"]) * np.array([float(v) for v in b["gravity"]])
 
 
+def read_table(path):
+    try:
+        return read_csv(path)
+    except (OSError, ValueError) as e:
+        fail_input(str(e))
+
+
 def last_accuracy(run_dir):
     """The accuracy a that the last step was solved to: steps.csv's `accuracy` (a relative
     accuracy resolves to a force per step)."""
     try:
-        with open(os.path.join(run_dir, "steps.csv")) as f:
-            rows = list(csv.DictReader(f))
-        return float(rows[-1]["accuracy"])
+        return float(read_csv(os.path.join(run_dir, "steps.csv"))["accuracy"][-1])
     except (OSError, KeyError, IndexError, ValueError) as e:
         fail_input(f"{run_dir}/steps.csv: no accuracy of the last step ({e})")
 
@@ -101,10 +108,10 @@ def main():
     box = state.get("box")
     files = state["grains"]
     base = os.path.dirname(state_path)
-    with open(os.path.join(base, files["file"])) as f:
-        grains = np.array([[float(r["x"]), float(r["y"]), float(r["r"])] for r in csv.DictReader(f)])
-    with open(os.path.join(base, files["contacts"])) as f:
-        stored = list(csv.DictReader(f))
+    g = read_table(os.path.join(base, files["file"]))
+    grains = np.column_stack([g["x"], g["y"], g["r"]]).astype(float).reshape(-1, 3)
+    stored = read_table(os.path.join(base, files["contacts"]))
+    rolling = "mr" in stored
     n = len(grains)
     x, r = grains[:, :2], grains[:, 2]
 
@@ -135,8 +142,8 @@ def main():
     worst_coulomb = worst_pn = worst_rolling = 0.0
     problems = []
     seen = set()
-    for row in stored:
-        i, side = int(row["i"]), row["j"]
+    for i, side, pn_stored, pt, mr in zip(stored["i"].tolist(), stored["j"].astype(str).tolist(), stored["pn"].tolist(),
+                                          stored["pt"].tolist(), stored["mr"].tolist() if rolling else [0.0] * stored.nrows):
         key = (i, side) if side in WALLS else (i, int(side))
         if key in seen:
             problems.append(f"contact {key} stored twice")
@@ -146,13 +153,12 @@ def main():
             continue
         d, nrm = found[key]
         mat = gw if side in WALLS else gg
-        pn, pt = mat["kn"] * d, float(row["pt"])
-        worst_pn = max(worst_pn, (abs(pn - float(row["pn"])) - mat["kn"] * d_round) / pn)
+        pn = mat["kn"] * d
+        worst_pn = max(worst_pn, (abs(pn - pn_stored) - mat["kn"] * d_round) / pn)
         cap = pn * mat["tan_phi"] + mat["cohesion"]
         worst_coulomb = max(worst_coulomb, (abs(pt) - cap - mat["kn"] * d_round * mat["tan_phi"]) / max(cap, 1e-300))
         t = np.array([-nrm[1], nrm[0]])
         f = pn * nrm + pt * t
-        mr = float(row.get("mr") or 0)
         rstar = r[i] if side in WALLS else r[i] * r[int(side)] / (r[i] + r[int(side)])
         mcap = mat["eta"] * rstar * pn
         worst_rolling = max(worst_rolling, (abs(mr) - mcap - mat["eta"] * rstar * mat["kn"] * d_round) / max(mcap, 1e-300))
@@ -170,10 +176,10 @@ def main():
                 F[key[1], :2] -= mat["kn"] * d * nrm
     norms = np.sqrt((F * F).sum(axis=1))
     k = int(np.argmax(norms)) if n else 0
-    print(f"{a.run_dir}: {n} grains, {len(stored)} stored contacts, {len(found)} overlaps found; "
+    print(f"{a.run_dir}: {n} grains, {stored.nrows} stored contacts, {len(found)} overlaps found; "
           f"largest fixing force {norms[k]:.6g} dyn (grain {k}, accuracy {accuracy:g}); "
           f"Coulomb excess {max(worst_coulomb, 0):.3g} of the cap; pn against kn d {max(worst_pn, 0):.3g} (relative)"
-          + (f"; rolling excess {max(worst_rolling, 0):.3g} of the limit" if stored and "mr" in stored[0] else ""))
+          + (f"; rolling excess {max(worst_rolling, 0):.3g} of the limit" if stored.nrows and rolling else ""))
     if norms[k] > accuracy:
         problems.append(f"grain {k}: fixing force {norms[k]:.6g} > accuracy {accuracy:g}")
     if worst_coulomb > a.slack:

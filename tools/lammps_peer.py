@@ -42,7 +42,6 @@ length falls by 1 - cos dtheta; gembem's pt is a scalar turning with the contact
 uses the normal force with its damping term; its damping forces vanish with the velocities.
 """
 import argparse
-import csv
 import math
 import os
 import subprocess
@@ -50,12 +49,16 @@ import sys
 
 import yaml
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
+import gembem  # noqa: E402
+from gembem.yamlfile import dump_yaml  # noqa: E402
+
 KN, KT, PHI_DEG, RHO = 1.0e8, 7.0e7, 25.0, 2.65
 
 
 def read_packing(path):
-    with open(path) as f:
-        return [(float(r["x"]), float(r["y"]), float(r["r"])) for r in csv.DictReader(f)]
+    g = gembem.read_csv(path)
+    return list(zip(*(g[k].astype(float).tolist() for k in ("x", "y", "r"))))
 
 
 def read_box(path):
@@ -192,11 +195,7 @@ def write_state(a):
         sys.exit("lammps_peer: atoms lost or renumbered in grains.dump")
     d = os.path.join(a.out, "state")
     os.makedirs(d, exist_ok=True)
-    with open(os.path.join(d, "state_grains.csv"), "w") as f:
-        f.write("x,y,r\n")
-        for k in range(1, n + 1):
-            x, y, r = pos[k]
-            f.write(f"{x:.17g},{y:.17g},{r:.17g}\n")
+    gembem.write_grains_csv(os.path.join(d, "state_grains.csv"), [pos[k] for k in range(1, n + 1)])
     seen = set()
     with open(os.path.join(d, "state_contacts.csv"), "w") as f:
         f.write("i,j,pn,pt\n")
@@ -215,21 +214,17 @@ def write_state(a):
             pn = fnorm
             pt = -(fs1 * -ny + fs2 * nx)
             f.write(f"{a1 - 1},{a2 - 1},{pn:.17g},{pt:.17g}\n")
-    box = p["box"]
+    box = {k: float(p["box"][k]) for k in ("left", "right", "bottom", "top")}
     with open(os.path.join(d, "state.yaml"), "w") as f:
-        f.write("# LAMMPS's final state, written by tools/lammps_peer.py state\ngembem_state: 1\n")
-        f.write("box: {left: %.17g, right: %.17g, bottom: %.17g, top: %.17g}\n"
-                % (box["left"], box["right"], box["bottom"], box["top"]))
-        f.write("grains: {file: state_grains.csv, contacts: state_contacts.csv}\n")
-    with open(os.path.join(d, "scene.yaml"), "w") as f:
-        f.write(f"""# The materials of LAMMPS's run, for tools/check_equilibrium.py
-gembem: 1
-units: {{length: cm, force: dyn}}
-materials:
-  grain_grain: {{kn: {p['kn']:.17g}, kt: {p['kt']:.17g}, friction_deg: {p['friction_deg']:g}}}
-  grain_wall:  {{kn: {p['kn']:.17g}, kt: {p['kt']:.17g}, friction_deg: 0}}
-solver: {{method: global, accuracy: {p['accuracy']:.17g}}}
-""")
+        f.write("# LAMMPS's final state, written by tools/lammps_peer.py state\n")
+        f.write(dump_yaml({"gembem_state": 1, "box": box,
+                           "grains": {"file": "state_grains.csv", "contacts": "state_contacts.csv"}}))
+    kn, kt = float(p["kn"]), float(p["kt"])
+    gembem.Scene(units={"length": "cm", "force": "dyn"},
+                 materials={"grain_grain": {"kn": kn, "kt": kt, "friction_deg": float(f"{p['friction_deg']:g}")},
+                            "grain_wall": {"kn": kn, "kt": kt, "friction_deg": 0}},
+                 solver={"method": "global", "accuracy": float(p["accuracy"])}).write(
+        os.path.join(d, "scene.yaml"), comment="The materials of LAMMPS's run, for tools/check_equilibrium.py")
     print(d)
 
 

@@ -5,11 +5,11 @@
 
 Plots, for load step STEP of each run, the largest fixing force at the start of every iteration
 (log scale) against the iteration, all attempts of the step one after the other, then the force
-at which it converged (steps.csv), and the accuracy as a line. Prints per run the iterations and the ratio of successive forces over the last five
+at which it converged (steps.csv), and the accuracy as a line (--accuracy, else the one the step was solved to):
+gembem.figures.convergence. Prints per run the iterations and the ratio of successive forces over the last five
 iterations (below 1 and falling: a superlinear tail).
 """
 import argparse
-import csv
 import os
 import sys
 
@@ -17,6 +17,10 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
+import gembem  # noqa: E402
+from gembem.figures import convergence, iteration_forces  # noqa: E402
 
 
 def main():
@@ -26,30 +30,19 @@ def main():
     ap.add_argument("runs", nargs="+", help="LABEL=RUN_DIR")
     ap.add_argument("--accuracy", type=float, default=None)
     a = ap.parse_args()
-    fig, ax = plt.subplots(figsize=(6, 4))
-    for spec in a.runs:
-        label, _, run = spec.partition("=")
-        path = os.path.join(run, "history.csv")
-        try:
-            with open(path) as f:
-                rows = [r for r in csv.DictReader(f) if int(r["step"]) == a.step]
-        except OSError as e:
-            sys.exit(f"plot_history: {e}")
-        if not rows:
-            sys.exit(f"plot_history: {path} has no row for step {a.step}")
-        force = [float(r["max_fixing_force"]) for r in rows]
-        with open(os.path.join(run, "steps.csv")) as f:  # the converged step's force: the last point
-            done = [float(r["max_fixing_force"]) for r in csv.DictReader(f) if int(r["step"]) == a.step]
-        force += done
-        ax.semilogy(range(1, len(force) + 1), force, marker="o", ms=3, label=f"{label} ({len(rows)} iterations)")
+    labels, runs = zip(*(spec.partition("=")[::2] for spec in a.runs))
+    try:
+        runs = [gembem.Run(r) for r in runs]
+        fig, ax = plt.subplots(figsize=(6, 4))
+        convergence(runs, a.step, labels=labels, accuracy=a.accuracy, ax=ax)   # gembem.figures' drawing
+    except (OSError, ValueError) as e:
+        sys.exit(f"plot_history: {e}")
+    for label, run in zip(labels, runs):
+        force = iteration_forces(run, a.step)
         tail = [force[k + 1] / force[k] for k in range(max(0, len(force) - 6), len(force) - 1)]
-        print(f"{label}: {len(rows)} iterations; last ratios " + " ".join(f"{t:.3g}" for t in tail))
-    if a.accuracy:
-        ax.axhline(a.accuracy, color="k", lw=0.8, ls="--", label=f"accuracy {a.accuracy:g}")
-    ax.set_xlabel("iteration of the load step")
+        print(f"{label}: {len(force) - 1} iterations; last ratios " + " ".join(f"{t:.3g}" for t in tail))
     ax.set_ylabel("largest fixing force at its start [dyn]")
     ax.set_title(f"load step {a.step}")
-    ax.legend()
     fig.tight_layout()
     fig.savefig(a.out, dpi=120)
 

@@ -24,7 +24,6 @@ and list it in PARTS with that heading; run_scene() runs a scene and reports its
 iterations.
 """
 import argparse
-import csv
 import datetime
 import math
 import os
@@ -41,62 +40,69 @@ import matplotlib.ticker
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "validation", "three_discs"))
+sys.path.insert(0, os.path.join(ROOT, "validation", "cavity_packing"))
+sys.path.insert(0, os.path.join(ROOT, "python"))
+import gembem  # noqa: E402
+import numpy as np  # noqa: E402
+from cavity import cavity_scene  # noqa: E402
+from gembem.yamlfile import Loader  # noqa: E402
 from table2 import exact_ratio  # noqa: E402
+import yaml  # noqa: E402
 
 BUILD = os.path.join(ROOT, "build")  # set by main()
 RUNS = os.path.join(ROOT, "runs", "speed_vs_error")
-BASE = open(os.path.join(ROOT, "validation", "three_discs", "case1.yaml")).read()
+BASE = gembem.Scene.load(os.path.join(ROOT, "validation", "three_discs", "case1.yaml"))
 MD = os.path.join(ROOT, "validation", "SPEED_VS_ERROR.md")
-SOLVERS = {"reference": "method: reference", "global CHOLMOD": "method: global\n  linear: cholmod",
-           "global UMFPACK": "method: global\n  linear: umfpack"}
+SOLVERS = {"reference": {"method": "reference"}, "global CHOLMOD": {"method": "global", "linear": "cholmod"},
+           "global UMFPACK": {"method": "global", "linear": "umfpack"}}
 
 
-def run_scene(name, text, repeat=3, fast=0.1, fast_repeat=7, timeout=None):
-    """Writes `text` to runs/speed_vs_error/NAME/scene.yaml and runs it `repeat` times (`fast_repeat`
+def run_scene(name, scene, repeat=3, fast=0.1, fast_repeat=7, timeout=None):
+    """Writes `scene` (a gembem.Scene) to runs/speed_vs_error/NAME/scene.yaml and runs it `repeat` times (`fast_repeat`
     times if the first run's solver took less than `fast` seconds): the machine is shared, so the
-    fastest run counts. Returns (run directory, seconds, iterations, steps.csv rows); with `timeout`
+    fastest run counts. Returns (run directory, seconds, iterations, steps.csv's Table); with `timeout`
     (wall seconds per run) a run that takes longer raises subprocess.TimeoutExpired."""
     d = os.path.join(RUNS, name)
-    os.makedirs(d, exist_ok=True)
-    with open(os.path.join(d, "scene.yaml"), "w") as f:
-        f.write(text)
+    scene.write(os.path.join(d, "scene.yaml"))
     best, n = None, 0
     while n < (repeat if best is None or best >= fast else fast_repeat):
         subprocess.run([os.path.join(BUILD, "gembem"), "run", os.path.join(d, "scene.yaml"), "-o",
                         os.path.join(d, "run"), "--overwrite", "--quiet"], check=True, timeout=timeout)
-        rows = list(csv.DictReader(open(os.path.join(d, "run", "steps.csv"))))
-        secs = sum(float(r["seconds"]) for r in rows)
+        rows = gembem.Run(os.path.join(d, "run")).steps
+        secs = float(np.sum(rows["seconds"]))
         best = secs if best is None else min(best, secs)
         n += 1
-    return os.path.join(d, "run"), best, sum(int(r["iterations"]) for r in rows), rows
+    return os.path.join(d, "run"), best, int(np.sum(rows["iterations"])), rows
 
 
 def run_scenes(jobs, repeat=7):
-    """Runs every scene of jobs ({name: text}) `repeat` times, round-robin, so that a burst of load on
+    """Runs every scene of jobs ({name: gembem.Scene}) `repeat` times, round-robin, so that a burst of load on
     the shared machine does not fall on all the runs of one setting. Returns {name: (run directory,
     the fastest run's seconds, iterations, steps.csv rows)}; the runs are deterministic."""
     best = {}
     for _ in range(repeat):
-        for name, text in jobs.items():
-            d, secs, iters, rows = run_scene(name, text, repeat=1, fast=0.0)
+        for name, scene in jobs.items():
+            d, secs, iters, rows = run_scene(name, scene, repeat=1, fast=0.0)
             if name not in best or secs < best[name][1]:
                 best[name] = (d, secs, iters, rows)
     return best
 
 
 def run(kn, a, alpha, solver, repeat=3):
-    text = BASE.replace("kn: 1.0e8, kt: 7.0e7", f"kn: {kn:.1e}, kt: {0.7 * kn:.1e}")
-    text = text.replace("accuracy: 100 ", f"accuracy: {a} ").replace("alpha: 0.75", f"alpha: {alpha}")
-    text = text.replace("solver:\n", "solver:\n  " + SOLVERS[solver] + "\n")
+    """Case 1 of the three discs with kn (kt = 0.7 kn), the accuracy a, alpha and the solver."""
+    scene = BASE
+    for m in ("grain_grain", "grain_wall"):
+        scene = scene.with_value(f"materials.{m}.kn", kn).with_value(f"materials.{m}.kt", 7 * kn / 10)
+    scene = scene.with_value("solver.accuracy", a).with_value("solver.alpha", alpha)
+    for key, value in SOLVERS[solver].items():
+        scene = scene.with_value(f"solver.{key}", value)
     name = f"kn{kn:.0e}_a{a}_alpha{alpha}_{solver.replace(' ', '_')}"
-    _, best, iters, rows = run_scene(name, text, repeat, fast=0.0)
+    _, best, iters, rows = run_scene(name, scene, repeat, fast=0.0)
+    shear = rows.select(rows["stage"] == 2)
     err = 0.0
-    for r in rows:
-        if r["stage"] == "2":
-            g = float(r["e1_minus_e2"])
-            for k in range(1, 6):
-                if abs(g - 0.01 * k) < 1e-9:
-                    err = max(err, abs(float(r["stress_ratio"]) - exact_ratio(0.01 * k)))
+    for k in range(1, 6):
+        at = np.abs(shear["e1_minus_e2"] - 0.01 * k) < 1e-9
+        err = max([err] + [abs(v - exact_ratio(0.01 * k)) for v in shear["stress_ratio"][at]])
     return err, best, iters
 
 
@@ -105,12 +111,12 @@ def bem_section():
     env = dict(os.environ, OPENBLAS_NUM_THREADS="2")
     text = subprocess.run([os.path.join(BUILD, "speed_error_bem")], cwd=ROOT, env=env, check=True,
                           capture_output=True, text=True).stdout
-    rows = list(csv.DictReader(text.splitlines()))
+    rows = gembem.parse_csv(text, "speed_error_bem's output")
     fig, ax = plt.subplots(figsize=(7, 5))
     for case, mark, label in (("lame", "o-", "Lame annulus, u_r on the cavity"),
                               ("kirsch", "s-", "Kirsch, hoop stress at r = 1.5 a")):
-        pts = [(float(r["seconds"]), float(r["error"])) for r in rows if r["case"] == case]
-        ax.loglog([p[0] for p in pts], [p[1] for p in pts], mark, label=label)
+        k = rows["case"] == case
+        ax.loglog(rows["seconds"][k], rows["error"][k], mark, label=label)
     ax.set_xlabel("seconds (mesh, assembly, dense LU solve; 2 OpenBLAS threads)")
     ax.set_ylabel("relative error")
     ax.set_title("Boundary elements: error against cost, 16 to 1024 elements per circle")
@@ -124,8 +130,8 @@ def bem_section():
            "circle; seconds for meshing (gmsh), assembly and the dense solve, the fastest of 3 runs.", "",
            "![error against seconds](speed_vs_error_bem.png)", "",
            "| case | N | seconds | error |", "|---|---|---|---|"]
-    for r in rows:
-        out.append(f"| {r['case']} | {r['N']} | {float(r['seconds']):.4f} | {float(r['error']):.2e} |")
+    for case, n, secs, err in zip(rows["case"], rows["N"], rows["seconds"], rows["error"]):
+        out.append(f"| {case} | {n} | {secs:.4f} | {err:.2e} |")
     out += ["", "What to pick: constant elements converge at first order on the boundary (the error halves",
             "when N doubles, while the cost grows like N^2 to N^3): for 1e-3 on boundary displacements",
             "take about 400 elements per circle (0.1 s). Interior stresses half a radius away from the",
@@ -192,44 +198,27 @@ CAVITY_REPEAT = 7  # runs of each setting; the fastest counts
 FLOOR = 1e-12  # zero errors are drawn here on the log axes
 
 
-def cavity_scene(case, a, linear="umfpack", method="global"):
-    """validation/cavity_packing/scene.yaml with accuracy a and the linear solver; 'confined' has every
-    radius x 1.15 as validation/cavity_packing/regenerate.sh makes it."""
-    text = open(CAVITY).read().replace("../../meshes/", os.path.join(ROOT, "meshes") + "/")
-    if case == "confined":
-        text = re.sub(r"\[(-?[0-9.]+), (-?[0-9.]+), (0\.[35])\]",
-                      lambda m: f"[{m.group(1)}, {m.group(2)}, {float(m.group(3)) * 1.15:.4f}]", text)
-        text = text.replace("\ngrains:\n", "\ngrains:\n  max_overlap: 0.7\n", 1)  # G and H: 0.61
-    for old, new in (("linear: umfpack ", f"linear: {linear} "), ("accuracy: 0.001 ", f"accuracy: {a:g} "),
-                     ("method: global", f"method: {method}")):
-        if old not in text:
-            sys.exit(f"{CAVITY}: '{old}' not found: update cavity_scene()")
-        text = text.replace(old, new)
-    return text
-
-
 def cavity_result(d):
     """Grain positions, the grains' force on each cavity element, the largest overlap, the contacts
     left, the largest fixing force of a finished run, and the grain with the largest force left
     (summed from state_contacts.csv: grain i gets -(pn n + pt t), j the opposite, t = (-ny, nx)) with
     its number of contacts."""
-    grains = [(float(g["x"]), float(g["y"])) for g in csv.DictReader(open(os.path.join(d, "state_grains.csv")))]
-    forces = [(float(p["grain_fx"]), float(p["grain_fy"]))
-              for p in csv.DictReader(open(os.path.join(d, "host_particles.csv")))]
-    contacts = list(csv.DictReader(open(os.path.join(d, "state_contacts.csv"))))
-    overlap = max([float(c["overlap"]) for c in contacts] + [0.0])
-    fix = float(list(csv.DictReader(open(os.path.join(d, "steps.csv"))))[-1]["max_fixing_force"])
+    run = gembem.Run(d)
+    g, p, c = run.state.grains, run.host_particles, run.state.contacts
+    grains = list(zip(g["x"].tolist(), g["y"].tolist()))
+    forces = list(zip(p["grain_fx"].tolist(), p["grain_fy"].tolist()))
+    overlap = max(c["overlap"].tolist() + [0.0])
+    fix = float(run.steps["max_fixing_force"][-1])
     net, count = {}, {}
-    for c in contacts:
-        pn, pt, nx, ny = (float(c[k]) for k in ("pn", "pt", "nx", "ny"))
+    for i, j, pn, pt, nx, ny in zip(c["i"].astype(str), c["j"].astype(str), *(c[k].tolist() for k in ("pn", "pt", "nx", "ny"))):
         f = (pn * nx - pt * ny, pn * ny + pt * nx)
-        for g, sign in ((c["i"], -1), (c["j"], 1)):
+        for g, sign in ((i, -1), (j, 1)):
             v = net.setdefault(g, [0.0, 0.0])
             v[0] += sign * f[0]
             v[1] += sign * f[1]
             count[g] = count.get(g, 0) + 1
     worst = max((g for g in net if not g.startswith("p")), key=lambda g: math.hypot(*net[g]), default=None)
-    return {"grains": grains, "forces": forces, "overlap": max(overlap, 0.0), "contacts": len(contacts),
+    return {"grains": grains, "forces": forces, "overlap": max(overlap, 0.0), "contacts": c.nrows,
             "fixing": fix, "worst": worst, "worst_contacts": count.get(worst, 0)}
 
 
@@ -246,9 +235,7 @@ def force_error(r, ref):
 def cavity_reference_iteration():
     """Does the reference iteration run a hybrid scene? Returns None if so, else gembem's message."""
     d = os.path.join(RUNS, "cavity_reference")
-    os.makedirs(d, exist_ok=True)
-    with open(os.path.join(d, "scene.yaml"), "w") as f:
-        f.write(cavity_scene("confined", 1e-3, method="reference"))
+    cavity_scene("confined", accuracy=1e-3, method="reference").write(os.path.join(d, "scene.yaml"))
     p = subprocess.run([os.path.join(BUILD, "gembem"), "run", os.path.join(d, "scene.yaml"), "-o",
                         os.path.join(d, "run"), "--overwrite", "--quiet"], capture_output=True, text=True)
     return None if p.returncode == 0 else p.stderr.strip().replace(d + "/", "")
@@ -262,10 +249,10 @@ def cavity_section():
         sys.exit("the reference iteration now runs hybrid scenes: add it to CAVITY_SOLVERS")
     jobs = {}
     for solver, lin in CAVITY_SOLVERS.items():
-        jobs[f"cavity_confined_{lin}_tight"] = cavity_scene("confined", CAVITY_TIGHT, lin)
+        jobs[f"cavity_confined_{lin}_tight"] = cavity_scene("confined", lin, CAVITY_TIGHT)
         for case in ("confined", "placed"):
             for a in CAVITY_ACCURACIES:
-                jobs[f"cavity_{case}_{lin}_a{a:g}"] = cavity_scene(case, a, lin)
+                jobs[f"cavity_{case}_{lin}_a{a:g}"] = cavity_scene(case, lin, a)
     done = run_scenes(jobs, CAVITY_REPEAT)
     ref, tight = {}, {}
     for solver, lin in CAVITY_SOLVERS.items():
@@ -285,7 +272,7 @@ def cavity_section():
                 rows[case].append(dict(r, solver=solver, a=a, secs=secs, iters=iters))
     # the reference's own error: against a run 100 times tighter still (untimed)
     tighter = cavity_result(run_scene("cavity_confined_umfpack_tighter", cavity_scene(
-        "confined", CAVITY_TIGHT / 100, "umfpack"), repeat=1)[0])
+        "confined", "umfpack", CAVITY_TIGHT / 100), repeat=1)[0])
     self_pos = position_error(exact, tighter)
     sym_pos = position_error(ref["global CHOLMOD"], exact)
     sym_force = force_error(ref["global CHOLMOD"], exact)
@@ -294,8 +281,8 @@ def cavity_section():
     decades = math.log10(lo / hi)
     conf = {r["a"]: r for r in rows["confined"] if r["solver"] == "global UMFPACK"}
     per_decade = (conf[hi]["iters"] - conf[lo]["iters"]) / decades
-    nofric = [run_scene(f"cavity_confined_frictionless_a{a:g}", cavity_scene("confined", a).replace(
-        "friction_deg: 25", "friction_deg: 0"), repeat=1)[2] for a in (lo, hi)]
+    nofric = [run_scene(f"cavity_confined_frictionless_a{a:g}", cavity_scene("confined", "umfpack", a).with_value(
+        "materials.grain_grain.friction_deg", 0), repeat=1)[2] for a in (lo, hi)]
     ratio = sorted(u["secs"] / c["secs"] for u, c in zip(
         [r for r in rows["confined"] if r["solver"] == "global UMFPACK"],
         [r for r in rows["confined"] if r["solver"] == "global CHOLMOD"]))[len(CAVITY_ACCURACIES) // 2]
@@ -303,8 +290,7 @@ def cavity_section():
     chol = {r["a"]: r for r in rows["confined"] if r["solver"] == "global CHOLMOD"}
     same_iters = all(chol[a]["iters"] == conf[a]["iters"] for a in CAVITY_ACCURACIES)
     top = max(math.hypot(*f) for f in exact["forces"])
-    asym = float([line.split(":")[1].split("#")[0] for line in open(os.path.join(
-        done["cavity_confined_umfpack_tight"][0], "host_info.yaml")) if line.startswith("asymmetry")][0])
+    asym = float(gembem.Run(done["cavity_confined_umfpack_tight"][0]).host_info["asymmetry"])
     apart = position_error(*[r for r in rows["placed"] if r["a"] == hi])
 
     secs = [r["secs"] for case in rows for r in rows[case]]
@@ -449,25 +435,21 @@ def jammed_packing():
 
 
 def jammed_scene(box, stress, method, linear, a):
-    return textwrap.dedent(f"""\
-        gembem: 1
-        units: {{length: cm, force: dyn}}
-        materials:
-          grain_grain: {{kn: 1.0e8, kt: 7.0e7, friction_deg: 25}}
-          grain_wall:  {{kn: 1.0e8, kt: 7.0e7, friction_deg: 0}}
-        grains: {{file: {os.path.join(JAM_DIR, "jammed.csv")}}}
-        {box}
-        solver: {{method: {method}, linear: {linear}, accuracy: {a:g}, max_iterations: 2000000}}
-        loading:
-          - isotropic: {{stress: {stress:.6e}, steps: 1}}
-        """)
+    """The packing in its box (the line `box: {...}` gb_jam wrote), one isotropic stress step."""
+    return gembem.Scene(
+        units={"length": "cm", "force": "dyn"},
+        materials={"grain_grain": {"kn": 1.0e8, "kt": 7.0e7, "friction_deg": 25},
+                   "grain_wall": {"kn": 1.0e8, "kt": 7.0e7, "friction_deg": 0}},
+        grains={"file": os.path.join(JAM_DIR, "jammed.csv")}, box=yaml.load(box, Loader=Loader)["box"],
+        solver={"method": method, "linear": linear, "accuracy": a, "max_iterations": 2000000},
+        loading=[{"isotropic": {"stress": float(f"{stress:.6e}"), "steps": 1}}])
 
 
 def jammed_result(d):
-    grains = [(float(g["x"]), float(g["y"])) for g in csv.DictReader(open(os.path.join(d, "state_grains.csv")))]
-    last = list(csv.DictReader(open(os.path.join(d, "steps.csv"))))[-1]
-    return {"grains": grains, "mean": (float(last["s1"]) + float(last["s2"])) / 2,
-            "fixing": float(last["max_fixing_force"])}
+    run = gembem.Run(d)
+    g, s = run.state.grains, run.steps
+    return {"grains": list(zip(g["x"].tolist(), g["y"].tolist())), "mean": float(s["s1"][-1] + s["s2"][-1]) / 2,
+            "fixing": float(s["max_fixing_force"][-1])}
 
 
 def jammed1e4_section():

@@ -6,7 +6,7 @@
     run.steps["stress_ratio"], run.state.contacts["pn"]
 
 Modules: scene (Scene, YAML writing), runner (run, resume, find_gembem, Progress), errors
-(GembemError and one class per exit status), table (read_csv, Table), state (read_state),
+(GembemError and one class per exit status), table (read_csv, parse_csv, Table), state (read_state),
 rundir (Run), vtk (read_vtk, read_pvd), figures (matplotlib, imported on demand).
 Dependencies: Debian's python3-numpy, python3-yaml; python3-matplotlib for figures.
 """
@@ -15,9 +15,9 @@ from .rundir import Run
 from .runner import Progress, find_gembem, resume, run
 from .scene import Scene, write_grains_csv
 from .state import State, read_state
-from .table import Table, read_csv
+from .table import Table, parse_csv, read_csv
 from .vtk import read_pvd, read_vtk
 
 __all__ = ["ConvergenceError", "GembemError", "OutputError", "SceneError", "Run", "Progress", "find_gembem",
-           "resume", "run", "Scene", "write_grains_csv", "State", "read_state", "Table", "read_csv",
+           "resume", "run", "Scene", "write_grains_csv", "State", "read_state", "Table", "parse_csv", "read_csv",
            "read_pvd", "read_vtk"]

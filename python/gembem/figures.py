@@ -213,11 +213,7 @@ def convergence(runs, step, labels=None, accuracy=None, ax=None, path=None):
     runs = _runs(runs)
     fig, ax = _axes(ax)
     for k, run in enumerate(runs):
-        h = run.history
-        force = list(h["max_fixing_force"][h["step"] == step])
-        if not force:
-            raise ValueError(f"{h.path}: no iteration of step {step} (a step converged at once has none)")
-        force += list(run.steps["max_fixing_force"][run.steps["step"] == step])
+        force = iteration_forces(run, step)
         label = labels[k] if labels else run.path
         ax.semilogy(np.arange(1, len(force) + 1), force, marker="o", ms=3,
                     label=f"{label} ({len(force) - 1} iterations)")
@@ -232,6 +228,18 @@ def convergence(runs, step, labels=None, accuracy=None, ax=None, path=None):
     ax.set_title(f"convergence of load step {step}", fontsize=10)
     ax.legend(fontsize=8)
     return _done(fig, path)
+
+
+def iteration_forces(run, step):
+    """The largest fixing force at the start of each iteration of one load step (history.csv, all
+    its attempts in order), then the force it converged at (steps.csv), as an array."""
+    run = _runs(run)[0]
+    h = run.history
+    force = list(h["max_fixing_force"][h["step"] == step])
+    if not force:
+        raise ValueError(f"{h.path}: no iteration of step {step} (a step converged at once has none)")
+    force += list(run.steps["max_fixing_force"][run.steps["step"] == step])
+    return np.array(force, dtype=float)
 
 
 def rose(run, step, column="count", ax=None, path=None):

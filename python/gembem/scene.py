@@ -95,22 +95,23 @@ class Scene:
         out.update(self.extra)
         return _plain(out)
 
-    def to_yaml(self, grains_file=None):
-        """The scene as YAML text: short maps and lists on one line, floats exact (shortest repr)."""
-        return ("# a gembem scene written by the gembem Python package\n"
-                + dump_yaml(self.to_dict(grains_file)))
+    def to_yaml(self, grains_file=None, comment=None):
+        """The scene as YAML text: short maps and lists on one line, floats exact (shortest repr).
+        comment: what the scene is, written first as '#' lines (one per line of the text)."""
+        lines = (comment.splitlines() if comment else []) + ["a gembem scene written by the gembem Python package"]
+        return "".join(f"# {line}".rstrip() + "\n" for line in lines) + dump_yaml(self.to_dict(grains_file))
 
-    def write(self, path, grains_file=None):
+    def write(self, path, grains_file=None, comment=None):
         """Writes the scene to PATH (its directory created); returns the path.
 
         grains_file: write an array of grains to this CSV file (relative to the scene's directory,
-        columns x, y, r[, rotation]) instead of inline: for large packings.
+        columns x, y, r[, rotation]) instead of inline: for large packings. comment: see to_yaml.
         """
         path = os.fspath(path)
         os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
         if grains_file and not isinstance(self.grains, dict):
             write_grains_csv(os.path.join(os.path.dirname(os.path.abspath(path)), grains_file), self.grains)
-        text = self.to_yaml(grains_file)
+        text = self.to_yaml(grains_file, comment)
         with open(path, "w") as f:
             f.write(text)
         return path

@@ -60,15 +60,20 @@ def _column(values):
 
 
 def read_csv(path):
-    """Reads a CSV file of gembem into a Table.
+    """Reads a CSV file of gembem into a Table (see parse_csv)."""
+    path = os.fspath(path)
+    with open(path, newline="") as f:
+        return parse_csv(f.read(), path)
+
+
+def parse_csv(text, path="<text>"):
+    """A Table of CSV text in gembem's form, e.g. what a gembem tool printed (path: its name in errors).
 
     Lines starting with '#' are comments. A row with another number of fields than the header
     (half a row left by a run that was killed) is an error naming the file and line: a resumed
     run cuts such rows back, a reader should not guess.
     """
-    path = os.fspath(path)
-    with open(path, newline="") as f:
-        lines = [(n, line) for n, line in enumerate(f, 1) if line.strip() and not line.startswith("#")]
+    lines = [(n, line) for n, line in enumerate(text.splitlines(), 1) if line.strip() and not line.startswith("#")]
     if not lines:
         raise ValueError(f"{path}: empty file, expected a header line of column names")
     header = next(csv.reader([lines[0][1]]))

@@ -21,7 +21,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from biaxial import Run  # noqa: E402
+from biaxial import Biaxial  # noqa: E402
 
 
 def curves(d):
@@ -31,8 +31,8 @@ def curves(d):
         with open(os.path.join(os.path.dirname(run), "status.yaml")) as f:
             if "status: completed" not in f.read():
                 continue
-        r = Run(run)
-        out.append(np.array([[r.shear_strain(s), Run.principal_ratio(s), r.shear_ev(s)] for s in r.shear]))
+        b = Biaxial(run)
+        out.append(np.column_stack([b.gamma[b.shear], b.ratio[b.shear], b.ev[b.shear]]))
     return out
 
 

@@ -6,13 +6,12 @@ usage: stats.py RUNDIR ...            the table of those runs
        stats.py --results results.csv the table of the workflow's aggregated measures (Snakefile)
 The workflow measures each run with measures() and gathers them in results.csv.
 """
-import csv
-import math
-import os
 import statistics
 import sys
 
-from biaxial import Run
+import numpy as np
+
+from biaxial import Biaxial, gembem
 
 HEAD = ("| run | porosity at shear start | peak s1/s2 | e1-e2 at peak [%] | ev at peak [%] | ev at 5 % [%] | "
         "paper's balance: max \\|W-D-dE\\|/W in shear | iteration's books: max \\|W_it-D-L-dE\\|/W_it | "
@@ -23,21 +22,20 @@ PAPER = "| Kishino (1989) | 0.260 (initial) | about 1.7 | about 1.8 | | dilatant
 
 def measures(d):
     """One run's numbers: the shear stage's peak, volumetric strains, energy balances, cost."""
-    r = Run(d)
-    pk = r.steps[r.peak_step]
-    with open(os.path.join(d, "contacts", f"grains_{r.shear_start:06d}.csv")) as f:
-        solid = sum(math.pi * float(g["r"]) ** 2 for g in csv.DictReader(f))
+    b = Biaxial(d)
+    s, m, pk, start = b.steps, b.micro, b.peak_step, b.shear_start
+    g = b.run.grains(start)
+    shear = b.shear[1:]
     return {
-        "porosity": 1 - solid / (float(r.shear[0]["width"]) * float(r.shear[0]["height"])),
-        "peak_ratio": Run.principal_ratio(pk),
-        "peak_strain": r.shear_strain(pk),
-        "ev_peak": r.shear_ev(pk),
-        "ev_end": r.shear_ev(r.shear[-1]),
-        "balance": max(abs(r.balance_from_shear_start(int(s["step"]))[0]) for s in r.shear[1:]),
-        "books": max(abs(float(m["balance_iter"])) / (float(m["work_walls_iter"]) + float(m["work_body"]))
-                     for m in r.micro[1:]),
-        "iterations": statistics.mean(int(s["iterations"]) for s in r.shear[1:]),
-        "seconds": sum(float(s["seconds"]) for s in r.steps),
+        "porosity": 1 - float(np.sum(np.pi * g["r"] ** 2)) / float(s["width"][start] * s["height"][start]),
+        "peak_ratio": float(b.ratio[pk]),
+        "peak_strain": float(b.gamma[pk]),
+        "ev_peak": float(b.ev[pk]),
+        "ev_end": float(b.ev[b.shear[-1]]),
+        "balance": max(abs(b.balance_from_shear_start(int(k))[0]) for k in shear),
+        "books": float(np.max(np.abs(m["balance_iter"][1:]) / (m["work_walls_iter"][1:] + m["work_body"][1:]))),
+        "iterations": float(np.mean(s["iterations"][shear])),
+        "seconds": float(np.sum(s["seconds"])),
     }
 
 
@@ -63,7 +61,6 @@ def table(rows):
 
 def results_rows(path):
     """(label, measures or status) per case of the workflow's results.csv."""
-    import gembem   # the workflow's reader (PYTHONPATH=python)
     t = gembem.read_csv(path)
     return [(str(t["case"][i]), {k: float(t[k][i]) for k in KEYS} if t["status"][i] == "completed"
              else str(t["status"][i])) for i in range(t.nrows)]

@@ -5,37 +5,32 @@ cavity, deformed (displacements magnified).
 
 usage: figures.py RUNDIR OUT_PREFIX TITLE
 """
-import csv
 import math
+import os
 import sys
 
 import matplotlib
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt
-from matplotlib.patches import Circle, Wedge
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+from matplotlib.patches import Circle, Wedge  # noqa: E402
 
-
-def rows(path):
-    with open(path) as f:
-        return list(csv.DictReader(f))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+import gembem  # noqa: E402
 
 
 def main():
-    run, out, title = sys.argv[1], sys.argv[2], sys.argv[3]
-    g0 = rows(f"{run}/contacts/grains_000000.csv")
-    g1 = rows(f"{run}/contacts/grains_000001.csv")
-    bp = rows(f"{run}/host_particles.csv")
+    run, out, title = gembem.Run(sys.argv[1]), sys.argv[2], sys.argv[3]
+    g0, g1, bp = run.grains(0), run.grains(1), run.host_particles
     fig, ax = plt.subplots(figsize=(6, 6))
-    for p in bp:  # half-discs bulging into the cavity, moved with their element
-        x, y = float(p["x"]) + float(p["ux"]), float(p["y"]) + float(p["uy"])
-        a = math.degrees(math.atan2(float(p["ny"]), float(p["nx"])))
-        ax.add_patch(Wedge((x, y), float(p["r"]), a - 90, a + 90, facecolor="0.85", edgecolor="0.4", lw=0.6))
-    for a, b in zip(g0, g1):
-        ax.add_patch(Circle((float(a["x"]), float(a["y"])), float(a["r"]), fill=False, ls="--", lw=0.6, color="0.6"))
-        ax.add_patch(Circle((float(b["x"]), float(b["y"])), float(b["r"]), fill=False, lw=1.0, color="k"))
-    ax.quiver([float(a["x"]) for a in g0], [float(a["y"]) for a in g0],
-              [float(b["x"]) - float(a["x"]) for a, b in zip(g0, g1)],
-              [float(b["y"]) - float(a["y"]) for a, b in zip(g0, g1)],
+    for k in range(bp.nrows):  # half-discs bulging into the cavity, moved with their element
+        x, y = bp["x"][k] + bp["ux"][k], bp["y"][k] + bp["uy"][k]
+        a = math.degrees(math.atan2(bp["ny"][k], bp["nx"][k]))
+        ax.add_patch(Wedge((x, y), bp["r"][k], a - 90, a + 90, facecolor="0.85", edgecolor="0.4", lw=0.6))
+    for k in range(g0.nrows):
+        ax.add_patch(Circle((g0["x"][k], g0["y"][k]), g0["r"][k], fill=False, ls="--", lw=0.6, color="0.6"))
+        ax.add_patch(Circle((g1["x"][k], g1["y"][k]), g1["r"][k], fill=False, lw=1.0, color="k"))
+    ax.quiver(g0["x"], g0["y"], g1["x"] - g0["x"], g1["y"] - g0["y"],
               angles="xy", scale_units="xy", scale=1, color="r", width=0.004)
     ax.set_xlim(-2.8, 2.8)
     ax.set_ylim(-2.8, 2.8)
@@ -45,17 +40,15 @@ def main():
     fig.savefig(f"{out}_grains.png", dpi=110)
     plt.close(fig)
 
-    hb = [r for r in rows(f"{run}/host_boundary.csv") if r["group"] == "cavity"]
-    umax = max(math.hypot(float(r["ux"]), float(r["uy"])) for r in hb)
+    hb = run.host_boundary.select(run.host_boundary["group"] == "cavity")
+    umax = float(np.max(np.hypot(hb["ux"], hb["uy"])))
     mag = 0.3 / umax if umax > 0 else 1.0
     fig, ax = plt.subplots(figsize=(6, 6))
-    order = sorted(hb, key=lambda r: math.atan2(float(r["y"]), float(r["x"])))
-    xs = [float(r["x"]) for r in order] + [float(order[0]["x"])]
-    ys = [float(r["y"]) for r in order] + [float(order[0]["y"])]
-    ax.plot(xs, ys, "k--", lw=0.8, label="cavity at rest (element midpoints)")
-    xd = [float(r["x"]) + mag * float(r["ux"]) for r in order]
-    yd = [float(r["y"]) + mag * float(r["uy"]) for r in order]
-    ax.plot(xd + xd[:1], yd + yd[:1], "b-", lw=1.2, label=f"deformed, displacements x {mag:.3g}")
+    order = hb.select(np.argsort(np.arctan2(hb["y"], hb["x"]), kind="stable"))
+    loop = np.r_[np.arange(order.nrows), 0]
+    ax.plot(order["x"][loop], order["y"][loop], "k--", lw=0.8, label="cavity at rest (element midpoints)")
+    xd, yd = order["x"] + mag * order["ux"], order["y"] + mag * order["uy"]
+    ax.plot(xd[loop], yd[loop], "b-", lw=1.2, label=f"deformed, displacements x {mag:.3g}")
     ax.set_aspect("equal")
     ax.legend(loc="lower left", fontsize=8)
     ax.set_title(f"The host's cavity (largest displacement {umax:.3g} cm)")

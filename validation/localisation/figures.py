@@ -14,7 +14,6 @@
 Usage: validation/localisation/figures.py [RUNS_DIR]   (from anywhere; PNGs next to this file)
        validation/localisation/figures.py --episodes NAME ...   the band episodes of extended cases
 """
-import csv
 import math
 import os
 import sys
@@ -31,7 +30,10 @@ import matplotlib.tri as mtri  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.join(HERE, "..", "..", "python"))
+import gembem  # noqa: E402
 import study  # noqa: E402
+from gembem.figures import index_of  # noqa: E402  (the localisation index as the run computes it)
 
 RUNS = (sys.argv[1] if len(sys.argv) > 1 and not sys.argv[1].startswith("--")
         else os.path.join(HERE, "..", "..", "runs", "localisation"))
@@ -40,17 +42,8 @@ WTHRESHOLD = 0.4  # the same for the windowed index
 
 
 def read_csv(path):
-    with open(path) as f:
-        rows = [r for r in csv.reader(line for line in f if not line.startswith("#"))]
-    head, body = rows[0], rows[1:]
-    out = {}
-    for k, name in enumerate(head):
-        col = [r[k] for r in body]
-        try:
-            out[name] = np.array([float(v) for v in col])
-        except ValueError:
-            out[name] = np.array(col)
-    return out
+    """gembem.read_csv with its integer columns as float64, as this script's arithmetic expects."""
+    return {k: v.astype(float) if v.dtype.kind == "i" else v for k, v in gembem.read_csv(path).items()}
 
 
 def status_line(case_dir, name):
@@ -150,20 +143,6 @@ def accumulated_strain(case, k0, k1):
     return tri, gamma, ok, area, b
 
 
-def index_of(gamma, area):
-    """The localisation index of a field: share of sum(gamma area) in the most strained 10 %."""
-    o = np.argsort(-gamma)
-    g, a = gamma[o], area[o]
-    total, want, acc, part = np.sum(g * a), 0.1 * np.sum(a), 0.0, 0.0
-    for gi, ai in zip(g, a):
-        take = min(ai, want - acc)
-        if take <= 0:
-            break
-        part += gi * take
-        acc += take
-    return part / total if total > 0 else 0
-
-
 def host_ring(case, step):
     h = read_csv(field_path(case, "host_ring", step))
     g = 2 * np.sqrt((0.5 * (h["exx"] - h["eyy"]))**2 + h["exy"]**2)
@@ -172,19 +151,9 @@ def host_ring(case, step):
 
 def host_field(case):
     """The host's whole field at the run's last step (host_field.vtu): points and shear strain."""
-    text = open(os.path.join(case.run, "host_field.vtu")).read()
-
-    def array(name):
-        key = f'Name="{name}"' if name else 'NumberOfComponents="3" format="ascii">'
-        i = text.index(key)
-        i = text.index(">", i) + 1
-        j = text.index("</DataArray>", i)
-        return np.array(text[i:j].split(), float)
-
-    i = text.index("<Points>")
-    j = text.index("</DataArray>", i)
-    pts = np.array(text[text.index(">", text.index("<DataArray", i)) + 1:j].split(), float).reshape(-1, 3)
-    sxx, syy, sxy = array("sxx"), array("syy"), array("sxy")
+    m = gembem.read_vtk(os.path.join(case.run, "host_field.vtu"))
+    pts = m.points
+    sxx, syy, sxy = (m.point_data[k] for k in ("sxx", "syy", "sxy"))
     nu = getattr(case, "nu", study.NU)
     tr = sxx + syy
     exx, eyy, exy = (sxx - nu * tr) / (2 * study.G), (syy - nu * tr) / (2 * study.G), sxy / (2 * study.G)

@@ -2,7 +2,7 @@
 """Runs an extended case of the localisation study over its whole travel, continuing past a load
 step that does not converge.
 
-Segment 0 is the case's scene (study.py scene NAME). When a segment stops (gembem exit 3: a load
+Segment 0 is the case's scene (study.py scene NAME: a gembem.Scene). When a segment stops (gembem exit 3: a load
 step did not converge in max_iterations), a bridge segment starts from the last converged state
 (`initial_state:`; restarting is exact, docs/hybrid.md "Restarting a hybrid run") and goes over the next
 HALVED steps' worth of travel in steps half as long; a bridge that stops without a step done is
@@ -34,6 +34,8 @@ import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.join(HERE, "..", "..", "python"))
+import gembem  # noqa: E402
 import study  # noqa: E402
 
 HALVED = 5         # steps of the case's size gone over by a bridge after a stall
@@ -42,20 +44,18 @@ MAX_SEGMENTS = 40
 
 def top_travel(run, shear):
     """The top's travel (|uy| for biaxial, |ux| for shear) at the last row of host_steps.csv."""
-    with open(os.path.join(run, "host_steps.csv")) as f:
-        rows = [r for r in csv.DictReader(f) if r["group"] == "top"]
-    r = rows[-1]
-    return int(r["step"]), abs(float(r["ux" if shear else "uy"]))
+    h = gembem.read_csv(os.path.join(run, "host_steps.csv"))
+    top = h.select(h["group"] == "top")
+    return int(top["step"][-1]), abs(float(top["ux" if shear else "uy"][-1]))
 
 
-def continued_scene(base, state, parts, shear):
-    """The case's scene started from `state` with the loading `parts` [(steps, du), ...]."""
-    s = re.sub(r"grains:\n  file: grains.csv[^\n]*\n", f"initial_state: {state}\n", base)
-    s = s[:s.index("loading:")] + "loading:\n"
-    for steps, du in parts:
-        inc = f"[{du:g}, 0]" if shear else f"[0, {-du:g}]"
-        s += f"  - host_load: {{steps: {steps}, increments: {{top: {inc}}}}}\n"
-    return s
+def continued_scene(base, state, parts, shear, accuracy):
+    """The case's scene (gembem.Scene) started from `state` with the loading `parts`
+    [(steps, du), ...] and the accuracy (6 significant digits, as the case's)."""
+    inc = lambda du: [study.g6(du), 0] if shear else [0, study.g6(-du)]
+    s = base.with_value("grains", None).with_value("initial_state", state)
+    s = s.with_value("loading", [{"host_load": {"steps": steps, "increments": {"top": inc(du)}}} for steps, du in parts])
+    return s.with_value("solver.accuracy", study.g6(accuracy))
 
 
 BRIDGES = [(2, 1), (4, 4), (4, 16)]  # a bridge's (step divisor, accuracy factor), level by level
@@ -68,13 +68,11 @@ def attempt(name, out, mesh, gembem, refine):
     shear = c["load"] == "shear"
     du, total = c["du"] / refine, c["du"] * c["steps"]
     base = study.scene(name, mesh, refine)
-    a0 = float(re.search(r"accuracy: ([0-9.eE+-]+)", base).group(1))
+    a0 = base.solver["accuracy"]
     rows, first, seg, level, t_all = [], 0, 0, 0, time.time()
     scene = base
     while True:
-        sp = os.path.join(out, f"scene_seg{seg:02d}.yaml")
-        with open(sp, "w") as f:
-            f.write(scene)
+        sp = scene.write(os.path.join(out, f"scene_seg{seg:02d}.yaml"), comment=study.scene_comment(name))
         run = os.path.join(out, f"seg{seg:02d}")
         t0 = time.time()
         with open(os.path.join(out, f"gembem_seg{seg:02d}.log"), "w") as log:
@@ -109,7 +107,7 @@ def attempt(name, out, mesh, gembem, refine):
             small = du / div
             parts, acc = [(int(round(min(left, HALVED * du) / small)), small)], a0 * fac
         state = os.path.relpath(os.path.join(run, "state.yaml"), out)
-        scene = continued_scene(base, state, parts, shear).replace(f"accuracy: {a0:g}", f"accuracy: {acc:g}")
+        scene = continued_scene(base, state, parts, shear, acc)
         seg += 1
     with open(os.path.join(out, "segments.csv"), "w") as f:
         w = csv.writer(f)

@@ -24,7 +24,11 @@ Usage: study.py cases                 one line per case: name phi friction kn
        study.py load                  P STEPS_P top displacement STEPS (for elastic_disc)
 """
 import math
+import os
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+import gembem  # noqa: E402
 
 G, NU = 95000.0, 0.1
 N_GRAINS, SEED = 250, 1
@@ -75,37 +79,42 @@ def disc_moduli():
     return out
 
 
-HOST = """\
-materials:
-  grain_grain: {{kn: {kn:g}, kt: {kt:g}, friction_deg: {friction:g}}}
-  grain_wall: {{kn: {kn:g}, kt: {kt:g}, friction_deg: 0}}          # unused: the host replaces the walls
-  grain_boundary: {{kn: {kn:g}, kt: 0, friction_deg: 0}}
-host:
-  mesh: {mesh}
-  elements: {{bottom: 16, right: 16, top: 16, left: 16, cavity: {cavity}}}
-  material: {{shear_modulus: {G:g}, poisson: {nu:g}, plane: strain}}
-  boundary: {{bottom: fixed, top: {top_bc}, left: {{pressure: 0}}, right: {{pressure: 0}}}}
-  cavity: cavity
-"""
+def g6(v):
+    """v to 6 significant digits (%g): the numbers the study's scenes have always held."""
+    return float(f"{v:g}")
 
 
 def host(kn, friction, mesh, cavity, nu, top_bc):
-    """The materials and the host of a case's scenes (the run's and the packing's)."""
-    return HOST.format(kn=kn, kt=KT_KN * kn, friction=friction, mesh=mesh, cavity=cavity, G=G, nu=nu, top_bc=top_bc)
+    """The materials and the host of a case's scenes (the run's and the packing's), as a Scene's
+    sections; top_bc: the top's boundary condition ("displacement" or {"ux": 0, "ty": 0})."""
+    kn, kt = g6(kn), g6(KT_KN * kn)
+    materials = {"grain_grain": {"kn": kn, "kt": kt, "friction_deg": g6(friction)},
+                 "grain_wall": {"kn": kn, "kt": kt, "friction_deg": 0},     # unused: the host replaces the walls
+                 "grain_boundary": {"kn": kn, "kt": 0, "friction_deg": 0}}
+    body = {"mesh": mesh, "elements": {"bottom": 16, "right": 16, "top": 16, "left": 16, "cavity": cavity},
+            "material": {"shear_modulus": g6(G), "poisson": g6(nu), "plane": "strain"},
+            "boundary": {"bottom": "fixed", "top": top_bc, "left": {"pressure": 0}, "right": {"pressure": 0}},
+            "cavity": "cavity"}
+    return {"materials": materials, "host": body}
 
 
-SCENE = """\
-# The localisation study (validation/localisation/study.py writes this scene): {name}
-gembem: 1
-units: {{length: cm, force: kgf}}
-{host}grains:
-  file: grains.csv           # gembem pack of pack.yaml ({pack})
-solver: {{method: global, linear: cholmod, accuracy: {a:g}, max_iterations: {max_it}}}
-loading:
-  - relax: {{steps: 1}}
-  - host_load: {{steps: {steps_p}, increments: {{left: {dp:g}, right: {dp:g}{top_p}}}}}
-  - host_load: {{steps: {steps}, increments: {{top: [{dux:g}, {duy:g}]}}}}
-"""
+def case_scene(name, kn, friction, mesh, cavity, nu, top_bc, a, max_it, dp, top_p, steps, du):
+    """A case's scene: the host, the grains of grains.csv, a relaxation, the confinement dp per
+    step (top_p: also on the top, as a traction), then the top moved by du = [dux, duy] per step."""
+    inc = {"left": g6(dp), "right": g6(dp)}
+    if top_p is not None:
+        inc["top"] = [0, g6(top_p)]
+    return gembem.Scene(units={"length": "cm", "force": "kgf"}, **host(kn, friction, mesh, cavity, nu, top_bc),
+                        grains={"file": "grains.csv"},
+                        solver={"method": "global", "linear": "cholmod", "accuracy": g6(a), "max_iterations": max_it},
+                        loading=[{"relax": {"steps": 1}}, {"host_load": {"steps": STEPS_P, "increments": inc}},
+                                 {"host_load": {"steps": steps, "increments": {"top": [g6(v) for v in du]}}}])
+
+
+def scene_comment(name):
+    """What a case's scene is (its first lines)."""
+    return (f"The localisation study (validation/localisation/study.py writes this scene): {name}\n"
+            f"grains.csv: gembem pack of pack.yaml ({pack_args(name)})")
 
 
 # Extended cases (the second part of the study): one at a time away from the sweep, to look for a
@@ -186,57 +195,58 @@ def pack_args(name):
     return f"--n {n} --phi {phi} --seed {seed} --elements {cavity}"
 
 
-PACK_SCENE = """\
-# The localisation study's packing (validation/localisation/study.py writes this pack scene): {name}
-# N discs of radii uniform in [0.75, 1.25] x r0 grown by gembem pack (docs/packing.md) into the
-# cavity, frictionless, to the solid fraction phi = {phi} of the usable disc (the cavity's radius
-# less the boundary particles' bulge, R cos(pi/m) - R sin(pi/m)): {phi_polygon:.6f} of the polygon.
-gembem: 1
-units: {{length: cm, force: kgf}}
-{host}solver: {{method: global, accuracy: {a:g}}}
-pack:
-  protocol: growth
-  seed: {seed}
-  sizes: {{uniform: [0.75, 1.25]}}   # radii, scaled to the solid fraction
-  count: {n}
-  solid_fraction: {phi_polygon:.6f}
-"""
-
-
 def pack_scene(name, mesh, radius=2.5):
-    """The pack scene of the case (gembem pack -o DIR; the grains of DIR/state_grains.csv). The
-    grains are packed frictionless whatever the case's friction, with its kn; the accuracy is
-    5e-5 kn (the sweep's), the balance of every grain at the end of the packing."""
+    """The pack scene of the case (gembem pack -o DIR; the grains of DIR/state_grains.csv) and the
+    comment saying what it is: (gembem.Scene, str). The grains are packed frictionless whatever
+    the case's friction, with its kn; the accuracy is 5e-5 kn (the sweep's), the balance of every
+    grain at the end of the packing."""
     n, phi, seed, cavity = pack_values(name)
     c = ext(name)
     kn = c["kn_g"] * G if c is not None else next(k for m, _, _, k in cases() if m == name)
     usable = radius * (math.cos(math.pi / cavity) - math.sin(math.pi / cavity))
     polygon = 0.5 * cavity * radius**2 * math.sin(2 * math.pi / cavity)
     nu = c["nu"] if c is not None else NU
-    return PACK_SCENE.format(name=name, host=host(kn, 0, mesh, cavity, nu, "displacement"), a=A_KN * kn, seed=seed,
-                             n=n, phi=phi, phi_polygon=phi * math.pi * usable**2 / polygon)
+    phi_polygon = float(f"{phi * math.pi * usable**2 / polygon:.6f}")
+    s = gembem.Scene(units={"length": "cm", "force": "kgf"}, **host(kn, 0, mesh, cavity, nu, "displacement"),
+                     solver={"method": "global", "accuracy": g6(A_KN * kn)},
+                     extra={"pack": {"protocol": "growth", "seed": seed,
+                                     "sizes": {"uniform": [0.75, 1.25]},   # radii, scaled to the solid fraction
+                                     "count": n, "solid_fraction": phi_polygon}})
+    comment = f"""The localisation study's packing (validation/localisation/study.py writes this pack scene): {name}
+N discs of radii uniform in [0.75, 1.25] x r0 grown by gembem pack (docs/packing.md) into the
+cavity, frictionless, to the solid fraction phi = {phi} of the usable disc (the cavity's radius
+less the boundary particles' bulge, R cos(pi/m) - R sin(pi/m)): {phi_polygon:.6f} of the polygon."""
+    return s, comment
 
 
 def scene(name, mesh, refine=1):
-    """The case's scene; refine > 1: the top's steps `refine` times smaller (a second attempt)."""
+    """The case's scene (gembem.Scene; scene_comment says what it is); refine > 1: the top's steps
+    `refine` times smaller (a second attempt)."""
     c = ext(name)
     if c is not None:
-        kn = c["kn_g"] * G
         shear = c["load"] == "shear"
         dp = c["P"] / STEPS_P
-        return SCENE.format(name=name, host=host(kn, c["friction"], mesh, c["cavity"], c["nu"],
-                                                 "{ux: 0, ty: 0}" if shear else "displacement"),
-                            pack=pack_args(name), a=ext_accuracy(c),
-                            max_it=c["max_it"], steps_p=STEPS_P, dp=dp,
-                            top_p=f", top: [0, {-dp:g}]" if shear else "", steps=c["steps"] * refine,
-                            dux=c["du"] / refine if shear else 0, duy=0 if shear else -c["du"] / refine)
+        return case_scene(name, c["kn_g"] * G, c["friction"], mesh, c["cavity"], c["nu"],
+                          {"ux": 0, "ty": 0} if shear else "displacement", ext_accuracy(c), c["max_it"], dp,
+                          -dp if shear else None, c["steps"] * refine,
+                          [c["du"] / refine, 0] if shear else [0, -c["du"] / refine])
     for n, phi, friction, kn in cases():
         if n == name:
-            return SCENE.format(name=name, host=host(kn, friction, mesh, 64, NU, "displacement"), pack=pack_args(name),
-                                a=kn * (A_FRICTIONLESS if friction == 0 else A_KN), max_it=3000,
-                                steps_p=STEPS_P, dp=P / STEPS_P, top_p="", steps=STEPS * refine, dux=0,
-                                duy=DUY / refine)
+            return case_scene(name, kn, friction, mesh, 64, NU, "displacement",
+                              kn * (A_FRICTIONLESS if friction == 0 else A_KN), 3000, P / STEPS_P, None,
+                              STEPS * refine, [0, DUY / refine])
     raise SystemExit(f"unknown case {name}")
+
+
+def write_scene(name, path, mesh, refine=1):
+    """Writes the case's scene to PATH, with its comment."""
+    return scene(name, mesh, refine).write(path, comment=scene_comment(name))
+
+
+def write_pack_scene(name, path, mesh):
+    """Writes the case's pack scene to PATH, with its comment."""
+    s, comment = pack_scene(name, mesh)
+    return s.write(path, comment=comment)
 
 
 def main():
@@ -249,11 +259,12 @@ def main():
     elif sys.argv[1] == "pack":
         print(pack_args(sys.argv[2]))
     elif sys.argv[1] == "pack_scene":
-        print(pack_scene(sys.argv[2], sys.argv[3]), end="")
+        s, comment = pack_scene(sys.argv[2], sys.argv[3])
+        print(s.to_yaml(comment=comment), end="")
     elif sys.argv[1] == "scene":
         refine = int(sys.argv[5]) if len(sys.argv) > 5 else 1
-        with open(f"{sys.argv[3]}/scene{'' if refine == 1 else f'_refine{refine}'}.yaml", "w") as f:
-            f.write(scene(sys.argv[2], sys.argv[4], refine))
+        write_scene(sys.argv[2], f"{sys.argv[3]}/scene{'' if refine == 1 else f'_refine{refine}'}.yaml", sys.argv[4],
+                    refine)
     elif sys.argv[1] == "disc_moduli":
         for n, g, nu in disc_moduli():
             print(n, f"{g:.6g}", f"{nu:.6g}")

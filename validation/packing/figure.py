@@ -3,7 +3,6 @@
 
   figure.py PACKDIR OUT.png
 """
-import csv
 import os
 import sys
 
@@ -12,14 +11,16 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+import gembem  # noqa: E402
+
 d, out = sys.argv[1], sys.argv[2]
+state = gembem.read_state(d)
 fig, ax = plt.subplots(figsize=(6, 5))
-for r in csv.DictReader(open(os.path.join(d, "state_grains.csv"))):
-    ax.add_patch(plt.Circle((float(r["x"]), float(r["y"])), float(r["r"]), fill=False, lw=0.6))
-host = os.path.join(d, "state_host.csv")
-if os.path.exists(host):
-    h = list(csv.DictReader(open(host)))
-    ax.plot([float(r["x"]) for r in h], [float(r["y"]) for r in h], "r.", ms=2)
+for x, y, r in zip(state.grains["x"], state.grains["y"], state.grains["r"]):
+    ax.add_patch(plt.Circle((x, y), r, fill=False, lw=0.6))
+if state.host_particles is not None:
+    ax.plot(state.host_particles["x"], state.host_particles["y"], "r.", ms=2)
 ax.set_aspect("equal")
 ax.autoscale()
 ax.set_xlabel("x [cm]")

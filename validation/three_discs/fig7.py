@@ -5,24 +5,21 @@ the rigid exact solution dashed.
 
 usage: fig7.py OUT.png RUNDIR_0 RUNDIR_5 RUNDIR_10 RUNDIR_15
 """
-import csv
 import sys
 
 import matplotlib
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
 
-from table2 import exact_ratio
+from table2 import exact_ratio, gembem  # noqa: E402  (table2 puts python/ on the path)
 
 
 def curve(rundir):
-    xs, ys = [], []
-    with open(f"{rundir}/steps.csv") as f:
-        for row in csv.DictReader(f):
-            if row["stage"] == "2" or row["step"] == "10":
-                xs.append(100 * max(0.0, float(row["e1_minus_e2"])))
-                ys.append(float(row["stress_ratio"]))
-    return xs, ys
+    """The shear stage (stage 2) and the state it starts from (step 10): e1 - e2 [%], stress ratio."""
+    s = gembem.Run(rundir).steps
+    s = s.select((s["stage"] == 2) | (s["step"] == 10))
+    return 100 * np.maximum(0.0, s["e1_minus_e2"]), s["stress_ratio"]
 
 
 def main():

@@ -5,9 +5,14 @@ usage: table2.py RUNDIR_CASE1 [RUNDIR_CASE2 RUNDIR_CASE3 RUNDIR_CASE4]
 Prints a Markdown table: e1-e2, the exact rigid solution (computed, docs/method.md section 7), and for
 each case the paper's value and gembem's (the stress ratio in RUNDIR/steps.csv at that strain).
 """
-import csv
 import math
+import os
 import sys
+
+import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+import gembem  # noqa: E402
 
 # Kishino (1989), Table 2: stress ratio at e1 - e2 = 1..5 %, cases 1-4.
 PAPER = [[0.5189, 0.5079, 0.4967, 0.4854, 0.4741],
@@ -31,15 +36,13 @@ def exact_ratio(gamma, theta0=math.radians(60)):
 
 def ratios(rundir):
     """Stress ratio of the shear stage (stage 2) at e1 - e2 = 1..5 %."""
+    s = gembem.Run(rundir).steps
+    s = s.select(s["stage"] == 2)
     out = {}
-    with open(f"{rundir}/steps.csv") as f:
-        for row in csv.DictReader(f):
-            if row["stage"] != "2":
-                continue
-            g = float(row["e1_minus_e2"])
-            for k in range(1, 6):
-                if abs(g - 0.01 * k) < 1e-9:
-                    out[k] = float(row["stress_ratio"])
+    for k in range(1, 6):
+        at = np.flatnonzero(np.abs(s["e1_minus_e2"] - 0.01 * k) < 1e-9)
+        if len(at):
+            out[k] = float(s["stress_ratio"][at[-1]])
     return out
 
 
