@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Checks the relative links of README.md and docs/*.md (ctest docs_links).
+"""Checks the relative links of README.md and docs/*.md (ctest tools_docs_links).
 
     /usr/bin/python3 tools/check_docs_links.py [REPO_ROOT]
 

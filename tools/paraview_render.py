@@ -10,7 +10,7 @@ Debian's ParaView (tools/setup.sh --with-paraview) renders through X only: witho
 aborts ("bad X server connection"), even with --force-offscreen-rendering. Without $DISPLAY this
 script starts an Xvfb of its own for the run (-noreset: see virtual_display).
 --report writes what ParaView read and drew (counts, radii, ranges, the camera) for ctest
-paraview_render (tests/paraview/test_paraview.py), which checks it and the picture against the
+demo_paraview_render (tests/paraview/test_paraview.py), which checks it and the picture against the
 run's own files.
 """
 import argparse

@@ -2,7 +2,7 @@
 # Installs gembem's build and run dependencies, all Debian 12 packages, by name.
 #   tools/setup.sh                   what building, testing and the demo need
 #   tools/setup.sh --with-paraview   also ParaView and Xvfb, the optional extra that draws a run's VTK
-#                                    files off-screen (tools/paraview_render.py, ctest paraview_render)
+#                                    files off-screen (tools/paraview_render.py, ctest demo_paraview_render)
 #   tools/setup.sh --with-petsc      also PETSc with Open MPI, for solver.linear: petsc (optional,
 #                                    docs/scaling.md; CMake builds it when found, GB_WITH_PETSC)
 #   (both extras may be given)

@@ -5,7 +5,7 @@ Two discs of radius 1 on the bottom wall, one resting on both (theta0 = 60 deg),
 kn = 1e10: isotropic compression to 1.5e5 dyn/cm, then shear at constant mean stress. The stress
 ratio of the shear stage at e1 - e2 = 1..5 % (read from steps.csv) must be within 0.0003 of the
 rigid exact solution (validation/three_discs/table2.py's exact_ratio, (K 19)-(K 21)), the bound
-the C test three_discs_case4 holds; the run's progress reaches the caller step by step. The same
+the C test validation_three_discs_case4 holds; the run's progress reaches the caller step by step. The same
 in two runs, the shear starting from the preparation's final state (initial_state: a Run), gives
 the same stress ratios (restarting is exact).
 """

@@ -10,6 +10,7 @@
 #     how fine the sub-steps it tried were.
 set -u
 gembem=$1; root=$(cd "$(dirname "$0")/../.." && pwd)
+source "$root/tests/csv.sh"
 out=$(mktemp -d); fail=0; passed=0
 ok() { echo "ok   $1"; passed=$((passed + 1)); }
 bad() { echo "FAIL $1"; fail=$((fail + 1)); }
@@ -18,29 +19,29 @@ scene() { # STEPS CAP [CUTBACKS] > yaml
       -e "s/max_iterations: 100000/max_iterations: $2${3:+\\n  cutbacks: $3}/" \
       "$root/validation/three_discs/case1.yaml"
 }
-last() { tail -n 1 "$1/steps.csv"; }
-col() { echo "$1" | cut -d, -f"$2"; }
+last() { csv_awk -v n="$2" '{ v = $col(n) } END { print v }' "$1/steps.csv"; } # RUN COLUMN: its value in the last row
 same_end() { # RUN_A RUN_B LABEL: width and height of the last rows to 1e-12 relative
-  awk -F, -v a="$(last "$1")" -v b="$(last "$2")" -v l="$3" 'BEGIN { split(a, x, ","); split(b, y, ",");
-    d = 0; for (c = 14; c <= 15; c++) { e = (x[c] - y[c]) / y[c]; if (e < 0) e = -e; if (e > d) d = e }
+  awk -v a="$(last "$1" width) $(last "$1" height)" -v b="$(last "$2" width) $(last "$2" height)" -v l="$3" '
+    BEGIN { split(a, x, " "); split(b, y, " ");
+    d = 0; for (c = 1; c <= 2; c++) { e = (x[c] - y[c]) / y[c]; if (e < 0) e = -e; if (e > d) d = e }
     printf "%s: width and height differ by %.3g (relative)\n", l, d; exit d > 1e-12 }'
 }
 for s in "2 100000" "4 100000"; do scene $s > "$out/split${s%% *}.yaml"; "$gembem" run "$out/split${s%% *}.yaml" -o "$out/split${s%% *}" --quiet || bad "split run $s"; done
-its2=$(tail -n 2 "$out/split2/steps.csv" | awk -F, '{ s += $10 } END { print s }')
+its2=$(csv_awk '{ print $col("iterations") }' "$out/split2/steps.csv" | tail -n 2 | awk '{ s += $1 } END { print s }')
 
 scene 1 39 > "$out/cap39.yaml"
 if "$gembem" run "$out/cap39.yaml" -o "$out/cap39" --quiet; then
-  r=$(last "$out/cap39")
-  [ "$(col "$r" 16)" = 2 ] && ok "cap 39: 2 sub-steps" || bad "cap 39: $(col "$r" 16) sub-steps, expected 2"
-  [ "$(col "$r" 10)" = $((39 + its2)) ] && ok "cap 39: $(col "$r" 10) iterations = 39 + the two-step run's $its2" \
-    || bad "cap 39: $(col "$r" 10) iterations, expected 39 + $its2"
+  r=$(last "$out/cap39" substeps); i=$(last "$out/cap39" iterations)
+  [ "$r" = 2 ] && ok "cap 39: 2 sub-steps" || bad "cap 39: $r sub-steps, expected 2"
+  [ "$i" = $((39 + its2)) ] && ok "cap 39: $i iterations = 39 + the two-step run's $its2" \
+    || bad "cap 39: $i iterations, expected 39 + $its2"
   same_end "$out/cap39" "$out/split2" "cap 39 against two steps" && ok "cap 39 ends where two steps end" || bad "cap 39 end"
 else bad "cap 39: the cut-back step did not converge"; fi
 
 scene 1 35 > "$out/cap35.yaml"
 if "$gembem" run "$out/cap35.yaml" -o "$out/cap35" --quiet; then
-  r=$(last "$out/cap35")
-  [ "$(col "$r" 16)" = 4 ] && ok "cap 35: 4 sub-steps" || bad "cap 35: $(col "$r" 16) sub-steps, expected 4"
+  r=$(last "$out/cap35" substeps)
+  [ "$r" = 4 ] && ok "cap 35: 4 sub-steps" || bad "cap 35: $r sub-steps, expected 4"
   same_end "$out/cap35" "$out/split4" "cap 35 against four steps" && ok "cap 35 ends where four steps end" || bad "cap 35 end"
 else bad "cap 35: the cut-back step did not converge"; fi
 

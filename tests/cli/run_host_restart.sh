@@ -22,6 +22,7 @@
 #    without a host, a scene without a host.
 set -u
 gembem=$1; root=$(cd "$(dirname "$0")/../.." && pwd)
+source "$root/tests/csv.sh"
 out=$(mktemp -d); fail=0; passed=0
 ok() { passed=$((passed + 1)); echo "ok   $1"; }
 bad() { fail=$((fail + 1)); echo "FAIL $1"; }
@@ -59,7 +60,7 @@ restart_case() { # name scene sed-for-all sed-for-stage1 sed-for-stage2 one-go-f
   "$gembem" run "$d/s1.yaml" -o "$d/stage1" --quiet || { bad "$name: stage 1 failed"; return; }
   "$gembem" run "$d/s2.yaml" -o "$d/stage2" --quiet || { bad "$name: the restart failed"; return; }
   # the grains held by two contacts or more in the one-go run (grain ids are 0-based rows)
-  awk -F, 'NR > 1 { c[$1]++; c[$2]++ } END { for (k in c) if (c[k] >= 2 && k ~ /^[0-9]+$/) print k }' \
+  csv_awk 'NR > 1 { c[$col("i")]++; c[$col("j")]++ } END { for (k in c) if (c[k] >= 2 && k ~ /^[0-9]+$/) print k }' \
     "$d/one/state_contacts.csv" > "$d/held"
   for f in one stage2; do
     awk -F, 'NR == FNR { held[$1] = 1; next } FNR == 1 || held[FNR - 2]' "$d/held" "$d/$f/state_grains.csv" > "$d/g_$f"
@@ -69,13 +70,18 @@ restart_case() { # name scene sed-for-all sed-for-stage1 sed-for-stage2 one-go-f
   cmp_csv "$d/one/state_host.csv" "$d/stage2/state_host.csv" 1e-9 "$name host" \
     && ok "$name: host cavity displacements equal (1e-9)" || bad "$name: host cavity displacements differ"
   # host_steps.csv: the one-go rows from step `first` on against the restart's, step numbers aside
-  awk -F, -v f="$first" 'NR == 1 || $1 >= f' "$d/one/host_steps.csv" | cut -d, -f2- > "$d/h1"
-  awk -F, 'NR == 1 || $1 >= 0' "$d/stage2/host_steps.csv" | cut -d, -f2- > "$d/h2"
+  no_step() { # FIRST FILE: its header and rows from step FIRST on, without the step column
+    csv_awk -v f="$1" 'NR == 1 || $col("step") >= f {
+      s = ""; sep = ""; for (k = 1; k <= NF; k++) if (k != col("step")) { s = s sep $k; sep = "," }
+      print s }' "$2"
+  }
+  no_step "$first" "$d/one/host_steps.csv" > "$d/h1"
+  no_step 0 "$d/stage2/host_steps.csv" > "$d/h2"
   cmp_csv "$d/h1" "$d/h2" 1e-9 "$name host_steps" "$floors" && ok "$name: host_steps.csv of stage 2 equal (1e-9)" \
     || bad "$name: host_steps.csv of stage 2 differs"
   local i1 i2
-  i1=$(awk -F, -v f="$first" 'NR > 1 && $1 > f { printf "%s ", $10 }' "$d/one/steps.csv")
-  i2=$(awk -F, 'NR > 1 && $1 > 0 { printf "%s ", $10 }' "$d/stage2/steps.csv")
+  i1=$(csv_awk -v f="$first" 'NR > 1 && $col("step") > f { printf "%s ", $col("iterations") }' "$d/one/steps.csv")
+  i2=$(csv_awk 'NR > 1 && $col("step") > 0 { printf "%s ", $col("iterations") }' "$d/stage2/steps.csv")
   paste -d' ' <(echo "$i1" | tr ' ' '\n' | sed '/^$/d') <(echo "$i2" | tr ' ' '\n' | sed '/^$/d') |
     awk '{ d = $1 - $2; if (d < 0) d = -d; if (d > 2) bad = 1 } END { exit bad }' \
     && [ "$(echo "$i1" | wc -w)" = "$(echo "$i2" | wc -w)" ] \
@@ -93,7 +99,7 @@ restart_case remote "$root/tests/hybrid/load_grains_remote.yaml" \
   's/grain_boundary: {kn: 1000, kt: 0, friction_deg: 0}/grain_boundary: {kn: 1000, kt: 500, friction_deg: 20}/' \
   's/host_load: {steps: 3,/host_load: {steps: 2,/' '/relax:/d; s/host_load: {steps: 3,/host_load: {steps: 1,/' 3 \
   ux:1e-4,uy:1e-4,fx:1,fy:1
-awk -F, 'NR > 1 && $2 ~ /^p/ && $4 != 0 { n++ } END { exit !(n > 0) }' "$out/remote/stage1/state_contacts.csv" \
+csv_awk 'NR > 1 && $col("j") ~ /^p/ && $col("pt") != 0 { n++ } END { exit !(n > 0) }' "$out/remote/stage1/state_contacts.csv" \
   && ok "remote: the state carries tangential forces on boundary particles" || bad "remote: no tangential force on a particle"
 # the scene's grains.max_overlap (0.7: the packing overlaps by up to 0.61) goes to its state, whose
 # grains the restart admits with it
@@ -114,7 +120,7 @@ refuse "another mesh" "$d/r_elements.yaml" \
 sed 's/left: {pressure: 0}/left: {traction: [0, 0]}/' "$d/s2.yaml" > "$d/r_kind.yaml"
 refuse "another condition" "$d/r_kind.yaml" \
   "stage1/state.yaml:[0-9]+:[0-9]+: host.boundary.left: the state's condition is pressure, the scene's traction"
-cp -r "$d/stage1" "$d/moved"; sed -i '3s/^\([0-9]*\),\([^,]*\),/\1,1.5,/' "$d/moved/state_host.csv"
+cp -r "$d/stage1" "$d/moved"; csv_awk 'NR == 3 { $col("x") = 1.5 } 1' OFS=, "$d/stage1/state_host.csv" > "$d/moved/state_host.csv"
 sed 's|stage1/state.yaml|moved/state.yaml|' "$d/s2.yaml" > "$d/r_moved.yaml"
 refuse "a particle off its element" "$d/r_moved.yaml" "moved/state_host.csv:3:[0-9]+: .*particle's centre on the element's midpoint"
 cp -r "$d/stage1" "$d/nohost"; sed -i '/^host:/,/^solver_state/{/^solver_state/!d}' "$d/nohost/state.yaml"
@@ -129,10 +135,13 @@ refuse "a scene without a host" "$d/r_noscenehost.yaml" "stage1/state.yaml:[0-9]
 #    state says; before, "lies outside the host's cavity"). The same state with one grain moved
 #    5 cm to the right, into the host: refused.
 cp -r "$d/stage1" "$d/down"
-awk -F, 'BEGIN { OFS = ","; CONVFMT = "%.17g" } NR > 1 { $2 -= 0.7 } 1' "$d/stage1/state_grains.csv" > "$d/down/state_grains.csv"
-awk -F, 'BEGIN { OFS = ","; CONVFMT = "%.17g" } NR > 1 { $3 -= 0.7; $5 -= 0.7 } 1' "$d/stage1/state_host.csv" > "$d/down/state_host.csv"
-lowest=$(awk -F, 'NR > 1 && (m == "" || $2 - $3 < m) { m = $2 - $3 } END { print m }' "$d/down/state_grains.csv")
-bottom=$(awk -F, 'NR > 1 && (m == "" || $3 - $5 < m) { m = $3 - $5 } END { print m }' "$d/down/state_host.csv")
+csv_awk 'BEGIN { OFS = ","; CONVFMT = "%.17g" } NR > 1 { $col("y") -= 0.7 } 1' "$d/stage1/state_grains.csv" > "$d/down/state_grains.csv"
+csv_awk 'BEGIN { OFS = ","; CONVFMT = "%.17g" } NR > 1 { $col("y") -= 0.7; $col("uy") -= 0.7 } 1' "$d/stage1/state_host.csv" \
+  > "$d/down/state_host.csv"
+lowest=$(csv_awk 'NR > 1 && (m == "" || $col("y") - $col("r") < m) { m = $col("y") - $col("r") } END { print m }' \
+  "$d/down/state_grains.csv")
+bottom=$(csv_awk 'NR > 1 && (m == "" || $col("y") - $col("uy") < m) { m = $col("y") - $col("uy") } END { print m }' \
+  "$d/down/state_host.csv")
 sed 's|stage1/state.yaml|down/state.yaml|' "$d/s2.yaml" | sed 's/max_iterations: [0-9]*/max_iterations: 50/' > "$d/r_down.yaml"
 msg=$("$gembem" run "$d/r_down.yaml" -o "$d/down_run" --quiet 2>&1 >/dev/null); code=$?
 if [ $code -ne 2 ] && ! grep -q "outside" <<< "$msg" && awk -v l="$lowest" -v b="$bottom" 'BEGIN { exit !(l < b) }'; then
@@ -141,7 +150,7 @@ else
   bad "moved cavity: exit $code, '$msg' (lowest grain edge $lowest, cavity's rest bottom $bottom)"
 fi
 cp -r "$d/down" "$d/into_host"
-awk -F, 'BEGIN { OFS = ","; CONVFMT = "%.17g" } NR == 2 { $1 += 5 } 1' "$d/down/state_grains.csv" > "$d/into_host/state_grains.csv"
+csv_awk 'BEGIN { OFS = ","; CONVFMT = "%.17g" } NR == 2 { $col("x") += 5 } 1' "$d/down/state_grains.csv" > "$d/into_host/state_grains.csv"
 sed 's|stage1/state.yaml|into_host/state.yaml|' "$d/s2.yaml" > "$d/r_into_host.yaml"
 refuse "a grain in the host after the cavity moved" "$d/r_into_host.yaml" "into_host/state_grains.csv:2:[0-9]+: grain 0 .* has its centre outside the host's cavity"
 

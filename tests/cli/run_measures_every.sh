@@ -9,6 +9,7 @@
 # 3. The default by size: 5000 grains get no fields/ (run_info.yaml says why), 2 grains every step.
 set -u
 gembem=$1; root=$(cd "$(dirname "$0")/../.." && pwd)
+source "$root/tests/csv.sh"
 out=$(mktemp -d); fail=0; passed=0
 ok() { passed=$((passed + 1)); echo "ok   $1"; }
 bad() { fail=$((fail + 1)); echo "FAIL $1"; }
@@ -21,7 +22,7 @@ expect_steps() { # dir what ext "expected steps"
   else bad "$(basename "$1"): fields/$2 at steps [$got], expected [$4]"; fi
 }
 expect_rows() { # dir count: localisation.csv has rows for steps 0 .. count-1, in order
-  local got; got=$(tail -n +2 "$1/localisation.csv" | cut -d, -f1 | tr '\n' ' ' | sed 's/ $//')
+  local got; got=$(csv_awk 'NR > 1 { print $col("step") }' "$1/localisation.csv" | tr '\n' ' ' | sed 's/ $//')
   local want; want=$(seq 0 $(($2 - 1)) | tr '\n' ' ' | sed 's/ $//')
   if [ "$got" = "$want" ]; then ok "$(basename "$1"): localisation.csv has a row for every step 0..$(($2 - 1))"
   else bad "$(basename "$1"): localisation.csv steps [$got], expected [$want]"; fi
@@ -32,11 +33,8 @@ same_rows() { # dir_a dir_b
 }
 
 # 1. Three discs, 110 steps.
-case1=$root/validation/three_discs/case1.yaml
-sed 's/snapshot_steps: \[10, 110\]/measures_every: 3/' "$case1" > "$out/every3.yaml"
-sed 's/snapshot_steps: \[10, 110\]/snapshot_every: 0/' "$case1" > "$out/every1.yaml"
-"$gembem" run "$out/every3.yaml" -o "$out/discs3" --quiet || bad "three discs, k = 3: did not run"
-"$gembem" run "$out/every1.yaml" -o "$out/discs1" --quiet || bad "three discs, default: did not run"
+"$gembem" run "$root/tests/cli/scenes/every3.yaml" -o "$out/discs3" --quiet || bad "three discs, k = 3: did not run"
+"$gembem" run "$root/tests/cli/scenes/every1.yaml" -o "$out/discs1" --quiet || bad "three discs, default: did not run"
 want=$(seq 0 3 110 | tr '\n' ' ' | sed 's/ $//')
 for w in grains:csv sliding:csv triangles:vtu; do expect_steps "$out/discs3" "${w%:*}" "${w#*:}" "$want"; done
 expect_steps "$out/discs1" grains csv "$(seq 0 110 | tr '\n' ' ' | sed 's/ $//')"

@@ -43,7 +43,7 @@ if [ -f run/checkpoint.txt ] && grep -q "^status: running" run/run_info.yaml; th
   refuse "a changed scene" "scene .*scene.yaml .*has changed since the run started" run --resume run
   cp scene.orig scene.yaml
   cp test_state/state_grains.csv grains.orig
-  awk -F, 'BEGIN { OFS = ","; CONVFMT = "%.17g" } NR == 2 { $1 += 1e-3 } 1' grains.orig > test_state/state_grains.csv
+  csv_awk 'BEGIN { OFS = ","; CONVFMT = "%.17g" } NR == 2 { $col("x") += 1e-3 } 1' grains.orig > test_state/state_grains.csv
   refuse "a changed grains file of the initial state" "has changed since the run started" run --resume run
   cp grains.orig test_state/state_grains.csv
   cp run/checkpoint.txt ck.orig

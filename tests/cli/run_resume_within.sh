@@ -63,8 +63,8 @@ within_case() {
 substep_resumes() {
   local k=$(awk '$2 != "0x1p+0"' "$out/$1/within" 2>/dev/null | wc -l)
   [ "$k" -ge 1 ] && ok "$1: $k resumes inside a cut-back sub-step" || bad "$1: no resume inside a cut-back sub-step"
-  k=$(awk -F'[, ]' 'FNR == NR { s[$1] = $16; next } $2 == "0x1p+0" && s[$1] > 1' "$out/$1/ref/run/steps.csv" \
-    "$out/$1/within" 2>/dev/null | wc -l)
+  k=$(csv_awk 'FNR == NR { s[$col("step")] = $col("substeps"); next } { split($0, w, " ") } w[2] == "0x1p+0" && s[w[1]] > 1' \
+    "$out/$1/ref/run/steps.csv" "$out/$1/within" 2>/dev/null | wc -l)
   [ "$k" -ge 1 ] && ok "$1: $k resumes inside an attempt that then failed and was undone" \
     || bad "$1: no resume inside an attempt that later failed"
 }

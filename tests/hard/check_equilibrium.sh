@@ -10,6 +10,7 @@
 set -euo pipefail
 gembem=$1 jammed=$2 out=$3
 source "$(dirname "$0")/path_scene.sh"
+source "$(dirname "$0")/../csv.sh"
 rm -rf "$out"; mkdir -p "$out"
 for method in reference global line_search; do
   path_scene $method "$jammed" "$out/$method.yaml" ", history: true" $'output: {contacts_every: 1}\n'
@@ -21,21 +22,22 @@ for method in reference global line_search; do
   else bad "$method: steps.csv's error columns differ from the state's"; fi
   # solver.history: one row per iteration that did not converge, the iterations of steps.csv, each
   # starting above the accuracy, the line search's length in (0, 1].
-  if awk -F, -v m=$method 'FNR == 1 { next } FILENAME ~ /steps/ { its += $10; next }
-      { rows++; if ($4 <= 100) bad = "a row at or below the accuracy";
-        if (m == "line_search" && !($8 >= 0 && $8 <= 1)) bad = "a length outside [0, 1]";
-        if (m == "reference" && ($7 != 0 || $8 != 0)) bad = "damping or length for the reference iteration" }
+  if csv_awk -v m=$method 'FNR == 1 { next } FILENAME ~ /steps/ { its += $col("iterations"); next }
+      { rows++; if ($col("max_fixing_force") <= 100) bad = "a row at or below the accuracy";
+        if (m == "line_search" && !($col("length") >= 0 && $col("length") <= 1)) bad = "a length outside [0, 1]";
+        if (m == "reference" && ($col("damping") != 0 || $col("length") != 0))
+          bad = "damping or length for the reference iteration" }
       END { if (rows != its) bad = rows " rows for " its " iterations"; if (bad) { print bad; exit 1 } }' \
       "$out/$method/steps.csv" "$out/$method/history.csv"; then ok "$method: history.csv has a row per iteration"
   else bad "$method: history.csv"; fi
 done
 # Negative controls: the checker must refuse these.
 cp -r "$out/global" "$out/moved"
-awk -F, 'NR == 2 { $1 = sprintf("%.17g", $1 + 1e-5) } 1' OFS=, "$out/global/state_grains.csv" > "$out/moved/state_grains.csv"
+csv_awk 'NR == 2 { $col("x") = sprintf("%.17g", $col("x") + 1e-5) } 1' OFS=, "$out/global/state_grains.csv" > "$out/moved/state_grains.csv"
 if /usr/bin/python3 "$check" "$out/moved" > "$out/moved.log"; then bad "a grain moved by 1e-5 cm passed"
 else ok "a grain moved by 1e-5 cm fails: $(grep -c FAIL "$out/moved.log") reasons"; fi
 cp -r "$out/global" "$out/slip"
-awk -F, 'NR > 1 && $2 ~ /^[0-9]+$/ && !done { $4 = sprintf("%.17g", 0.47 * $3); done = 1 } 1' OFS=, \
+csv_awk 'NR > 1 && $col("j") ~ /^[0-9]+$/ && !done { $col("pt") = sprintf("%.17g", 0.47 * $col("pn")); done = 1 } 1' OFS=, \
   "$out/global/state_contacts.csv" > "$out/slip/state_contacts.csv"
 if /usr/bin/python3 "$check" "$out/slip" > "$out/slip.log" || ! grep -q Coulomb "$out/slip.log"; then
   bad "a tangential force of 0.47 pn (tan 25 deg = 0.466) passed"

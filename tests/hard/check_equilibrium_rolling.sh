@@ -17,6 +17,7 @@
 set -euo pipefail
 gembem=$1 jammed=$2 out=$3
 source "$(dirname "$0")/path_scene.sh"
+source "$(dirname "$0")/../csv.sh"
 rm -rf "$out"; mkdir -p "$out"
 rolling="rolling: {kr: 2.5e6, eta: 0.1}"
 for method in reference global line_search; do
@@ -49,24 +50,23 @@ then ok "rolling moments on most contacts, some at their limit"; else bad "too f
 # Rolling changes the answer: the stresses of the same path without it differ.
 sed -e "s|, $rolling||" "$out/reference.yaml" > "$out/none.yaml"
 OPENBLAS_NUM_THREADS=1 "$gembem" run "$out/none.yaml" -o "$out/none" --quiet > /dev/null
-last_s() { awk -F, 'NR == 1 { for (k = 1; k <= NF; k++) c[$k] = k } END { print $c["s1"], $c["s2"] }' "$1/steps.csv"; }
+last_s() { csv_awk '{ s = $col("s1") " " $col("s2") } END { print s }' "$1/steps.csv"; }
 s_with=$(last_s "$out/reference"); s_none=$(last_s "$out/none")
 if [ "$s_with" != "$s_none" ] && ! head -1 "$out/none/state_contacts.csv" | grep -q mr; then
   ok "without the rolling key: no mr column, another path (s1 s2: $s_none against $s_with)"
 else bad "rolling did not change the run, or a scene without it writes mr"; fi
 # Negative controls: the checker must refuse these.
-col=$(head -1 "$out/global/state_contacts.csv" | tr , '\n' | grep -nx mr | cut -d: -f1)
 cp -r "$out/global" "$out/moment"
 # the grain-grain contact with the largest pn (its limit is far): mr + 500 dyn cm, 1e3 dyn of moment / r
-awk -F, -v c=$col 'NR == FNR { if (FNR > 1 && $2 ~ /^[0-9]+$/ && $3 > best) { best = $3; row = FNR }; next }
-  FNR == row { $c = sprintf("%.17g", $c + 500) } 1' OFS=, \
+csv_awk 'NR == FNR { if (FNR > 1 && $col("j") ~ /^[0-9]+$/ && $col("pn") > best) { best = $col("pn"); row = FNR }; next }
+  FNR == row { $col("mr") = sprintf("%.17g", $col("mr") + 500) } 1' OFS=, \
   "$out/global/state_contacts.csv" "$out/global/state_contacts.csv" > "$out/moment/state_contacts.csv"
 if /usr/bin/python3 "$check" "$out/moment" > "$out/moment.log" || ! grep -q "fixing force" "$out/moment.log" ||
    grep -q "rolling moment exceeds" "$out/moment.log"; then
   bad "a rolling moment changed by 500 dyn cm passed"
 else ok "a rolling moment changed by 500 dyn cm fails the moment balance: $(grep FAIL "$out/moment.log")"; fi
 cp -r "$out/global" "$out/limit"
-awk -F, -v c=$col 'NR > 1 && $2 ~ /^[0-9]+$/ && !done { $c = sprintf("%.17g", 0.05 * $3); done = 1 } 1' OFS=, \
+csv_awk 'NR > 1 && $col("j") ~ /^[0-9]+$/ && !done { $col("mr") = sprintf("%.17g", 0.05 * $col("pn")); done = 1 } 1' OFS=, \
   "$out/global/state_contacts.csv" > "$out/limit/state_contacts.csv"
 if /usr/bin/python3 "$check" "$out/limit" > "$out/limit.log" || ! grep -q "rolling moment exceeds" "$out/limit.log"; then
   bad "a rolling moment of 0.05 pn (the limit is at most 0.1 x 0.225 pn) passed"
@@ -75,7 +75,7 @@ else ok "a rolling moment past its limit fails"; fi
 sed -e '/^grains:/d' -e '/^box:/d' -e '/^loading:/,$d' "$out/reference.yaml" > "$out/restart.yaml"
 printf 'initial_state: reference/state.yaml\nloading:\n  - relax: {steps: 1}\n' >> "$out/restart.yaml"
 OPENBLAS_NUM_THREADS=1 "$gembem" run "$out/restart.yaml" -o "$out/restart" --quiet > /dev/null 2> "$out/restart.log"
-cols() { awk -F, 'NR == 1 { for (k = 1; k <= NF; k++) c[$k] = k } { print $c["i"], $c["j"], $c["pn"], $c["pt"], $c["mr"] }' "$1"; }
+cols() { csv_awk '{ print $col("i"), $col("j"), $col("pn"), $col("pt"), $col("mr") }' "$1"; }
 if [ "$(cols "$out/reference/state_contacts.csv")" = "$(cols "$out/restart/state_contacts.csv")" ] &&
    grep -q mr "$out/restart/state_contacts.csv"; then
   ok "a restart from the state reads every rolling moment back exactly"

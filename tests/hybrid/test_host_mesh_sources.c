@@ -1,7 +1,7 @@
 /* Hosts as gmsh users make them (issue 23): one body, the annulus 1 < r < 2 of meshes/annulus.geo
  * (its own size lc = 0.2), read by gb_scene_load three ways: the .geo with its own sizes (no
  * host.elements), the .msh files gmsh wrote from it (MSH 2.2 and 4.1, ASCII and binary, made at
- * test time by ctest host_msh_fixtures), and the .geo with element counts. Checks:
+ * test time by ctest hybrid_msh_fixtures), and the .geo with element counts. Checks:
  *  - a .msh is the mesh gmsh made of the .geo: the same elements (1e-12 of the radius; measured
  *    4.4e-16 in ASCII, 0 in binary) and the same condensed cavity stiffness K to round-off (1e-12
  *    of max |K|, measured 1.3e-15: BLAS differ, so not bitwise);

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""ctest paraview_render: the demo's hybrid run, reduced to 40 grains and 2 steps of the top, drawn
+"""ctest demo_paraview_render: the demo's hybrid run, reduced to 40 grains and 2 steps of the top, drawn
 by ParaView off-screen (tools/paraview_render.py by pvpython, on an Xvfb of its own), then checked
 against the run's own files, read here without ParaView (gembem's CSV and VTK readers):
 
@@ -65,7 +65,7 @@ def segment_distance(p, a, b):
 def main():
     pv, why = pvpython()
     if pv is None:
-        print(f"SKIP paraview_render: {why}")
+        print(f"SKIP demo_paraview_render: {why}")
         return SKIP
     out = tempfile.mkdtemp(prefix="gembem_paraview_")
     try:

@@ -22,7 +22,7 @@
  * Usage: bem_inclusion [--full]      (the ctest runs it without --full: N = 32 to 256; --full: to 512)
  *        bem_inclusion --reference   the reference alone, as CSV, for inclusion_reference.py (an
  *                                    independent solution by complex potentials, ctest
- *                                    bem_inclusion_reference) */
+ *                                    validation_bem_inclusion_reference) */
 #include <lapacke.h>
 
 #include "filling.h"

@@ -1,4 +1,4 @@
-/* Validation B, short version (ctest biaxial122_short): 20 constant mean stress shear steps of
+/* Validation B, short version (ctest validation_biaxial122_short): 20 constant mean stress shear steps of
  * the 122-disc packing in test_shear.yaml. At every step:
  *  - the iteration's energy books close: |W_iter + W_body - D - L - dE| <= 2 % of the work
  *    (W_iter: the walls' work as moved, D: Coulomb dissipation (K 28), L: energy absorbed by the
