@@ -3,6 +3,9 @@
  * its published parameters), in which each grain's mass is its own contact stiffness S (K 8): its
  * acceleration is its reference move (K 9-12 at alpha = 1), a time step of 1 is one Jacobi sweep of
  * the reference iteration, and servo walls follow at every step by their own move (K section 2.6).
+ * A hybrid scene's boundary particles move with the grains, each by its own stiffness (the host's
+ * and its contacts': particle_move): without them, the localisation sweep's line search stalled
+ * with what was left on the particles (4 of its 8 cases, session 10).
  * A Jacobi or Gauss-Seidel iteration needs a number of sweeps that grows like the square of the
  * packing's side to carry a disturbance across it; an inertial one, like the side. Every grain moves
  * at every step (a disturbance must travel), so a step costs one evaluation of every contact.
@@ -23,11 +26,27 @@
 enum { N_MIN = 5 };
 static const double F_INC = 1.1, F_DEC = 0.5, ALPHA_START = 0.1, F_ALPHA = 0.99, DT_MAX = 1.0, DT_START = 0.5;
 
+/* A boundary particle's acceleration (its move at alpha = 1, as a grain's by K 9): its force over
+ * its own stiffness, the host's (the symmetric part of K's diagonal block: K is not symmetric) plus
+ * its contacts' (bp_S); the global system's diagonal block for it (src/global/assemble.c). */
+static void particle_move(const gb_sim *sim, int e, double d[2])
+{
+    const double *K = sim->host->K.K, *Sp = &sim->bp_S[3 * e], *F = &sim->bp_F[2 * e];
+    size_t m = (size_t)sim->host->m, r = 2 * (size_t)e;
+    double k00 = K[r + r * m] + Sp[0], k11 = K[r + 1 + (r + 1) * m] + Sp[2];
+    double k01 = 0.5 * (K[r + 1 + r * m] + K[r + (r + 1) * m]) + Sp[1], det = k00 * k11 - k01 * k01;
+    d[0] = d[1] = 0;
+    if (!(det > 0) || !(k00 > 0)) return;
+    d[0] = -(k11 * F[0] - k01 * F[1]) / det;
+    d[1] = -(k00 * F[1] - k01 * F[0]) / det;
+}
+
 gb_status gb_gem_inertial(gb_sim *sim, const gb_wall_control *wc, double target, int max_steps, gb_error *err)
 {
-    int n = sim->n;
+    /* The DOFs: grains' (3 each), then the boundary particles' (2 each) unless the host is rigid. */
+    int n = sim->n, np = sim->host && !sim->scene->host.rigid ? sim->bp.n : 0, dofs = 3 * n + 2 * np;
     double *v = sim->inertial.velocity, *acc = sim->inertial.acceleration, inv_alpha = 1 / sim->scene->solver.alpha;
-    memset(v, 0, 3 * (size_t)n * sizeof(double));
+    memset(v, 0, (size_t)dofs * sizeof(double));
     memset(sim->dX, 0, 3 * (size_t)n * sizeof(double));
     if (sim->bp.n) memset(sim->bp.dx, 0, 2 * (size_t)sim->bp.n * sizeof(double));
     double dt = DT_START, mixing = ALPHA_START;
@@ -57,16 +76,24 @@ gb_status gb_gem_inertial(gb_sim *sim, const gb_wall_control *wc, double target,
             }
         }
         sim->relaxation -= 0.5 * work;
+        for (int e = 0; e < np; e++) {
+            const double *F = &sim->bp_F[2 * e];
+            balanced &= F[0] * F[0] + F[1] * F[1] <= a2;
+            particle_move(sim, e, &acc[3 * n + 2 * e]);
+            for (int q = 3 * n + 2 * e, k = 0; k < 2; q++, k++) {
+                power -= F[k] * v[q];
+                vv += v[q] * v[q], aa += acc[q] * acc[q];
+            }
+        }
         if (gb_gem_particle_merit(sim, merit) <= target) break;
-        /* what is left is on the boundary particles, which it does not move */
         if (balanced && wall_residual <= sim->accuracy) break;
         if (power > 0) { /* downhill: turn the velocity towards the force, and speed up */
             double mix = aa > 0 ? mixing * sqrt(vv / aa) : 0;
-            for (int q = 0; q < 3 * n; q++) v[q] = (1 - mixing) * v[q] + mix * acc[q];
+            for (int q = 0; q < dofs; q++) v[q] = (1 - mixing) * v[q] + mix * acc[q];
             if (++since_uphill > N_MIN) dt = fmin(F_INC * dt, DT_MAX), mixing *= F_ALPHA;
         } else if (step > 0) { /* uphill: stop, and go on more carefully */
             since_uphill = 0, dt *= F_DEC, mixing = ALPHA_START;
-            memset(v, 0, 3 * (size_t)n * sizeof(double));
+            memset(v, 0, (size_t)dofs * sizeof(double));
         }
         work = 0;
         for (int q = 0; q < 3 * n; q++) { /* semi-implicit Euler */
@@ -74,12 +101,17 @@ gb_status gb_gem_inertial(gb_sim *sim, const gb_wall_control *wc, double target,
             sim->dX[q] = dt * v[q];
             work += sim->F[q] * sim->dX[q];
         }
+        for (int q = 3 * n; q < dofs; q++) {
+            v[q] += dt * acc[q];
+            sim->bp.dx[q - 3 * n] = dt * v[q];
+        }
         sim->work.sweeps++;
         sim->relaxation -= 0.5 * work;
         if ((st = gb_gem_move_and_forces(sim, err))) break;
     }
     if (step == max_steps) sim->relaxation -= 0.5 * gb_gem_fixing_work(sim);
     memset(sim->dX, 0, 3 * (size_t)n * sizeof(double));
+    if (sim->bp.n) memset(sim->bp.dx, 0, 2 * (size_t)sim->bp.n * sizeof(double));
     memset(sim->wall_dx, 0, sizeof sim->wall_dx);
     sim->half_pending = 0;
     return st;
@@ -87,7 +119,7 @@ gb_status gb_gem_inertial(gb_sim *sim, const gb_wall_control *wc, double target,
 
 gb_status gb_gem_inertial_create(gb_sim *sim, gb_error *err)
 {
-    size_t k = 3 * (size_t)sim->n + 1;
+    size_t k = 3 * (size_t)sim->n + 2 * (size_t)sim->bp.n + 1;
     sim->inertial.velocity = malloc(k * sizeof(double));
     sim->inertial.acceleration = malloc(k * sizeof(double));
     if (sim->inertial.velocity && sim->inertial.acceleration) return GB_OK;

@@ -73,7 +73,7 @@ typedef struct {
 /* The iterations a step has done so far. */
 static inline long gb_sim_step_iterations(const gb_sim_step *c) { return c->iters + c->phase_iters + c->relax_iters; }
 
-/* The inertial smoother's scratch (src/gem/inertial.c): 3 per grain. */
+/* The inertial smoother's scratch (src/gem/inertial.c): 3 per grain, 2 per boundary particle. */
 typedef struct {
     double *velocity, *acceleration;
 } gb_inertial_scratch;
@@ -244,7 +244,7 @@ double gb_gem_merit(const gb_sim *sim, const unsigned char *in_system, double wa
 /* m plus the boundary particles' part of the merit. */
 double gb_gem_particle_merit(const gb_sim *sim, double m);
 
-/* The line-search iteration's smoother (src/gem/inertial.c): every grain moves, servo walls follow,
+/* The line-search iteration's smoother (src/gem/inertial.c): every grain and boundary particle moves, servo walls follow,
  * until the merit is at most `target`, after max_steps, or when every grain and wall is balanced.
  * The forces are current on return. */
 gb_status gb_gem_inertial(gb_sim *sim, const gb_wall_control *wc, double target, int max_steps, gb_error *err);

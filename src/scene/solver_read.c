@@ -47,7 +47,7 @@ gb_status gb_solver_section_read(gb_ymap *top, gb_solver_settings *sv, gb_error 
     gb_status st;
     *sv = gb_solver_defaults();
     if ((st = gb_ymap_map(top, "solver", 0, &m, err))) return st;
-    char method[32] = "reference", linear[32] = "", newton[32] = "damped";
+    char method[32] = "reference", linear[32] = "", newton[32] = "";
     if ((st = gb_ymap_string(&m, "method", 0, method, sizeof method, err)) ||
         (st = gb_ymap_string(&m, "linear", 0, linear, sizeof linear, err)) ||
         (st = gb_ymap_string(&m, "newton", 0, newton, sizeof newton, err)))
@@ -59,8 +59,13 @@ gb_status gb_solver_section_read(gb_ymap *top, gb_solver_settings *sv, gb_error 
         return gb_yaml_fail(m.doc, v, err, "solver.method: expected 'reference' (the GEM iteration) or 'global' "
                                            "(one sparse system), found '%s'", method);
     }
+    /* The defaults (docs/solvers.md): the line search on UMFPACK, which converged where the damped
+     * iteration did not (docs/solver/research.md); the damped iteration with CHOLMOD (symmetric:
+     * it cannot factor the line search's exact tangent) and PETSc (whose CG needs symmetry). */
     if (!strcmp(newton, "line_search")) sv->newton = GB_NEWTON_LINE_SEARCH;
-    else if (strcmp(newton, "damped")) {
+    else if (!newton[0] && sv->method == GB_METHOD_GLOBAL && (!linear[0] || !strcmp(linear, "umfpack")))
+        sv->newton = GB_NEWTON_LINE_SEARCH;
+    else if (newton[0] && strcmp(newton, "damped")) {
         gb_ymap_find(&m, "newton", 0, &v, err);
         return gb_yaml_fail(m.doc, v, err, "solver.newton: expected 'damped' or 'line_search', found '%s'", newton);
     }

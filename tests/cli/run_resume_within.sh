@@ -82,7 +82,7 @@ k=$(count "$out/cutback/in_write")
 
 within_case global_cutback 3 10 50 4
 substep_resumes global_cutback
-within_case hybrid_history 5 10 60 4
+within_case hybrid_history 1 12 25 4
 
 # A checkpoint of format 1 (before checkpoints within steps), its checksum made right: refused.
 d=$out/format1; mkdir -p "$d"; cd "$d"

@@ -106,7 +106,7 @@ def case_scene(name, kn, friction, mesh, cavity, nu, top_bc, a, max_it, dp, top_
         inc["top"] = [0, g6(top_p)]
     return gembem.Scene(units={"length": "cm", "force": "kgf"}, **host(kn, friction, mesh, cavity, nu, top_bc),
                         grains={"file": "grains.csv"},
-                        solver={"method": "global", "linear": "cholmod", "accuracy": g6(a), "max_iterations": max_it},
+                        solver={"method": "global", "accuracy": g6(a), "max_iterations": max_it},
                         loading=[{"relax": {"steps": 1}}, {"host_load": {"steps": STEPS_P, "increments": inc}},
                                  {"host_load": {"steps": steps, "increments": {"top": [g6(v) for v in du]}}}])
 
