@@ -34,16 +34,20 @@ typedef struct {
     int cap;
 } fire_state;
 
-/* Forces of the springs and the body force into f (2 per disc); returns the largest |F|. With
- * `full`, the report's contact counts, walls and largest overlap too. */
-static double forces(fire_state *S, double *f, gb_fire_report *rep, int full)
+/* Forces of the springs and the body force into f (2 per disc); returns the largest |F|, and in
+ * *power the discs' share of F.v (v: their velocities). With `full`, the report's contact counts,
+ * walls and largest overlap too. */
+static double forces(fire_state *S, double *f, const double *v, double *power, gb_fire_report *rep, int full)
 {
     const gb_fire_world *w = S->w;
     const gb_grain *g = w->g;
-    for (int i = 0; i < w->n; i++) {
-        double a = PI * g[i].r * g[i].r;
-        f[2 * i] = w->body[0] * a, f[2 * i + 1] = w->body[1] * a;
-    }
+    if (w->body[0] != 0 || w->body[1] != 0)
+        for (int i = 0; i < w->n; i++) {
+            double a = PI * g[i].r * g[i].r;
+            f[2 * i] = w->body[0] * a, f[2 * i + 1] = w->body[1] * a;
+        }
+    else
+        memset(f, 0, 2 * (size_t)w->n * sizeof(double));
     double virial = 0, wr = 0;
     if (full) {
         rep->contacts = rep->wall_contacts = 0, rep->largest_overlap = 0;
@@ -54,7 +58,10 @@ static double forces(fire_state *S, double *f, gb_fire_report *rep, int full)
         double dx = g[j].x - g[i].x, dy = g[j].y - g[i].y, sum = g[i].r + g[j].r, d2 = dx * dx + dy * dy;
         if (d2 >= sum * sum) continue;
         double dist = sqrt(d2), d = sum - dist, pn = w->kn_gg * d, fx = pn, fy = 0;
-        if (dist > 0) fx = pn * dx / dist, fy = pn * dy / dist; /* coincident centres: pushed along x */
+        if (dist > 0) { /* coincident centres: pushed along x */
+            double q = pn / dist;
+            fx = q * dx, fy = q * dy;
+        }
         f[2 * i] -= fx, f[2 * i + 1] -= fy;
         f[2 * j] += fx, f[2 * j + 1] += fy;
         virial += pn * dist, wr += pn * sum;
@@ -72,11 +79,13 @@ static double forces(fire_state *S, double *f, gb_fire_report *rep, int full)
         if (full && !GB_IS_PARTICLE(j)) rep->wall[-1 - j] += pn, rep->wall_contacts++;
     }
     rep->virial = virial, S->wr = wr;
-    double worst = 0;
+    double worst = 0, P = 0;
     for (int i = 0; i < w->n; i++) {
         double q = f[2 * i] * f[2 * i] + f[2 * i + 1] * f[2 * i + 1];
         if (q > worst || q != q) worst = q;
+        P += f[2 * i] * v[2 * i], P += f[2 * i + 1] * v[2 * i + 1];
     }
+    *power = P;
     return sqrt(worst);
 }
 
@@ -107,14 +116,13 @@ static gb_status rebuild(fire_state *S, gb_error *err)
     return GB_OK;
 }
 
-/* The list covers the pairs within its skin at the last rebuild: stale when displacements and the
- * radii's growth since then could close a gap of that skin. */
-static gb_status refresh(fire_state *S, gb_error *err)
+/* The list covers the pairs within its skin at the last rebuild: stale when displacements (drift2:
+ * the largest squared one of a disc, from the step's pass) and the radii's growth since then could
+ * close a gap of that skin. The walls and boundary particles are held. */
+static gb_status refresh(fire_state *S, double drift2, gb_error *err)
 {
-    double grain, wall;
-    gb_pairs_drift(&S->L, &S->world, &grain, &wall);
-    grain += fmax(0, S->scale - S->scale0) * S->r0max;
-    if (!gb_pairs_drift_stale(&S->L, grain, wall)) return GB_OK;
+    double grain = sqrt(drift2) + fmax(0, S->scale - S->scale0) * S->r0max;
+    if (!gb_pairs_drift_stale(&S->L, grain, 0)) return GB_OK;
     S->scale0 = S->scale;
     return rebuild(S, err);
 }
@@ -143,7 +151,7 @@ gb_status gb_fire_relax_scaled(const gb_fire_world *w, const gb_fire_goal *goal,
         rmin = fmin(rmin, w->g[i].r), c2 += 4 * w->g[i].r * w->g[i].r;
         if (w->r0) S.r0max = fmax(S.r0max, w->r0[i]);
     }
-    const double m = PI * rmin * rmin;
+    const double m = PI * rmin * rmin, inv_m = 1 / m;
     /* ln(scale) as the length c ln(scale), c^2 = sum (2 ri)^2: a unit move of it then strains the
      * contacts about as much as a unit move of a disc its own, so that it shares the discs' mass
      * and step (its force is -dH/dln(scale) / c). */
@@ -156,10 +164,11 @@ gb_status gb_fire_relax_scaled(const gb_fire_world *w, const gb_fire_goal *goal,
 
     const double dt_max = DT_MAX * sqrt(m / kn), dt_min = DT_MIN_MD / DT_MAX_MD * dt_max;
     const double target_ln = ramp ? log(goal->scale_to) : 0;
-    double dt = dt_max / DT_MAX_MD, alpha = A_START, worst = forces(&S, f, rep, 0), p = 0;
+    double P = 0, dt = dt_max / DT_MAX_MD, alpha = A_START, worst = forces(&S, f, v, &P, rep, 0), p = 0;
     long since_neg = 0, it = 0;
     for (;; it++) {
         if (free_scale) f[2 * n] = (2 * w->area * goal->stress - S.wr) / c;
+        P += f[2 * n] * v[2 * n];
         p = w->area > 0 ? rep->virial / (2 * w->area) : 0;
         if (!isfinite(worst) || !isfinite(p)) {
             st = gb_fail(err, GB_ENUMERIC, "the packing's forces became non-finite at FIRE iteration %ld", it);
@@ -173,8 +182,6 @@ gb_status gb_fire_relax_scaled(const gb_fire_world *w, const gb_fire_goal *goal,
             rep->capped = 1;
             break;
         }
-        double P = 0;
-        for (size_t k = 0; k < len; k++) P += f[k] * v[k];
         if (P > 0) {
             if (++since_neg > N_DELAY) dt = fmin(dt * F_INC, dt_max), alpha *= F_A;
         } else {
@@ -188,28 +195,40 @@ gb_status gb_fire_relax_scaled(const gb_fire_world *w, const gb_fire_goal *goal,
             if (free_scale) set_scale(&S, S.scale * exp(-0.5 * dt * v[2 * n] / c));
             memset(v, 0, len * sizeof(double));
         }
-        /* semi-implicit Euler: the velocity first, mixed towards the force while descending */
-        double vv = 0, ff = 0;
-        for (size_t k = 0; k < len; k++) v[k] += dt * f[k] / m, vv += v[k] * v[k], ff += f[k] * f[k];
-        if (P > 0 && ff > 0) {
-            double mix = alpha * sqrt(vv / ff);
-            for (size_t k = 0; k < len; k++) v[k] = (1 - alpha) * v[k] + mix * f[k];
-        }
-        for (int i = 0; i < n; i++) w->g[i].x += dt * v[2 * i], w->g[i].y += dt * v[2 * i + 1];
+        /* semi-implicit Euler: the velocity first, mixed towards the force while descending (in
+         * the pass over the discs below, with their move) */
+        double vv = 0, ff = 0, h = dt * inv_m;
+        for (size_t k = 0; k < len; k++) v[k] += h * f[k], vv += v[k] * v[k], ff += f[k] * f[k];
+        const double keep = P > 0 && ff > 0 ? 1 - alpha : 1, mix = P > 0 && ff > 0 ? alpha * sqrt(vv / ff) : 0;
+        double next = S.scale;
+        v[2 * n] = keep * v[2 * n] + mix * f[2 * n];
         if (free_scale) {
             /* the radii grow at most `ramp` in ln(scale) per step, so that no contact closes by
              * more than a small share of a radius between two force evaluations */
             double lim = goal->ramp * c / dt;
             v[2 * n] = fmax(-lim, fmin(lim, v[2 * n]));
-            set_scale(&S, S.scale * exp(dt * v[2 * n] / c));
+            next = S.scale * exp(dt * v[2 * n] / c);
         } else if (ramp && S.scale != goal->scale_to && !reached && worst <= goal->hold) {
             double step = target_ln - log(S.scale), grow = step > 0 ? goal->ramp : -goal->ramp;
-            set_scale(&S, fabs(step) <= goal->ramp ? goal->scale_to : S.scale * exp(grow));
+            next = fabs(step) <= goal->ramp ? goal->scale_to : S.scale * exp(grow);
         }
-        if ((st = refresh(&S, err))) goto done;
-        worst = forces(&S, f, rep, 0);
+        /* one pass over the discs: the velocity mixed, the move, the radii, the drift since the
+         * pair list's rebuild */
+        S.scale = next;
+        double drift2 = 0;
+        const double *x0 = S.L.x0, *r0 = w->r0;
+        gb_grain *g = w->g;
+        for (int i = 0; i < n; i++) {
+            v[2 * i] = keep * v[2 * i] + mix * f[2 * i], v[2 * i + 1] = keep * v[2 * i + 1] + mix * f[2 * i + 1];
+            g[i].x += dt * v[2 * i], g[i].y += dt * v[2 * i + 1];
+            if (r0) g[i].r = next * r0[i];
+            double dx = g[i].x - x0[2 * i], dy = g[i].y - x0[2 * i + 1], q = dx * dx + dy * dy;
+            if (q > drift2) drift2 = q;
+        }
+        if ((st = refresh(&S, drift2, err))) goto done;
+        worst = forces(&S, f, v, &P, rep, 0);
     }
-    worst = forces(&S, f, rep, 1);
+    worst = forces(&S, f, v, &P, rep, 1);
     rep->iterations = it;
     rep->rebuilds = S.L.rebuilds;
     rep->max_force = worst;
