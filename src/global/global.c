@@ -52,7 +52,7 @@ gb_status gb_global_create(gb_linear_kind kind, int n_grains, int n_particles, g
     cholmod_start(&gl->cc);
     gl->cc.print = 0;
     gl->cc.error_handler = NULL;
-    umfpack_di_defaults(gl->control);
+    umfpack_dl_defaults(gl->control);
     *out = gl;
     return GB_OK;
 }
@@ -61,8 +61,8 @@ static void free_factors(gb_global *gl)
 {
     if (gl->L) cholmod_free_factor(&gl->L, &gl->cc);
     if (gl->A) cholmod_free_sparse(&gl->A, &gl->cc);
-    if (gl->symbolic) umfpack_di_free_symbolic(&gl->symbolic);
-    if (gl->numeric) umfpack_di_free_numeric(&gl->numeric);
+    if (gl->symbolic) umfpack_dl_free_symbolic(&gl->symbolic);
+    if (gl->numeric) umfpack_dl_free_numeric(&gl->numeric);
 }
 
 void gb_global_free(gb_global *gl)
@@ -75,7 +75,7 @@ void gb_global_free(gb_global *gl)
     free(gl->pos_ij), free(gl->pos_ji), free(gl->wall_in_grain), free(gl->grain_in_wall), free(gl->touch);
     free(gl->Ap), free(gl->Ai), free(gl->Ax), free(gl->rhs), free(gl->x), free(gl->held);
     free(gl->S), free(gl->Sp), free(gl->kt), free(gl->slide), free(gl->stick), free(gl->unloading);
-    free(gl->resumed);
+    free(gl->resumed), free(gl->lp), free(gl->li);
     free(gl);
 }
 
@@ -208,8 +208,16 @@ static gb_status analyse(gb_global *gl, gb_error *err)
         gb_status st = gb_petsc_pattern(gl->petsc, n3, gl->Ap, gl->Ai, err);
         if (st) return st;
     } else {
-        int st = umfpack_di_symbolic(n3, n3, gl->Ap, gl->Ai, gl->Ax, &gl->symbolic, gl->control, gl->info);
-        if (st != UMFPACK_OK) return gb_fail(err, GB_ENUMERIC, "UMFPACK symbolic analysis failed (status %d)", st);
+        SuiteSparse_long *lp = realloc(gl->lp, ((size_t)n3 + 1) * sizeof *lp);
+        if (lp) gl->lp = lp;
+        SuiteSparse_long *li = lp ? realloc(gl->li, (size_t)gl->nnz * sizeof *li + 1) : NULL;
+        if (!li) return gb_fail(err, GB_ENOMEM, "UMFPACK: out of memory for the pattern of %d unknowns", n3);
+        gl->li = li;
+        for (int k = 0; k <= n3; k++) lp[k] = gl->Ap[k];
+        for (int k = 0; k < gl->nnz; k++) li[k] = gl->Ai[k];
+        SuiteSparse_long st = umfpack_dl_symbolic(n3, n3, lp, li, gl->Ax, &gl->symbolic, gl->control, gl->info);
+        if (st != UMFPACK_OK)
+            return gb_fail(err, GB_ENUMERIC, "UMFPACK symbolic analysis failed (status %ld)", (long)st);
     }
     gl->stats.analyses++;
     gl->stats.analyse += gb_clock_seconds() - t0;
@@ -263,19 +271,20 @@ static int factor_solve(gb_global *gl, gb_error *err, gb_status *st)
         gl->stats.factorisations++;
         return singular;
     } else {
-        if (gl->numeric) umfpack_di_free_numeric(&gl->numeric);
-        int s = umfpack_di_numeric(gl->Ap, gl->Ai, gl->Ax, gl->symbolic, &gl->numeric, gl->control, gl->info);
+        if (gl->numeric) umfpack_dl_free_numeric(&gl->numeric);
+        SuiteSparse_long s = umfpack_dl_numeric(gl->lp, gl->li, gl->Ax, gl->symbolic, &gl->numeric, gl->control, gl->info);
         gl->stats.factorisations++;
         gl->stats.factorise += gb_clock_seconds() - t0;
         if (s == UMFPACK_WARNING_singular_matrix) return 1;
         if (s != UMFPACK_OK) {
-            *st = gb_fail(err, GB_ENUMERIC, "UMFPACK factorisation failed (status %d)", s);
+            *st = gb_fail(err, GB_ENUMERIC, "UMFPACK factorisation failed (status %ld%s)", (long)s,
+                          s == UMFPACK_ERROR_out_of_memory ? ": out of memory" : "");
             return 0;
         }
         t0 = gb_clock_seconds();
-        s = umfpack_di_solve(UMFPACK_A, gl->Ap, gl->Ai, gl->Ax, gl->x, gl->rhs, gl->numeric, gl->control, gl->info);
+        s = umfpack_dl_solve(UMFPACK_A, gl->lp, gl->li, gl->Ax, gl->x, gl->rhs, gl->numeric, gl->control, gl->info);
         if (s != UMFPACK_OK) {
-            *st = gb_fail(err, GB_ENUMERIC, "UMFPACK solve failed (status %d)", s);
+            *st = gb_fail(err, GB_ENUMERIC, "UMFPACK solve failed (status %ld)", (long)s);
             return 0;
         }
     }
@@ -449,7 +458,7 @@ static gb_status solve_system(gb_global *gl, const gb_sim *sim, const gb_wall_co
 static void resume_unloading(gb_global *gl, const gb_pair_list *P)
 {
     if (gl->resumed_of == P->generation && P->n) memcpy(gl->unloading, gl->resumed, (size_t)P->n);
-    free(gl->resumed);
+    free(gl->resumed), free(gl->lp), free(gl->li);
     gl->resumed = NULL;
 }
 
@@ -460,7 +469,7 @@ const unsigned char *gb_global_unloading(const gb_global *gl, const gb_pair_list
 
 gb_status gb_global_resume(gb_global *gl, const gb_pair_list *P, const unsigned char *unloading, gb_error *err)
 {
-    free(gl->resumed);
+    free(gl->resumed), free(gl->lp), free(gl->li);
     gl->resumed = NULL;
     gl->pattern_of = -1;
     if (!unloading || !P->n) return GB_OK;

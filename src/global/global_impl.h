@@ -52,6 +52,10 @@ struct gb_global {
     cholmod_sparse *A;
     cholmod_factor *L;
     void *symbolic, *numeric;
+    /* UMFPACK's copy of the pattern in 64-bit indices: its int version (umfpack_di) failed "out of
+     * memory" on the 1e6-disc system with 4 GB in use and 11 GB free (its workspace is indexed
+     * by int), the long version (umfpack_dl) does not have that limit */
+    SuiteSparse_long *lp, *li;
     double control[UMFPACK_CONTROL], info[UMFPACK_INFO];
     gb_petsc *petsc;
     int dumped;               /* the first solution was written (GB_DUMP_FIRST_SOLVE, a test hook) */

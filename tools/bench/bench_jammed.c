@@ -80,7 +80,10 @@ int main(int argc, char **argv)
         it += n;
         contacts = gb_sim_contacts(sim, NULL, 0);
         contact_its += (double)n * contacts;
-        if (st) break;
+        if (st) {
+            fprintf(stderr, "  %s %d, load step %d: %s\n", method, sim->n, k, err.msg);
+            break;
+        }
         done++;
     }
     struct rusage ru;
