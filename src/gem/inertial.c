@@ -41,6 +41,20 @@ static void particle_move(const gb_sim *sim, int e, double d[2])
     d[1] = -(k00 * F[1] - k01 * F[0]) / det;
 }
 
+/* A body's move in a step, dt v, and at most `cap` (its radius times solver.max_move): the velocity
+ * is cut to match. Without the cap, and with the velocity of a grain that has lost its last contact
+ * kept, a grain pushed out of a squeeze coasted on, through the half-discs of a hybrid scene's
+ * cavity wall and out of the body (the localisation sweep, session 10: up to 9 grains a case, one
+ * 5.5 cm in a step). */
+static void advance(double *v, double *d, int dofs, double dt, double cap)
+{
+    double len2 = 0;
+    for (int k = 0; k < dofs; k++) d[k] = dt * v[k], len2 += d[k] * d[k];
+    if (!(len2 > cap * cap)) return;
+    double f = cap / sqrt(len2);
+    for (int k = 0; k < dofs; k++) d[k] *= f, v[k] *= f;
+}
+
 gb_status gb_gem_inertial(gb_sim *sim, const gb_wall_control *wc, double target, int max_steps, gb_error *err)
 {
     /* The DOFs: grains' (3 each), then the boundary particles' (2 each) unless the host is rigid. */
@@ -52,7 +66,7 @@ gb_status gb_gem_inertial(gb_sim *sim, const gb_wall_control *wc, double target,
     double dt = DT_START, mixing = ALPHA_START;
     int since_uphill = 0;
     gb_status st = GB_OK;
-    double a2 = sim->accuracy * sim->accuracy;
+    double a2 = sim->accuracy * sim->accuracy, max_move = sim->scene->solver.max_move;
     int step = 0;
     for (; step < max_steps; step++) {
         /* servo walls follow the grains, each step by their own stiffness (K section 2.6) */
@@ -96,14 +110,17 @@ gb_status gb_gem_inertial(gb_sim *sim, const gb_wall_control *wc, double target,
             memset(v, 0, (size_t)dofs * sizeof(double));
         }
         work = 0;
-        for (int q = 0; q < 3 * n; q++) { /* semi-implicit Euler */
-            v[q] += dt * acc[q];
-            sim->dX[q] = dt * v[q];
-            work += sim->F[q] * sim->dX[q];
+        for (int i = 0; i < n; i++) { /* semi-implicit Euler */
+            double *vi = &v[3 * i], *d = &sim->dX[3 * i];
+            for (int k = 0; k < 3; k++) vi[k] += dt * acc[3 * i + k];
+            if (!sim->nc[i] && !sim->body[2 * i] && !sim->body[2 * i + 1]) vi[0] = vi[1] = vi[2] = 0;
+            advance(vi, d, 3, dt, max_move * sim->g[i].r);
+            for (int k = 0; k < 3; k++) work += sim->F[3 * i + k] * d[k];
         }
-        for (int q = 3 * n; q < dofs; q++) {
-            v[q] += dt * acc[q];
-            sim->bp.dx[q - 3 * n] = dt * v[q];
+        for (int e = 0; e < np; e++) {
+            double *vp = &v[3 * n + 2 * e];
+            for (int k = 0; k < 2; k++) vp[k] += dt * acc[3 * n + 2 * e + k];
+            advance(vp, &sim->bp.dx[2 * e], 2, dt, max_move * sim->bp.r[e]);
         }
         sim->work.sweeps++;
         sim->relaxation -= 0.5 * work;

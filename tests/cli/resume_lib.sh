@@ -51,6 +51,9 @@ kill_case() { # NAME SCENE ATTEMPTS MAX_N [TIMED_DELAYS]
   for attempt in $(seq 1 "$attempts"); do  # killed at the n-th write
     draw "$maxn"
     if [ -f run/checkpoint.txt ]; then
+      # a resume's first write is its own line in run_info.yaml: killed there, it is not a resume
+      # that run_info can list (the checks count the resumes that ran)
+      [ "$n" -eq 1 ] && n=2
       on_resume; start --resume run; rc=$?; resumes=$((resumes + 1))
     else start "$scene" -o run --overwrite; rc=$?; starts=$((starts + 1)); fi
     [ $rc -eq 137 ] && { kills=$((kills + 1)); on_kill; }
