@@ -5,12 +5,12 @@
  * lowers the merit (the squared fixing forces) tenfold. If it does not, the step has met contacts
  * that the tangent of the start does not know (grains that must rearrange: contacts that open,
  * close or slide), and the inertial smoother, which sees them at every step (src/gem/inertial.c:
- * FIRE on the reference moves, K 9-12), moves the grains, boundary particles and servo walls until the merit has fallen
- * to a millionth, from the whole step's end if that lowered the merit at all, else from the
- * iteration's start. Newton resumes from there. Only where the smoother does not lower the merit
- * either (in its 5 000 steps) is the step shortened by
- * backtracking (every trial from the iteration's start, so that the merit along the direction is a
- * function of the length alone: the incremental law, K 6 and 13, sees one move).
+ * FIRE on the reference moves, K 9-12), moves the grains, boundary particles and servo walls until
+ * the merit has fallen to a millionth, from the whole step's end if that lowered the merit at all,
+ * else from the iteration's start. Newton resumes from there. Only where the smoother does not
+ * lower the merit either (in its 5 000 steps) is the step shortened by backtracking (every trial
+ * from the iteration's start, so that the merit along the direction is a function of the length
+ * alone: the incremental law, K 6 and 13, sees one move).
  * Measured (docs/solver/research.md, sixth round; 1e3 path from one start): the smoother to a
  * thousandth of the merit 58 Newton iterations, to a millionth 30; the jammed 1e4 path 58 -> 39.
  * Until session 9 the smoother was Gauss-Seidel sweeps of the unbalanced grains, and a packing far
@@ -103,8 +103,8 @@ gb_status gb_gem_line_search_move(gb_sim *sim, const gb_wall_control *wc, double
     sim->ls_length = 0;
     if ((st = gb_gem_inertial(sim, wc, SMOOTHED * m0, MAX_SMOOTHING, err))) return st;
     if (gb_gem_merit(sim, sim->in_system, gb_gem_wall_moves(sim, wc)) <= (1 - ARMIJO) * m0) return GB_OK;
-    /* The smoother did not lower the merit either: a shorter Newton step, and if none lowers the merit, the smoother's configuration
-     * after all (the same smoothing again). */
+    /* The smoother did not lower the merit either: a shorter Newton step, and if none lowers the
+     * merit, the smoother's configuration after all (the same smoothing again). */
     gb_sim_state_restore(sim, &sim->trial);
     gb_gem_forces(sim);
     if ((st = backtrack(sim, wc, m0, dir, 1, MAX_HALVINGS, &found, err)) || found) return st;

@@ -36,7 +36,8 @@ void gb_gem_add_contact(gb_sim *sim, const gb_pair *p, double sign)
     int rolling = mat->kr > 0; /* without, no divisions: they are a good part of a contact's cost */
     double ri = sim->g[i].r, *F = &sim->F[3 * i], *S = &sim->S[6 * i];
     F[0] += fx, F[1] += fy, F[2] += rolling ? pt - mr / ri : pt;
-    S[0] += s00, S[1] += s01, S[2] += -kt * s, S[3] += s11, S[4] += kt * c, S[5] += rolling ? kt + kr / (ri * ri) : kt;
+    S[0] += s00, S[1] += s01, S[2] += -kt * s, S[3] += s11, S[4] += kt * c;
+    S[5] += rolling ? kt + kr / (ri * ri) : kt;
     sim->nc[i] += count;
     if (sign > 0) {
         double *one = &sim->one[GB_ONE * i];
@@ -48,7 +49,8 @@ void gb_gem_add_contact(gb_sim *sim, const gb_pair *p, double sign)
         double rj = sim->g[j].r;
         F = &sim->F[3 * j], S = &sim->S[6 * j];
         F[0] -= fx, F[1] -= fy, F[2] += rolling ? pt + mr / rj : pt;
-        S[0] += s00, S[1] += s01, S[2] += kt * s, S[3] += s11, S[4] += -kt * c, S[5] += rolling ? kt + kr / (rj * rj) : kt;
+        S[0] += s00, S[1] += s01, S[2] += kt * s, S[3] += s11, S[4] += -kt * c;
+        S[5] += rolling ? kt + kr / (rj * rj) : kt;
         sim->nc[j] += count;
         if (sign > 0) {
             double *one = &sim->one[GB_ONE * j];

@@ -198,7 +198,8 @@ static inline double gb_gem_grain_work(const gb_sim *sim, int i)
  * contact counts (and one[] if sign > 0), a particle's force and stiffness, a wall's. */
 void gb_gem_add_contact(gb_sim *sim, const gb_pair *p, double sign);
 
-/* Moves grains by dX and walls by wall_dx simultaneously, then updates every contact. */
+/* Moves grains by dX, boundary particles by bp.dx and walls by wall_dx simultaneously, then updates
+ * every contact. */
 gb_status gb_gem_apply_moves(gb_sim *sim, gb_error *err);
 /* gb_gem_apply_moves then gb_gem_forces, bitwise the same, in one pass over the pairs: each contact
  * is updated and added to its ends at once (the smoother's step, src/gem/inertial.c, is mostly
@@ -244,8 +245,9 @@ double gb_gem_merit(const gb_sim *sim, const unsigned char *in_system, double wa
 /* m plus the boundary particles' part of the merit. */
 double gb_gem_particle_merit(const gb_sim *sim, double m);
 
-/* The line-search iteration's smoother (src/gem/inertial.c): every grain and boundary particle moves, servo walls follow,
- * until the merit is at most `target`, after max_steps, or when every grain and wall is balanced.
+/* The line-search iteration's smoother (src/gem/inertial.c): every grain and boundary particle
+ * moves, servo walls follow, until the merit is at most `target`, after max_steps, or when every
+ * grain, particle and wall is balanced.
  * The forces are current on return. */
 gb_status gb_gem_inertial(gb_sim *sim, const gb_wall_control *wc, double target, int max_steps, gb_error *err);
 gb_status gb_gem_inertial_create(gb_sim *sim, gb_error *err);

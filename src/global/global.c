@@ -210,7 +210,7 @@ static gb_status analyse(gb_global *gl, gb_error *err)
     } else {
         SuiteSparse_long *lp = realloc(gl->lp, ((size_t)n3 + 1) * sizeof *lp);
         if (lp) gl->lp = lp;
-        SuiteSparse_long *li = lp ? realloc(gl->li, (size_t)gl->nnz * sizeof *li + 1) : NULL;
+        SuiteSparse_long *li = lp ? realloc(gl->li, ((size_t)gl->nnz + 1) * sizeof *li) : NULL;
         if (!li) return gb_fail(err, GB_ENOMEM, "UMFPACK: out of memory for the pattern of %d unknowns", n3);
         gl->li = li;
         for (int k = 0; k <= n3; k++) lp[k] = gl->Ap[k];
@@ -272,7 +272,8 @@ static int factor_solve(gb_global *gl, gb_error *err, gb_status *st)
         return singular;
     } else {
         if (gl->numeric) umfpack_dl_free_numeric(&gl->numeric);
-        SuiteSparse_long s = umfpack_dl_numeric(gl->lp, gl->li, gl->Ax, gl->symbolic, &gl->numeric, gl->control, gl->info);
+        SuiteSparse_long s =
+            umfpack_dl_numeric(gl->lp, gl->li, gl->Ax, gl->symbolic, &gl->numeric, gl->control, gl->info);
         gl->stats.factorisations++;
         gl->stats.factorise += gb_clock_seconds() - t0;
         if (s == UMFPACK_WARNING_singular_matrix) return 1;

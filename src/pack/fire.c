@@ -216,13 +216,13 @@ gb_status gb_fire_relax_scaled(const gb_fire_world *w, const gb_fire_goal *goal,
          * pair list's rebuild */
         S.scale = next;
         double drift2 = 0;
-        const double *x0 = S.L.x0, *r0 = w->r0;
+        const double *r0 = w->r0;
         gb_grain *g = w->g;
         for (int i = 0; i < n; i++) {
             v[2 * i] = keep * v[2 * i] + mix * f[2 * i], v[2 * i + 1] = keep * v[2 * i + 1] + mix * f[2 * i + 1];
             g[i].x += dt * v[2 * i], g[i].y += dt * v[2 * i + 1];
             if (r0) g[i].r = next * r0[i];
-            double dx = g[i].x - x0[2 * i], dy = g[i].y - x0[2 * i + 1], q = dx * dx + dy * dy;
+            double q = gb_pairs_grain_drift2(&S.L, &S.world, i);
             if (q > drift2) drift2 = q;
         }
         if ((st = refresh(&S, drift2, err))) goto done;
