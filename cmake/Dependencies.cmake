@@ -13,7 +13,7 @@ find_library(UMFPACK_LIBRARY umfpack REQUIRED)
 add_library(gb_suitesparse INTERFACE)
 target_include_directories(gb_suitesparse INTERFACE ${SUITESPARSE_INCLUDE_DIR})
 target_link_libraries(gb_suitesparse INTERFACE ${UMFPACK_LIBRARY} ${CHOLMOD_LIBRARY})
-# CHOLMOD runs OpenMP loops (libgomp); src/global/global.c serialises them (see cholmod_serial).
+# CHOLMOD runs OpenMP loops (libgomp); src/solver/global.c serialises them (see cholmod_serial).
 find_package(OpenMP REQUIRED COMPONENTS C)
 target_link_libraries(gb_suitesparse INTERFACE OpenMP::OpenMP_C)
 
@@ -28,7 +28,7 @@ target_link_libraries(gb_gmsh INTERFACE ${GMSH_LIBRARY})
 set(GB_PYTHON /usr/bin/python3 CACHE FILEPATH "Python with matplotlib, for figures")
 
 # PETSc (optional, libpetsc-real-dev; tools/setup.sh --with-petsc): the distributed linear solver of
-# solver.linear: petsc (src/global/linear_petsc.c). AUTO builds it when the pkg-config file is found.
+# solver.linear: petsc (src/solver/linear_petsc.c). AUTO builds it when the pkg-config file is found.
 set(GB_WITH_PETSC AUTO CACHE STRING "Build the PETSc linear solver: AUTO, ON or OFF")
 set_property(CACHE GB_WITH_PETSC PROPERTY STRINGS AUTO ON OFF)
 set(GB_HAVE_PETSC OFF)

@@ -22,7 +22,7 @@ typedef struct {
     long trials;          /* moves tried: Newton iterations plus rejected moves (damped: retried with more
                              damping; line_search: shorter trial lengths) */
     long factorisations;  /* of the sparse tangent */
-    long sweeps;          /* line_search: steps of its inertial smoother (src/gem/inertial.c), where Newton's
+    long sweeps;          /* line_search: steps of its inertial smoother (src/solver/inertial.c), where Newton's
                              whole step did not lower the merit tenfold */
 } gb_solver_work;
 

@@ -93,11 +93,14 @@ typedef struct {
 } gb_solver_settings;
 
 enum { GB_METHOD_REFERENCE = 0, GB_METHOD_GLOBAL = 1 };
+/* The global solver's linear solver. PETSC: the matrix distributed over the MPI ranks
+ * (src/solver/linear_petsc.h); symmetric with newton: damped. */
+typedef enum { GB_LINEAR_CHOLMOD = 0, GB_LINEAR_UMFPACK = 1, GB_LINEAR_PETSC = 2 } gb_linear_kind;
 /* The global solver's iteration. DAMPED: Levenberg-Marquardt damping with non-monotone acceptance
- * (src/gem/relax.c). LINE_SEARCH: the exact tangent (sliding contacts and the contacts' rotation
+ * (src/solver/damped.c). LINE_SEARCH: the exact tangent (sliding contacts and the contacts' rotation
  * included, unsymmetric: UMFPACK); Newton's whole step where it lowers the merit tenfold, else an
- * inertial smoother (FIRE on the reference moves, src/gem/inertial.c) and, where that fails,
- * backtracking; an affine predictor for strain steps (src/gem/line_search.c). */
+ * inertial smoother (FIRE on the reference moves, src/solver/inertial.c) and, where that fails,
+ * backtracking; an affine predictor for strain steps (src/solver/line_search.c). */
 enum { GB_NEWTON_DAMPED = 0, GB_NEWTON_LINE_SEARCH = 1 };
 
 /* An elastic host with a cavity that holds the grains (the hybrid method, docs/method.md sections 9-11). */

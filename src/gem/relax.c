@@ -297,17 +297,6 @@ gb_status gb_gem_move_and_forces(gb_sim *sim, gb_error *err)
     return GB_OK;
 }
 
-/* Levenberg-Marquardt damping of the global solver: its range, and the trials per iteration. The
- * damping is a relative diagonal shift, so mu = 10 already shortens a step to about 1/11 of the
- * per-grain (Jacobi) move; at the cap a move is taken whatever the merit. With a cap of 1e4 a load
- * step whose packing must rearrange (a grain rolling out of a squeeze: its force grows before it
- * falls) crept by 1e-8 cm per iteration and stalled. The 8 cases of the localisation sweep
- * (validation/localisation, CHOLMOD): with the cap at 1e4, 2 converge over their whole loading,
- * also with load-step cut-backs (src/gem/sim.c); with the cap at 10 and cut-backs, 7. */
-static const double MU_MIN = 1e-8, MU_MAX = 10;
-enum { MAX_TRIALS = 6, LM_STALL = 50 };
-static const double LM_STALL_FACTOR = 0.5;
-
 /* The merit of a configuration: squared fixing forces of the grains that the system moves (those
  * with two contacts or more before the move: the others move by the reference cases, whatever the
  * damping), of the boundary particles, and the walls' residual. */
@@ -326,78 +315,7 @@ double gb_gem_particle_merit(const gb_sim *sim, double m)
     return m;
 }
 
-/* Which grains the global system moves (sim->in_system): those with two contacts or more, and
- * (GB_IN_SYSTEM_NO_ROTATION) a grain without body force with a single contact. Its only zero mode
- * is rolling over its neighbour (with kt) or sliding along it (without), which its contact force
- * cannot drive, so the system holds its rotation and moves it with its neighbours (its contact
- * with kt in K even if it slides: the grain must unload it; a frictionless one with a tangent
- * stiffness of its own, see tangents() in src/global/global.c), where moved apart by the reference
- * case c) it would trade its force back and forth with the system every iteration (a two-cycle
- * that decays by a few per cent per iteration). With a body force it rolls: case c). With rolling
- * resistance (docs/method.md section 3.1) on its contact the rolling spring holds that mode, with
- * or without a body force: the grain moves with the system, its rotation too (GB_IN_SYSTEM_SINGLE),
- * its contact's kt and kr kept in K even at their limits (its block stays regular). */
-static void mark_system(gb_sim *sim)
-{
-    for (int i = 0; i < sim->n; i++) sim->in_system[i] = sim->nc[i] >= 2 ? GB_IN_SYSTEM : 0;
-    for (int k = 0; k < sim->pairs.n; k++) {
-        const gb_pair *p = &sim->pairs.p[k];
-        if (!(p->d > 0)) continue;
-        int ends[2] = {p->i, p->j >= 0 ? p->j : -1};
-        for (int e = 0; e < 2; e++) {
-            int i = ends[e];
-            if (i < 0 || sim->nc[i] != 1) continue;
-            if (gb_sim_material(sim, p->j)->kr > 0) sim->in_system[i] = GB_IN_SYSTEM_SINGLE;
-            else if (sim->body[2 * i] == 0 && sim->body[2 * i + 1] == 0) sim->in_system[i] = GB_IN_SYSTEM_NO_ROTATION;
-        }
-    }
-}
-
-/* A move of the global solver: the damped Newton step is taken if it lowers the merit; if not,
- * the configuration is restored and the step retried with eight times the damping. Far from
- * equilibrium (a packing that rearranges) the steps shorten towards the reference iteration's, near
- * it they lengthen to Newton's. */
-static gb_status global_move(gb_sim *sim, const gb_wall_control *wc, double wall_residual, gb_error *err)
-{
-    mark_system(sim);
-    /* Non-monotone acceptance (Grippo, Lampariello and Lucidi): a move may raise the merit above
-     * the current one but not above the largest of the last few accepted, so that grains moved by
-     * the reference cases (a grain rolling over a neighbour) cannot lock the damping. */
-    double m0 = gb_gem_merit(sim, sim->in_system, wall_residual), bound = m0;
-    for (int k = 0; k < LM_MEMORY; k++) bound = fmax(bound, sim->lm_history[k]);
-    /* A cycle: a grain whose contact switches between sticking and sliding (the sliding contact has
-     * no tangential stiffness in K) can alternate between two configurations whose merits both
-     * stay under the non-monotone bound, slowly or never converging (seen in the localisation
-     * study's cavity packings). When no move of the last LM_STALL has brought the merit below
-     * LM_STALL_FACTOR times the lowest merit of the load step so far, the acceptance turns monotone
-     * (the damping grows until a move lowers the merit) until one does. A Newton phase halves the
-     * merit in a few moves and never meets this. */
-    if (!(m0 >= sim->lm_best * LM_STALL_FACTOR)) sim->lm_since = 0;
-    else sim->lm_since++;
-    if (m0 < sim->lm_best) sim->lm_best = m0;
-    if (sim->lm_since > LM_STALL) bound = m0;
-    gb_status st = gb_sim_state_save(sim, &sim->trial, err);
-    if (st) return st;
-    if (sim->scene->solver.newton == GB_NEWTON_LINE_SEARCH) return gb_gem_line_search_move(sim, wc, m0, err);
-    for (int trial = 0;; trial++) {
-        sim->work.trials++;
-        if ((st = gb_global_moves(sim->global, sim, wc, sim->lm_mu, err))) return st;
-        sim->relaxation -= 0.5 * gb_gem_fixing_work(sim);
-        sim->half_pending = 1;
-        if ((st = gb_gem_move_and_forces(sim, err))) return st;
-        double m1 = gb_gem_merit(sim, sim->in_system, gb_gem_wall_moves(sim, wc));
-        if (m1 <= bound || trial == MAX_TRIALS || sim->lm_mu >= MU_MAX) {
-            sim->lm_mu = fmax(sim->lm_mu / 4, MU_MIN);
-            sim->lm_history[sim->lm_next++ % LM_MEMORY] = m0;
-            return GB_OK;
-        }
-        gb_sim_state_restore(sim, &sim->trial);
-        gb_gem_forces(sim);
-        sim->lm_mu = fmin(sim->lm_mu * 8, MU_MAX);
-    }
-}
-
-/* NaN propagates: a force that became NaN is the largest (gb_gem_iterate stops on it). */
+/* NaN propagates: a force that became NaN is the largest (gb_gem_balance stops on it). */
 static double nan_max(double a, double b) { return a > b || a != a ? a : b; }
 
 double gb_gem_largest_grain_force2(const gb_sim *sim)
@@ -415,8 +333,8 @@ double gb_gem_largest_particle_force2(const gb_sim *sim)
     return max2;
 }
 
-int gb_gem_iterate(gb_sim *sim, const gb_wall_control *wc, double *max_force, double *wall_residual,
-                   gb_error *err, gb_status *st)
+int gb_gem_balance(gb_sim *sim, const gb_wall_control *wc, double *max_force, double *wall_residual, gb_error *err,
+                   gb_status *st)
 {
     *st = GB_OK;
     gb_gem_forces(sim);
@@ -437,53 +355,13 @@ int gb_gem_iterate(gb_sim *sim, const gb_wall_control *wc, double *max_force, do
         memset(sim->wall_dx, 0, sizeof sim->wall_dx);
         return 1;
     }
-    /* Every grain's move from the same configuration, then all at once (order-independent). */
-    if (sim->global) {
-        *st = global_move(sim, wc, *wall_residual, err);
-        return 0;
-    }
-    for (int i = 0; i < sim->n; i++) gb_gem_grain_move(sim, i, &sim->dX[3 * i]);
-    sim->relaxation -= 0.5 * gb_gem_fixing_work(sim);
-    sim->half_pending = 1;
-    *st = gb_gem_apply_moves(sim, err);
     return 0;
 }
 
-/* solver.history: what iteration `it` of this relaxation did. */
-static void report_iteration(gb_sim *sim, long it, double max_force, double wall_residual)
+gb_status gb_gem_reference_move(gb_sim *sim, gb_error *err)
 {
-    double move = 0;
-    for (int i = 0; i < sim->n; i++) move = fmax(move, hypot(sim->dX[3 * i], sim->dX[3 * i + 1]) / sim->g[i].r);
-    int global = sim->global != NULL, line_search = sim->scene->solver.newton == GB_NEWTON_LINE_SEARCH;
-    gb_iteration_report r = {sim->pos.step + 1, sim->attempt, it, max_force, wall_residual, move,
-                             global && !line_search ? sim->lm_mu : 0, global && line_search ? sim->ls_length : 0};
-    sim->on_iteration(sim->on_iteration_user, &r);
-}
-
-gb_status gb_gem_relax(gb_sim *sim, const gb_wall_control *wc, long cap, long *iterations, double *max_force,
-                       double *wall_residual, gb_error *err)
-{
-    long it = sim->cur.relax_iters;
-    if (!it) {
-        sim->attempt++;
-        sim->lm_best = INFINITY, sim->lm_since = 0; /* the stall detection of global_move, per load step */
-    }
-    gb_status st = GB_OK;
-    for (; it <= cap; it++) {
-        if (gb_gem_iterate(sim, wc, max_force, wall_residual, err, &st) || st) break;
-        if (sim->on_iteration) report_iteration(sim, it + 1, *max_force, *wall_residual);
-        sim->cur.relax_iters = it + 1;
-        /* not after the last iteration allowed: its failed attempt is undone at once */
-        if (it < cap && sim->on_within_step && (st = sim->on_within_step(sim->on_within_step_user, sim, err))) {
-            it++;
-            break;
-        }
-    }
-    sim->cur.relax_iters = 0;
-    if (it > cap) {
-        *iterations += cap;
-        return GB_ENOCONV;
-    }
-    *iterations += it;
-    return st;
+    for (int i = 0; i < sim->n; i++) gb_gem_grain_move(sim, i, &sim->dX[3 * i]);
+    sim->relaxation -= 0.5 * gb_gem_fixing_work(sim);
+    sim->half_pending = 1;
+    return gb_gem_apply_moves(sim, err);
 }

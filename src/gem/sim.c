@@ -1,5 +1,5 @@
-/* A granular simulation: set-up from a scene and read access to its state (its loading program:
- * program.c). */
+/* A granular problem: set-up from a scene and read access to its state (its solver: src/solver;
+ * its loading program: src/run/program.c). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -11,7 +11,7 @@
 static const double PI = 3.14159265358979323846;
 
 
-void gb_sim_free(gb_sim *sim)
+void gb_gem_problem_free(gb_sim *sim)
 {
     if (!sim) return;
     free(sim->g);
@@ -21,14 +21,9 @@ void gb_sim_free(gb_sim *sim)
     free(sim->dX);
     free(sim->nc);
     free(sim->one);
-    free(sim->in_system);
-    free(sim->ls_dir);
-    gb_gem_inertial_free(sim);
     gb_sim_state_free(&sim->saved);
-    gb_sim_state_free(&sim->trial);
     gb_sim_state_free(&sim->substep);
     gb_pairs_free(&sim->pairs);
-    gb_global_free(sim->global);
     gb_host_free(sim->host);
     gb_particles_free(&sim->bp);
     free(sim->bp_F), free(sim->bp_S);
@@ -102,7 +97,7 @@ static double memory_need(const gb_scene *scene)
     return per_grain * scene->n_grains;
 }
 
-gb_status gb_sim_create(const gb_scene *scene, gb_sim **out, gb_error *err)
+gb_status gb_gem_problem_create(const gb_scene *scene, gb_sim **out, gb_error *err)
 {
     *out = NULL;
     double need = memory_need(scene), have = gb_memory_physical();
@@ -124,9 +119,8 @@ gb_status gb_sim_create(const gb_scene *scene, gb_sim **out, gb_error *err)
     sim->dX = calloc(nn * 3, sizeof(double));
     sim->nc = calloc(nn, sizeof(int));
     sim->one = calloc(nn * GB_ONE, sizeof(double));
-    sim->in_system = calloc(nn, 1);
-    if (!sim->g || !sim->body || !sim->F || !sim->S || !sim->dX || !sim->nc || !sim->one || !sim->in_system) {
-        gb_sim_free(sim);
+    if (!sim->g || !sim->body || !sim->F || !sim->S || !sim->dX || !sim->nc || !sim->one) {
+        gb_gem_problem_free(sim);
         return gb_fail(err, GB_ENOMEM, "out of memory for %d grains", n);
     }
     memcpy(sim->g, scene->grains, (size_t)n * sizeof *sim->g);
@@ -140,13 +134,6 @@ gb_status gb_sim_create(const gb_scene *scene, gb_sim **out, gb_error *err)
     sim->box = scene->box;
     sim->ref_width = scene->box.right - scene->box.left;
     sim->ref_height = scene->box.top - scene->box.bottom;
-    sim->lm_mu = 1e-6;
-    sim->lm_best = INFINITY; /* reset at every load step (gb_gem_relax): a restart needs no more */
-    if (scene->solver_state.present) { /* a restart continues the damping of the run it continues */
-        sim->lm_mu = scene->solver_state.mu;
-        memcpy(sim->lm_history, scene->solver_state.history, sizeof sim->lm_history);
-        sim->lm_next = scene->solver_state.next;
-    }
     sim->tan_phi_gg = tan(scene->grain_grain.friction_deg * PI / 180);
     sim->tan_phi_gw = tan(scene->grain_wall.friction_deg * PI / 180);
     sim->tan_phi_gb = tan(scene->grain_boundary.friction_deg * PI / 180);
@@ -159,7 +146,7 @@ gb_status gb_sim_create(const gb_scene *scene, gb_sim **out, gb_error *err)
     gb_status st = scene->host.present ? add_host(sim, err) : GB_OK;
     if (!st) st = gb_pairs_rebuild(&sim->pairs, &sim->world, err);
     if (st) {
-        gb_sim_free(sim);
+        gb_gem_problem_free(sim);
         return st;
     }
     /* Initial contacts: pn from the overlap, pt from the scene. */
@@ -175,7 +162,7 @@ gb_status gb_sim_create(const gb_scene *scene, gb_sim **out, gb_error *err)
         if (j >= 0 && j < i) i = ci->j, j = ci->i;
         gb_pair *p = find_pair(&sim->pairs, i, j);
         if (!p || !(p->d > 0)) {
-            gb_sim_free(sim);
+            gb_gem_problem_free(sim);
             if (GB_IS_PARTICLE(ci->j))
                 return gb_fail(err, GB_EINPUT, "initial contact %d (grain %d, boundary particle p%d) does not overlap",
                                c, ci->i, GB_PARTICLE_OF(ci->j));
@@ -186,22 +173,6 @@ gb_status gb_sim_create(const gb_scene *scene, gb_sim **out, gb_error *err)
         p->pt = ci->pt;
         p->mr = i == ci->i ? ci->mr : -ci->mr;
         if (!(gb_sim_material(sim, p->j)->kr > 0)) p->mr = 0; /* rolling switched off: no moment */
-    }
-    if (scene->solver.method == GB_METHOD_GLOBAL &&
-        (st = gb_global_create((gb_linear_kind)scene->solver.linear, n, sim->bp.n, &sim->global, err))) {
-        gb_sim_free(sim);
-        return st;
-    }
-    if (scene->solver.method == GB_METHOD_GLOBAL && scene->solver.newton == GB_NEWTON_LINE_SEARCH) {
-        sim->ls_dir = malloc((3 * nn + 2 * (size_t)sim->bp.n + 2 * GB_N_WALLS) * sizeof(double));
-        if (!sim->ls_dir) {
-            gb_sim_free(sim);
-            return gb_fail(err, GB_ENOMEM, "out of memory for %d grains", n);
-        }
-        if ((st = gb_gem_inertial_create(sim, err))) {
-            gb_sim_free(sim);
-            return st;
-        }
     }
     /* the accuracy of a relaxation run outside gb_sim_run (benchmarks, tests): as for a first step */
     gb_sim_resolve_accuracy(sim, sim->pairs.p, sim->pairs.n, 0);

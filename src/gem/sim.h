@@ -1,10 +1,10 @@
-/* The state of a granular simulation (private to src/gem). */
+/* The problem of a granular simulation: grains, contacts and their law, walls or an elastic host,
+ * loads, accounts (private to the library; solved by src/solver, driven by src/run/program.c). */
 #ifndef GB_SIM_H
 #define GB_SIM_H
 
 #include "contact/pairs.h"
 #include "gembem/gem.h"
-#include "global/global.h"
 #include "hybrid/host.h"
 
 /* How the walls move during one relaxation. */
@@ -49,7 +49,7 @@ typedef struct {
     int resume;       /* set by a checkpoint: gb_sim_run continues after this step */
 } gb_sim_position;
 
-/* Where the load step in progress stands (src/gem/program.c), all that a checkpoint within it must
+/* Where the load step in progress stands (src/run/program.c), all that a checkpoint within it must
  * hold beyond the states (src/io/checkpoint.c). A step's sub-step applies its loads (phase LOAD),
  * then relaxes (RELAX), and a shear_mean_stress step relaxes a second time under mean-stress control
  * (MEAN): a sub-step resumed past LOAD does not apply its loads again. */
@@ -66,17 +66,12 @@ typedef struct {
     long iters;           /* iterations of the step's attempts that ended */
     gb_step_phase phase;
     long phase_iters;     /* iterations of the sub-step's relaxations that ended (shear_mean_stress: the first) */
-    long relax_iters;     /* iterations done by the relaxation in progress (gb_gem_relax); 0 outside one */
+    long relax_iters;     /* iterations done by the relaxation in progress (gb_solver_relax); 0 outside one */
     gb_solver_work work0; /* the solver's work counters of this process at the step's start */
 } gb_sim_step;
 
 /* The iterations a step has done so far. */
 static inline long gb_sim_step_iterations(const gb_sim_step *c) { return c->iters + c->phase_iters + c->relax_iters; }
-
-/* The inertial smoother's scratch (src/gem/inertial.c): 3 per grain, 2 per boundary particle. */
-typedef struct {
-    double *velocity, *acceleration;
-} gb_inertial_scratch;
 
 /* What one load step leaves for the next (the state, the accounts, the damping), and within a step
  * what an iteration leaves for the next and for the rest of the step (sim->cur, the last move, the
@@ -99,7 +94,7 @@ struct gb_sim {
     gb_host *host;      /* the elastic host of a hybrid scene, or NULL */
     double *bp_F;       /* fixing force of each boundary particle: host force K u + f0 minus contacts */
     double *bp_S;       /* its contact stiffness: s00 s01 s11 */
-    gb_global *global;  /* the global solver, when the scene asks for it */
+    struct gb_solver *solver; /* how it is solved (src/solver: the only code that looks inside) */
     gb_box box;
     double wall_force[GB_N_WALLS]; /* normal force of the grains on each wall (compression +) */
     double wall_k[GB_N_WALLS];     /* wall contact stiffness: sum of kn of its contacts */
@@ -108,29 +103,9 @@ struct gb_sim {
     double tan_phi_gg, tan_phi_gw, tan_phi_gb;
     /* The last converged state (the start of the current step), restored when a step fails. */
     gb_sim_state saved;
-    /* The state before a trial move of the global solver. */
-    gb_sim_state trial;
     /* The start of a sub-step of a load step being cut back (gb_sim_run). */
     gb_sim_state substep;
-    double lm_mu;        /* Levenberg-Marquardt damping of the global solver */
-#define LM_MEMORY GB_SOLVER_HISTORY
-/* sim->in_system: 0 moved by the reference cases, else by the global system, its rotation held or not */
-#define GB_IN_SYSTEM 1
-#define GB_IN_SYSTEM_NO_ROTATION 2
-/* a grain with a single contact that has rolling resistance: in the system with its rotation (the
- * rolling spring holds it), the contact's kt and kr kept in K (mark_system) */
-#define GB_IN_SYSTEM_SINGLE 3
-    double lm_history[LM_MEMORY]; /* merits before the last accepted moves */
-    double lm_best;               /* lowest merit of the load step (stall detection) */
-    long lm_since;                /* moves since one brought it below LM_STALL_FACTOR x lm_best */
-    int lm_next;
-    unsigned char *in_system; /* per grain: moved by the global system in this iteration (GB_IN_SYSTEM...) */
-    long iterations_total;
-    gb_solver_work work;      /* the global solver's work since the start of the process: only its changes within
-                                 a load step are reported, so a resumed run needs none of it */
-    double *ls_dir;           /* solver.newton: line_search: the Newton direction of grains, particles, walls */
-    gb_inertial_scratch inertial; /* and its smoother's (src/gem/inertial.c) */
-    double ls_length;         /* the share of Newton's step the last line search took (0: the smoother) */
+    long iterations_total;    /* of the load steps completed */
     gb_iteration_fn on_iteration; /* solver.history */
     void *on_iteration_user;
     int attempt;              /* relaxations in the current load step */
@@ -152,14 +127,17 @@ struct gb_sim {
     void *on_within_step_user;
 };
 
-/* The global solver's work since the start of the process (all zero for the reference iteration),
- * and a difference of two such counts. */
-gb_solver_work gb_sim_solver_work(const gb_sim *sim);
+/* The difference of two counts of the solver's work. */
 static inline gb_solver_work gb_solver_work_minus(gb_solver_work a, gb_solver_work b)
 {
     gb_solver_work d = {a.trials - b.trials, a.factorisations - b.factorisations, a.sweeps - b.sweeps};
     return d;
 }
+
+/* The problem of a scene: grains, contacts, walls or host, with no solver (sim->solver NULL):
+ * gb_sim_create (src/run/simulation.c) adds it. */
+gb_status gb_gem_problem_create(const gb_scene *scene, gb_sim **out, gb_error *err);
+void gb_gem_problem_free(gb_sim *sim);
 
 gb_status gb_sim_state_save(const gb_sim *sim, gb_sim_state *st, gb_error *err);
 void gb_sim_state_restore(gb_sim *sim, const gb_sim_state *st);
@@ -170,11 +148,14 @@ void gb_sim_state_free(gb_sim_state *st);
 double gb_gem_largest_grain_force2(const gb_sim *sim);
 double gb_gem_largest_particle_force2(const gb_sim *sim);
 
-/* One iteration of the reference method (K section 2.5, Fig. 1): F and S of every grain, then,
- * unless converged, the simultaneous moves of grains and walls and the contact update.
- * Returns 1 when converged (every |F| <= a and the walls at their targets), 0 otherwise. */
-int gb_gem_iterate(gb_sim *sim, const gb_wall_control *wc, double *max_force, double *wall_residual,
-                   gb_error *err, gb_status *st);
+/* The start of an iteration (K section 2.5, Fig. 1): F and S of every grain, the largest fixing
+ * force and the walls' moves (sim->wall_dx) and residual. Returns 1 when converged (every |F| <= a
+ * and the walls at their targets: K 14), 0 otherwise (and sets *st if a force is not finite). */
+int gb_gem_balance(gb_sim *sim, const gb_wall_control *wc, double *max_force, double *wall_residual, gb_error *err,
+                   gb_status *st);
+/* The rest of an iteration of the reference method: the simultaneous moves of the grains by their
+ * cases (gb_gem_grain_move) and of the walls, and the contact update. */
+gb_status gb_gem_reference_move(gb_sim *sim, gb_error *err);
 
 /* The material and friction of the contact type of a pair's second side j. */
 const gb_material *gb_sim_material(const gb_sim *sim, int j);
@@ -202,16 +183,9 @@ void gb_gem_add_contact(gb_sim *sim, const gb_pair *p, double sign);
  * every contact. */
 gb_status gb_gem_apply_moves(gb_sim *sim, gb_error *err);
 /* gb_gem_apply_moves then gb_gem_forces, bitwise the same, in one pass over the pairs: each contact
- * is updated and added to its ends at once (the smoother's step, src/gem/inertial.c, is mostly
+ * is updated and added to its ends at once (the smoother's step, src/solver/inertial.c, is mostly
  * this pass). */
 gb_status gb_gem_move_and_forces(gb_sim *sim, gb_error *err);
-
-/* Relaxes to equilibrium under the wall control, at most `cap` iterations. A relaxation resumed from
- * a checkpoint within it (sim->cur.relax_iters > 0) goes on from there: its iterations, attempt and
- * the global solver's stall detection are those it had. Between two iterations (not after the last
- * allowed one) it calls sim->on_within_step, whose error ends it. */
-gb_status gb_gem_relax(gb_sim *sim, const gb_wall_control *wc, long cap, long *iterations, double *max_force,
-                       double *wall_residual, gb_error *err);
 
 /* The mean normal force of the pairs among p[0..n) whose overlap is more than the rounding of
  * coordinates of magnitude `extent` (0 without). */
@@ -239,21 +213,10 @@ void gb_gem_grain_move(const gb_sim *sim, int i, double dX[3]);
 double gb_gem_fixing_work(const gb_sim *sim);
 /* The walls' moves of an iteration (sim->wall_dx); returns their residual (0 for fixed walls). */
 double gb_gem_wall_moves(gb_sim *sim, const gb_wall_control *wc);
-/* The global solver's merit: squared fixing forces of the grains in the system, of the boundary
- * particles, and the walls' residual squared. */
+/* The global solver's merit (src/solver): squared fixing forces of the grains in the system, of the
+ * boundary particles, and the walls' residual squared. */
 double gb_gem_merit(const gb_sim *sim, const unsigned char *in_system, double wall_residual);
 /* m plus the boundary particles' part of the merit. */
 double gb_gem_particle_merit(const gb_sim *sim, double m);
-
-/* The line-search iteration's smoother (src/gem/inertial.c): every grain and boundary particle
- * moves, servo walls follow, until the merit is at most `target`, after max_steps, or when every
- * grain, particle and wall is balanced.
- * The forces are current on return. */
-gb_status gb_gem_inertial(gb_sim *sim, const gb_wall_control *wc, double target, int max_steps, gb_error *err);
-gb_status gb_gem_inertial_create(gb_sim *sim, gb_error *err);
-void gb_gem_inertial_free(gb_sim *sim);
-/* One iteration of the global solver with solver.newton: line_search (src/gem/line_search.c), from
- * the configuration saved in sim->trial, whose merit is m0. */
-gb_status gb_gem_line_search_move(gb_sim *sim, const gb_wall_control *wc, double m0, gb_error *err);
 
 #endif

@@ -11,8 +11,8 @@
 #include <string.h>
 
 #include "core/number.h"
-#include "gem/sim.h"
 #include "io/file_util.h"
+#include "solver/solver.h"
 
 /* 2: the load step in progress (a checkpoint within a step) and its states; 1 (before): between
  * steps only, not read. */
@@ -49,7 +49,8 @@ gb_status gb_checkpoint_scene_hash(const gb_sim *sim, uint64_t *hash, gb_error *
     }
     double box[4] = {sim->box.left, sim->box.right, sim->box.bottom, sim->box.top};
     h = fnv(h, box, sizeof box);
-    h = fnv(h, &sim->lm_mu, sizeof sim->lm_mu), h = fnv(h, sim->lm_history, sizeof sim->lm_history);
+    const gb_solver_damping *d = gb_solver_damping_of(sim);
+    h = fnv(h, &d->mu, sizeof d->mu), h = fnv(h, d->history, sizeof d->history);
     if (sim->host) {
         const gb_host *hw = sim->host;
         h = fnv(h, &hw->mesh.n, sizeof hw->mesh.n);
@@ -121,9 +122,10 @@ static void put_step(FILE *f, const gb_sim *sim)
             c->h, c->finest);
     fprintf(f, "progress %d %d %ld %d %ld %ld %d\n", c->cuts, c->substeps, c->iters, (int)c->phase, c->phase_iters,
             c->relax_iters, sim->attempt);
-    gb_solver_work w = gb_solver_work_minus(gb_sim_solver_work(sim), c->work0);
+    gb_solver_work w = gb_solver_work_minus(gb_solver_work_done(sim), c->work0);
     fprintf(f, "work %ld %ld %ld\n", w.trials, w.factorisations, w.sweeps);
-    fprintf(f, "stall %ld %a\n", sim->lm_since, sim->lm_best); /* "inf" before the solver's first move */
+    const gb_solver_damping *d = gb_solver_damping_of(sim);
+    fprintf(f, "stall %ld %a\n", d->since, d->best); /* "inf" before the solver's first move */
     fprintf(f, "moves\n");
     for (int i = 0; i < sim->n; i++) fprintf(f, "%a %a %a\n", sim->dX[3 * i], sim->dX[3 * i + 1], sim->dX[3 * i + 2]);
     put_state(f, "step_start", sim, &sim->saved, NULL);
@@ -146,13 +148,14 @@ static gb_status write_body(FILE *f, const gb_sim *sim, const gb_checkpoint_meta
     double ref[2] = {sim->ref_width, sim->ref_height}, acc[3] = {sim->work_walls, sim->work_body, sim->energy0};
     put(f, "reference", ref, 2);
     put(f, "accounts", acc, 3);
-    fprintf(f, "counters %ld %d\n", sim->iterations_total, sim->lm_next);
-    put(f, "damping", &sim->lm_mu, 1);
-    put(f, "damping_history", sim->lm_history, LM_MEMORY);
+    const gb_solver_damping *d = gb_solver_damping_of(sim);
+    fprintf(f, "counters %ld %d\n", sim->iterations_total, d->next);
+    put(f, "damping", &d->mu, 1);
+    put(f, "damping_history", d->history, GB_SOLVER_HISTORY);
     gb_sim_state now;
     memset(&now, 0, sizeof now);
     gb_status st = gb_sim_state_save(sim, &now, err);
-    if (!st) put_state(f, "current", sim, &now, sim->global ? gb_global_unloading(sim->global, &sim->pairs) : NULL);
+    if (!st) put_state(f, "current", sim, &now, gb_solver_unloading(sim));
     gb_sim_state_free(&now);
     fprintf(f, "within_step %d\n", sim->cur.active);
     if (!st && sim->cur.active) put_step(f, sim);
@@ -361,17 +364,15 @@ gb_status gb_checkpoint_read_meta(const char *dir, gb_checkpoint_meta *m, gb_err
 /* What a checkpoint holds beyond its header, read whole before any of it goes into the simulation. */
 typedef struct {
     gb_sim_position pos;
-    double work_walls, work_body, energy0, ref[2], lm_mu, lm_history[LM_MEMORY];
+    double work_walls, work_body, energy0, ref[2];
     long iterations_total;
-    int lm_next;
+    gb_solver_damping damping; /* since and best: within a step only */
     gb_sim_state now;          /* the current state */
     unsigned char *unloading;  /* the global solver's flags of its pairs, or NULL */
     /* a checkpoint within a step: the step (sim->cur), the solver's work in it, the last move, the
      * step's and the sub-step's start (sim->saved, sim->substep) */
     gb_sim_step cur;
     int attempt;
-    long lm_since;
-    double lm_best;
     gb_solver_work work;
     double *dX;
     gb_sim_state start, sub;
@@ -469,10 +470,10 @@ static void get_step(cursor *c, const gb_sim *sim, extras *x)
     x->work.factorisations = (long)integer(c, 0, (long long)1 << 62);
     x->work.sweeps = (long)integer(c, 0, (long long)1 << 62);
     expect(c, "stall");
-    x->lm_since = (long)integer(c, 0, (long long)1 << 62);
+    x->damping.since = (long)integer(c, 0, (long long)1 << 62);
     const char *w = word(c);
-    if (!strcmp(w, "inf")) x->lm_best = INFINITY;
-    else if (gb_parse_finite(w, &x->lm_best) != GB_NUMBER_OK) fail(c, "expected a number or inf");
+    if (!strcmp(w, "inf")) x->damping.best = INFINITY;
+    else if (gb_parse_finite(w, &x->damping.best) != GB_NUMBER_OK) fail(c, "expected a number or inf");
     expect(c, "moves");
     x->dX = alloc(c, 3 * (size_t)sim->n, sizeof(double));
     for (int k = 0; k < 3 * sim->n && !c->st; k++) x->dX[k] = num(c);
@@ -500,9 +501,9 @@ static void read_body(cursor *c, const gb_sim *sim, extras *x)
     x->work_walls = acc[0], x->work_body = acc[1], x->energy0 = acc[2];
     expect(c, "counters");
     x->iterations_total = (long)integer(c, 0, (long long)1 << 62);
-    x->lm_next = (int)integer(c, 0, 2147483647LL);
-    nums(c, "damping", &x->lm_mu, 1);
-    nums(c, "damping_history", x->lm_history, LM_MEMORY);
+    x->damping.next = (int)integer(c, 0, 2147483647LL);
+    nums(c, "damping", &x->damping.mu, 1);
+    nums(c, "damping_history", x->damping.history, GB_SOLVER_HISTORY);
     get_state(c, sim, "current", &x->now, &x->gen[0], &x->unloading);
     expect(c, "within_step");
     if (integer(c, 0, 1)) get_step(c, sim, x);
@@ -554,19 +555,20 @@ gb_status gb_checkpoint_read(const char *dir, gb_sim *sim, uint64_t scene_hash, 
         sim->work_walls = x.work_walls, sim->work_body = x.work_body, sim->energy0 = x.energy0;
         sim->ref_width = x.ref[0], sim->ref_height = x.ref[1];
         sim->iterations_total = x.iterations_total;
-        sim->lm_mu = x.lm_mu, sim->lm_next = x.lm_next;
-        memcpy(sim->lm_history, x.lm_history, sizeof sim->lm_history);
+        gb_solver_damping *d = gb_solver_damping_of(sim);
+        d->mu = x.damping.mu, d->next = x.damping.next;
+        memcpy(d->history, x.damping.history, sizeof d->history);
         sim->pos = x.pos;
         if (x.cur.active) {
             gb_sim_state_free(&sim->saved), sim->saved = x.start, memset(&x.start, 0, sizeof x.start);
             if (x.cur.cuts > 0) gb_sim_state_free(&sim->substep), sim->substep = x.sub, memset(&x.sub, 0, sizeof x.sub);
             memcpy(sim->dX, x.dX, 3 * (size_t)sim->n * sizeof(double));
-            x.cur.work0 = gb_solver_work_minus(gb_sim_solver_work(sim), x.work);
+            x.cur.work0 = gb_solver_work_minus(gb_solver_work_done(sim), x.work);
             sim->cur = x.cur;
-            sim->attempt = x.attempt, sim->lm_since = x.lm_since, sim->lm_best = x.lm_best;
+            sim->attempt = x.attempt, d->since = x.damping.since, d->best = x.damping.best;
         }
         /* for the restored pair list (its count and rebuilds) */
-        if (sim->global) c.st = gb_global_resume(sim->global, &sim->pairs, x.unloading, err);
+        c.st = gb_solver_resume(sim, x.unloading, err);
     }
     gb_sim_state_free(&x.now), gb_sim_state_free(&x.start), gb_sim_state_free(&x.sub);
     free(x.unloading), free(x.dX);

@@ -11,7 +11,7 @@
 #include "core/clock.h"
 #include "gem/sim.h"
 #include "gembem/measure.h"
-#include "hybrid/host_output.h"
+#include "io/host_output.h"
 #include "gembem/output.h"
 #include "io/checkpoint.h"
 #include "io/file_util.h"

@@ -9,9 +9,9 @@
 
 #include "core/clock.h"
 #include "core/memory.h"
-#include "gem/sim.h"
 #include "gembem/petsc.h"
 #include "io/scene_report.h"
+#include "solver/solver.h"
 
 static void material(FILE *f, const char *name, const gb_material *m)
 {
@@ -112,8 +112,8 @@ void gb_run_record_times(FILE *f, const gb_sim *sim, const gb_run_times *t)
             gb_clock_seconds() - t->started, t->steps);
     if (sim) {
         fprintf(f, "  contact_detection: %.3f\n", sim->detect_seconds);
-        if (sim->global) {
-            const gb_global_stats *g = gb_global_statistics(sim->global);
+        const gb_global_stats *g = gb_solver_statistics(sim);
+        if (g) {
             fprintf(f, "  assembly: %.3f\n  analysis: %.3f   # %ld symbolic analyses\n"
                        "  factorisation: %.3f   # %ld factorisations\n  solve: %.3f\n",
                     g->assemble, g->analyse, g->analyses, g->factorise, g->factorisations, g->solve);

@@ -6,7 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "io/csv_read.h"
+#include "scene/csv_read.h"
 
 static void warn(gb_run_verdict *v, const char *fmt, ...)
 {

@@ -1,10 +1,10 @@
 /* The state a scene can start from (`initial_state:`): box, grains and contact forces. */
 #include <stdio.h>
 
-#include "gem/sim.h"
 #include "gembem/output.h"
 #include "io/file_util.h"
 #include "scene/grains_file.h"
+#include "solver/solver.h"
 
 #include <stdlib.h>
 
@@ -129,9 +129,10 @@ gb_status gb_state_write(const char *dir, const gb_sim *sim, gb_error *err)
     if (mo != GB_MAX_OVERLAP_DEFAULT) fprintf(a.f, ", max_overlap: %.15g", mo);
     fprintf(a.f, "}\n");
     if (sim->host) write_host_yaml(a.f, sim);
-    if (sim->global) {
-        fprintf(a.f, "solver_state: {damping: %.17g, damping_next: %d, damping_history: [", sim->lm_mu, sim->lm_next);
-        for (int k = 0; k < LM_MEMORY; k++) fprintf(a.f, "%s%.17g", k ? ", " : "", sim->lm_history[k]);
+    if (gb_solver_is_global(sim)) {
+        const gb_solver_damping *d = gb_solver_damping_of(sim);
+        fprintf(a.f, "solver_state: {damping: %.17g, damping_next: %d, damping_history: [", d->mu, d->next);
+        for (int k = 0; k < GB_SOLVER_HISTORY; k++) fprintf(a.f, "%s%.17g", k ? ", " : "", d->history[k]);
         fprintf(a.f, "]}\n");
     }
     return gb_atomic_commit(&a, err);

@@ -12,7 +12,7 @@ typedef struct {
 } gb_sliding_contact;
 
 /* The force-carrying contacts whose |pt| has reached the limit pn tan(phi) + c, to the relative
- * tolerance 1e-9 that the global solver uses for its tangents (src/global/global.c): the contact
+ * tolerance 1e-9 that the global solver uses for its tangents (src/solver/global.c): the contact
  * law clamps pt there when the contact slides. Contacts without friction (limit 0) or without a
  * tangential spring (kt = 0, e.g. against boundary particles) never count: they carry no shear.
  * Returns their number; fills out (may be NULL) up to cap. */

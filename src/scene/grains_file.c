@@ -4,7 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "io/csv_read.h"
+#include "scene/csv_read.h"
 
 static const char *const wall_names[GB_N_WALLS] = {"left", "right", "bottom", "top"};
 

@@ -3,7 +3,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "bem/scene_read.h"
+#include "scene/bem_scene_read.h"
 #include "scene/host_read.h"
 
 /* Checks, with the scene's line and column, that the mesh's groups are the ones the scene names:

@@ -6,8 +6,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "bem/scene_read.h"
-#include "io/csv_read.h"
+#include "scene/bem_scene_read.h"
+#include "scene/csv_read.h"
 #include "scene/state_read.h"
 
 static const char *bc_kind_name(const gb_bem_bc *bc)

@@ -6,7 +6,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "bem/scene_read.h"
+#include "scene/bem_scene_read.h"
 #include "check.h"
 #include "gembem/bem.h"
 

@@ -3,7 +3,7 @@
  *  - gb_jam's packing is in equilibrium: gembem's own fixing forces are below gb_jam's tolerance;
  *  - every solver converges to a = 100 dyn, the global solver in at most 60 iterations per step
  *    (a grain with a single contact once traded its force back and forth with the system: a
- *    two-cycle that took thousands of iterations, see mark_system in src/gem/relax.c);
+ *    two-cycle that took thousands of iterations, see gb_solver_mark_system in src/solver/damped.c);
  *  - the four solvers (the last: the global solver's line search, solver.newton: line_search) end
  *    at the same box (1e-5 relative: friction makes the answer depend
  *    slightly on the path, the sizes agree to the springs' deformation), CHOLMOD and UMFPACK to
@@ -15,7 +15,7 @@
 #include <string.h>
 
 #include "check.h"
-#include "gem/sim.h"
+#include "solver/solver.h"
 
 enum { N_SOLVERS = 4 };
 static const char *const NAMES[N_SOLVERS] = {"reference", "global CHOLMOD", "global UMFPACK",
@@ -47,7 +47,7 @@ int main(int argc, char **argv)
             gb_wall_control wc = {GB_WALLS_STRESS, s0 * (1 + 0.05 * k), s0 * (1 + 0.05 * k), 0};
             long it = 0;
             double mf, wr;
-            gb_status st = gb_gem_relax(sim, &wc, solver ? 500 : 100000, &it, &mf, &wr, &err);
+            gb_status st = gb_solver_relax(sim, &wc, solver ? 500 : 100000, &it, &mf, &wr, &err);
             CHECK(st == GB_OK);
             if (st) fprintf(stderr, "%s step %d: %s (largest force %g)\n", NAMES[solver], k, err.msg, mf);
             most = it > most ? it : most;

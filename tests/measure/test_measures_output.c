@@ -1,4 +1,4 @@
-/* The measures that the run output writes per step (src/measure/measure_output.c), through
+/* The measures that the run output writes per step (src/io/measure_output.c), through
  * gb_run_output like `gembem run`:
  * - hybrid, empty granular zone (tests/hybrid/host_loading.yaml: one grain touching nothing, the
  *   host's top pushed down in 3 steps): the hoop stress along the cavity wall and the stress on the

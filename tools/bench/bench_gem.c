@@ -12,7 +12,7 @@
 #include <string.h>
 #include "bench_clock.h"
 
-#include "gem/sim.h"
+#include "solver/solver.h"
 
 
 int main(int argc, char **argv)
@@ -42,7 +42,7 @@ int main(int argc, char **argv)
     long prep_it = 0, it_total = 0;
     double max_force, wall, contact_iterations = 0;
     double t0 = bench_now();
-    gb_status st = gb_gem_relax(sim, &wc, prep_cap, &prep_it, &max_force, &wall, &err);
+    gb_status st = gb_solver_relax(sim, &wc, prep_cap, &prep_it, &max_force, &wall, &err);
     double t_prep = bench_now() - t0;
     int contacts = gb_sim_contacts(sim, NULL, 0);
     contact_iterations += (double)prep_it * contacts;
@@ -53,7 +53,7 @@ int main(int argc, char **argv)
             wc.s1 = wc.s2 = s0 * (0.5 + 0.5 * k / steps);
             long it = 0;
             double t1 = bench_now();
-            st = gb_gem_relax(sim, &wc, sc.solver.max_iterations, &it, &max_force, &wall, &err);
+            st = gb_solver_relax(sim, &wc, sc.solver.max_iterations, &it, &max_force, &wall, &err);
             t_steps += bench_now() - t1;
             it_total += it;
             contacts = gb_sim_contacts(sim, NULL, 0);
@@ -62,8 +62,8 @@ int main(int argc, char **argv)
         }
     }
     double secs = t_prep + t_steps, iters = (double)(prep_it + it_total);
-    if (sim->global) {
-        const gb_global_stats *g = gb_global_statistics(sim->global);
+    const gb_global_stats *g = gb_solver_statistics(sim);
+    if (g) {
         fprintf(stderr, "%s: assembly %.2f s, analysis %.2f s (%ld), factorisation %.2f s (%ld), solve %.2f s, "
                         "rest %.2f s; %ld regularised\n", method, g->assemble, g->analyse, g->analyses, g->factorise,
                 g->factorisations, g->solve, t_prep + t_steps - g->assemble - g->analyse - g->factorise - g->solve,

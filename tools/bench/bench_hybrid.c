@@ -8,7 +8,7 @@
 #include <string.h>
 #include "bench_clock.h"
 
-#include "gem/sim.h"
+#include "solver/solver.h"
 
 
 int main(int argc, char **argv)
@@ -26,9 +26,9 @@ int main(int argc, char **argv)
     long it = 0;
     double mf, wr;
     gb_wall_control wc = {GB_WALLS_FIXED, 0, 0, 0};
-    gb_status st = gb_gem_relax(sim, &wc, sc.solver.max_iterations, &it, &mf, &wr, &err);
+    gb_status st = gb_solver_relax(sim, &wc, sc.solver.max_iterations, &it, &mf, &wr, &err);
     double t_run = bench_now() - t0;
-    const gb_global_stats *g = gb_global_statistics(sim->global);
+    const gb_global_stats *g = gb_solver_statistics(sim);
     double rest = t_run - g->assemble - g->analyse - g->factorise - g->solve;
     printf("| %s | %d | %d | %.2f | %ld%s | %.4f | %.3f | %.3f (%ld) | %.3f (%ld) | %.3f | %.3f | %.2f |\n",
            argc > 2 ? argv[2] : "umfpack", sim->n, sim->bp.n, t_host, it, st ? " (not converged)" : "",

@@ -16,7 +16,7 @@
 #include "bench_accuracy.h"
 #include "bench_clock.h"
 
-#include "gem/sim.h"
+#include "solver/solver.h"
 
 
 int main(int argc, char **argv)
@@ -41,7 +41,7 @@ int main(int argc, char **argv)
     gb_wall_control wc = {GB_WALLS_FIXED, 0, 0, 0};
     long prep = 0, it = 0;
     double mf, wr, t0 = bench_now();
-    gb_status st = gb_gem_relax(sim, &wc, prep_cap, &prep, &mf, &wr, &err);
+    gb_status st = gb_solver_relax(sim, &wc, prep_cap, &prep, &mf, &wr, &err);
     double t_prep = bench_now() - t0;
     if (st) {
         printf("| %s | %d | | preparation not converged in %ld iterations (%.0f s), largest fixing force %g |\n", method,
@@ -55,19 +55,16 @@ int main(int argc, char **argv)
     gb_gem_stress(sim, &s1, &s2);
     double sr = 0.5 * (s1 + s2);
     /* The solver of the load steps. */
-    if (!strcmp(method, "reference")) {
-        gb_global_free(sim->global);
-        sim->global = NULL;
-    } else if (!strcmp(method, "umfpack")) {
-        gb_global_free(sim->global);
-        sim->global = NULL;
-        if (gb_global_create(GB_LINEAR_UMFPACK, sim->n, 0, &sim->global, &err)) return fprintf(stderr, "%s\n", err.msg), 1;
-    }
+    gb_solver_settings steps_solver = sc.solver;
+    if (!strcmp(method, "reference")) steps_solver.method = GB_METHOD_REFERENCE;
+    if (!strcmp(method, "umfpack")) steps_solver.linear = GB_LINEAR_UMFPACK;
+    if (strcmp(method, "cholmod") && strcmp(method, "line_search") && gb_solver_create(sim, &steps_solver, &err))
+        return fprintf(stderr, "%s\n", err.msg), 1;
     /* The load steps' share of the solver's time accounts (the preparation's subtracted). */
     double detect0 = sim->detect_seconds;
-    long sweeps0 = sim->work.sweeps;
+    long sweeps0 = gb_solver_work_done(sim).sweeps;
     gb_global_stats g0 = {0};
-    if (sim->global) g0 = *gb_global_statistics(sim->global);
+    if (gb_solver_statistics(sim)) g0 = *gb_solver_statistics(sim);
     double contact_its = 0, t_steps = 0;
     int contacts = gb_sim_contacts(sim, NULL, 0), done = 0;
     for (int k = 1; k <= steps; k++) {
@@ -75,7 +72,7 @@ int main(int argc, char **argv)
         wc.s1 = wc.s2 = sr * (1 + 0.05 * k);
         long n = 0;
         double t1 = bench_now();
-        st = gb_gem_relax(sim, &wc, sc.solver.max_iterations, &n, &mf, &wr, &err);
+        st = gb_solver_relax(sim, &wc, sc.solver.max_iterations, &n, &mf, &wr, &err);
         t_steps += bench_now() - t1;
         it += n;
         contacts = gb_sim_contacts(sim, NULL, 0);
@@ -93,8 +90,8 @@ int main(int argc, char **argv)
            done < steps ? (double)it : (double)it / steps, t_steps / (it ? it : 1),
            1e9 * t_steps / (contact_its ? contact_its : 1), t_steps, ru.ru_maxrss / 1024.0);
     double detect = sim->detect_seconds - detect0;
-    if (sim->global) {
-        const gb_global_stats *g = gb_global_statistics(sim->global);
+    const gb_global_stats *g = gb_solver_statistics(sim);
+    if (g) {
         double as = g->assemble - g0.assemble, an = g->analyse - g0.analyse, fa = g->factorise - g0.factorise,
                so = g->solve - g0.solve;
         fprintf(stderr, "  %s %d, load steps: contact detection %.2f s, assembly %.2f s, %ld analyses %.2f s, "
@@ -102,7 +99,7 @@ int main(int argc, char **argv)
                 "%ld corrections, %ld systems by CG (%ld steps), %ld regularised, %ld smoother steps\n", method, sim->n, detect, as,
                 g->analyses - g0.analyses, an, g->factorisations - g0.factorisations, fa, so,
                 t_steps - detect - as - an - fa - so, g->moves - g0.moves, g->corrections - g0.corrections,
-                g->pcg_solves - g0.pcg_solves, g->pcg_steps - g0.pcg_steps, g->regularised - g0.regularised, sim->work.sweeps - sweeps0);
+                g->pcg_solves - g0.pcg_solves, g->pcg_steps - g0.pcg_steps, g->regularised - g0.regularised, gb_solver_work_done(sim).sweeps - sweeps0);
     } else {
         fprintf(stderr, "  %s %d, load steps: contact detection %.2f s, the rest (forces, moves, contact update) %.2f s\n",
                 method, sim->n, detect, t_steps - detect);

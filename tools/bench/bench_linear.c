@@ -13,8 +13,7 @@
 #include <sys/resource.h>
 
 #include "gembem/petsc.h"
-#include "gem/sim.h"
-#include "global/global_impl.h"
+#include "solver/global_impl.h"
 
 int main(int argc, char **argv)
 {
@@ -38,8 +37,8 @@ int main(int argc, char **argv)
     gb_gem_stress(sim, &s1, &s2);
     gb_wall_control wc = {GB_WALLS_STRESS, 0.525 * (s1 + s2), 0.525 * (s1 + s2), 0};
     long its = 0;
-    gb_gem_relax(sim, &wc, 1, &its, &mf, &wr, &err); /* one iteration: not converged, as expected */
-    const gb_global *gl = sim->global;
+    gb_solver_relax(sim, &wc, 1, &its, &mf, &wr, &err); /* one iteration: not converged, as expected */
+    const gb_global *gl = sim->solver->global;
     const gb_global_stats *g = gb_global_statistics(gl);
     struct rusage ru;
     getrusage(RUSAGE_SELF, &ru);

@@ -15,7 +15,7 @@
 #include "bench_accuracy.h"
 #include "bench_clock.h"
 
-#include "gem/sim.h"
+#include "solver/solver.h"
 
 int main(int argc, char **argv)
 {
@@ -36,7 +36,7 @@ int main(int argc, char **argv)
     long it = 0;
     double mf, wr;
     t0 = bench_now();
-    gb_status st = gb_gem_relax(sim, &wc, cap, &it, &mf, &wr, &err);
+    gb_status st = gb_solver_relax(sim, &wc, cap, &it, &mf, &wr, &err);
     double t = bench_now() - t0;
     struct rusage ru;
     getrusage(RUSAGE_SELF, &ru);
@@ -44,8 +44,8 @@ int main(int argc, char **argv)
     printf("| %s | %d | %d | %.3g | %s%ld | %.1f | %.3e | %.0f |", method, sim->n, contacts, sc.solver.accuracy,
            st ? "not converged: " : "", it, t, t / (it ? it : 1), ru.ru_maxrss / 1024.0);
     double detect = sim->detect_seconds;
-    if (sim->global) {
-        const gb_global_stats *g = gb_global_statistics(sim->global);
+    const gb_global_stats *g = gb_solver_statistics(sim);
+    if (g) {
         printf(" %.2f | %.2f | %.2f | %.2f (%ld) | %.2f | %.2f |\n", detect, g->assemble, g->analyse, g->factorise,
                g->factorisations, g->solve, t - detect - g->assemble - g->analyse - g->factorise - g->solve);
     } else {

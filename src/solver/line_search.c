@@ -1,10 +1,10 @@
 /* The global solver's Newton iteration with a line search (solver.newton: line_search).
  *
- * The direction is Newton's on the exact tangent (src/global/assemble.c: sliding contacts and the
+ * The direction is Newton's on the exact tangent (assemble.c: sliding contacts and the
  * contacts' rotation included), solved once per iteration. Its whole step is taken alone if it
  * lowers the merit (the squared fixing forces) tenfold. If it does not, the step has met contacts
  * that the tangent of the start does not know (grains that must rearrange: contacts that open,
- * close or slide), and the inertial smoother, which sees them at every step (src/gem/inertial.c:
+ * close or slide), and the inertial smoother, which sees them at every step (inertial.c:
  * FIRE on the reference moves, K 9-12), moves the grains, boundary particles and servo walls until
  * the merit has fallen to a millionth, from the whole step's end if that lowered the merit at all,
  * else from the iteration's start. Newton resumes from there. Only where the smoother does not
@@ -19,7 +19,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "gem/sim.h"
+#include "solver/solver_impl.h"
 
 enum {
     MAX_HALVINGS = 12,  /* a trial length of 1/4096 of Newton's step: the direction is not a descent one */
@@ -30,12 +30,12 @@ static const double CONVERGING = 0.1; /* Newton's whole step is taken alone if m
 static const double SMOOTHED = 1e-6;  /* the smoother stops when the merit (squared) has fallen to this */
 
 /* Grains, particles and walls moved by alpha times the direction; grains outside the system move
- * by their whole reference move (src/global/global.c). */
-static void set_move(gb_sim *sim, const double *dir, double alpha)
+ * by their whole reference move (global.c). */
+static void set_move(const gb_solver *s, gb_sim *sim, const double *dir, double alpha)
 {
     int n = sim->n, np = sim->bp.n;
     for (int i = 0; i < n; i++) {
-        double f = sim->in_system[i] ? alpha : 1;
+        double f = s->in_system[i] ? alpha : 1;
         for (int q = 0; q < 3; q++) sim->dX[3 * i + q] = f * dir[3 * i + q];
     }
     for (int k = 0; k < 2 * np; k++) sim->bp.dx[k] = alpha * dir[3 * n + k];
@@ -52,62 +52,63 @@ static gb_status take_move(gb_sim *sim, gb_error *err)
 
 /* Tries lengths 1/2^first .. 1/2^last of Newton's step, every trial from the iteration's start;
  * *found is set at the first whose merit passes Armijo's rule (the move then taken). */
-static gb_status backtrack(gb_sim *sim, const gb_wall_control *wc, double m0, const double *dir, int first, int last,
+static gb_status backtrack(gb_solver *s, gb_sim *sim, const gb_wall_control *wc, double m0, const double *dir, int first, int last,
                            int *found, gb_error *err)
 {
     *found = 0;
     double alpha = ldexp(1, -first);
     for (int h = first; h <= last; h++, alpha *= 0.5) {
-        set_move(sim, dir, alpha);
-        sim->work.trials++;
+        set_move(s, sim, dir, alpha);
+        s->work.trials++;
         gb_status st = take_move(sim, err);
         if (st) return st;
-        if (gb_gem_merit(sim, sim->in_system, gb_gem_wall_moves(sim, wc)) <= (1 - ARMIJO * alpha) * m0) {
-            sim->ls_length = alpha;
+        if (gb_gem_merit(sim, s->in_system, gb_gem_wall_moves(sim, wc)) <= (1 - ARMIJO * alpha) * m0) {
+            s->length = alpha;
             *found = 1;
             return GB_OK;
         }
-        gb_sim_state_restore(sim, &sim->trial);
+        gb_sim_state_restore(sim, &s->trial);
         gb_gem_forces(sim);
     }
     return GB_OK;
 }
 
-gb_status gb_gem_line_search_move(gb_sim *sim, const gb_wall_control *wc, double m0, gb_error *err)
+gb_status gb_solver_line_search_move(gb_solver *s, gb_sim *sim, const gb_wall_control *wc, double m0,
+                                     gb_error *err)
 {
     int n = sim->n, np = sim->bp.n, found;
     /* The smallest damping: Newton's direction (the system regularises only a singular matrix). */
-    gb_status st = gb_global_moves(sim->global, sim, wc, 0, err);
+    gb_status st = gb_global_moves(s->global, sim, s->in_system, wc, 0, err);
     if (st) return st;
-    double *dir = sim->ls_dir;
+    double *dir = s->direction;
     memcpy(dir, sim->dX, 3 * (size_t)n * sizeof(double));
     if (np) memcpy(dir + 3 * n, sim->bp.dx, 2 * (size_t)np * sizeof(double));
     memcpy(dir + 3 * n + 2 * np, sim->wall_dx, sizeof sim->wall_dx);
     /* Newton's whole step, alone if it converges (the merit falls tenfold: with Armijo's rule
      * alone, on the perturbed 1e4 protocol packing's friction relaxation, 33 whole steps each
      * lowered the merit by a few per cent and left the largest force at 2e6 dyn). */
-    set_move(sim, dir, 1);
-    sim->work.trials++;
+    set_move(s, sim, dir, 1);
+    s->work.trials++;
     if ((st = take_move(sim, err))) return st;
-    double m1 = gb_gem_merit(sim, sim->in_system, gb_gem_wall_moves(sim, wc));
+    double m1 = gb_gem_merit(sim, s->in_system, gb_gem_wall_moves(sim, wc));
     if (m1 <= CONVERGING * m0) {
-        sim->ls_length = 1;
+        s->length = 1;
         return GB_OK;
     }
     /* If not, the step met contacts that its tangent did not know: the smoother, which knows them
      * at every step, from the step's end if it lowered the merit at all, else from its start. */
     if (!(m1 < m0)) {
-        gb_sim_state_restore(sim, &sim->trial);
+        gb_sim_state_restore(sim, &s->trial);
         gb_gem_forces(sim);
     }
-    sim->ls_length = 0;
-    if ((st = gb_gem_inertial(sim, wc, SMOOTHED * m0, MAX_SMOOTHING, err))) return st;
-    if (gb_gem_merit(sim, sim->in_system, gb_gem_wall_moves(sim, wc)) <= (1 - ARMIJO) * m0) return GB_OK;
+    s->length = 0;
+    if ((st = gb_solver_inertial(s, sim, wc, SMOOTHED * m0, MAX_SMOOTHING, err))) return st;
+    if (gb_gem_merit(sim, s->in_system, gb_gem_wall_moves(sim, wc)) <= (1 - ARMIJO) * m0) return GB_OK;
     /* The smoother did not lower the merit either: a shorter Newton step, and if none lowers the
      * merit, the smoother's configuration after all (the same smoothing again). */
-    gb_sim_state_restore(sim, &sim->trial);
+    gb_sim_state_restore(sim, &s->trial);
     gb_gem_forces(sim);
-    if ((st = backtrack(sim, wc, m0, dir, 1, MAX_HALVINGS, &found, err)) || found) return st;
-    sim->ls_length = 0;
-    return gb_gem_inertial(sim, wc, SMOOTHED * m0, MAX_SMOOTHING, err);
+    if ((st = backtrack(s, sim, wc, m0, dir, 1, MAX_HALVINGS, &found, err)) || found) return st;
+    s->length = 0;
+    return gb_solver_inertial(s, sim, wc, SMOOTHED * m0, MAX_SMOOTHING, err);
 }

@@ -8,7 +8,7 @@
 
 #include "bem/output.h"
 #include "gem/sim.h"
-#include "hybrid/host_output.h"
+#include "io/host_output.h"
 #include "io/file_util.h"
 
 /* Cavity elements: the particle's centre at rest, its displacement, the force the host asks for

@@ -7,7 +7,7 @@
 #include <string.h>
 
 #include "core/clock.h"
-#include "global/global_impl.h"
+#include "solver/global_impl.h"
 
 /* Smallest relative diagonal shift: it keeps a system with a free rigid mode (a cluster held by
  * nothing) positive definite; if the factorisation still meets a zero pivot it grows tenfold. */
@@ -15,12 +15,14 @@ static const double REGULARISE = 1e-10;
 
 static int node_dofs(const gb_global *gl, int v) { return v < gl->n ? 3 : v < gl->n + gl->np ? 2 : 1; }
 
-gb_status gb_global_create(gb_linear_kind kind, int n_grains, int n_particles, gb_global **out, gb_error *err)
+gb_status gb_global_create(const gb_solver_settings *set, int n_grains, int n_particles, gb_global **out,
+                           gb_error *err)
 {
     gb_global *gl = calloc(1, sizeof *gl);
     if (!gl) return gb_fail(err, GB_ENOMEM, "out of memory");
-    gl->kind = kind;
-    gl->symmetric = kind != GB_LINEAR_UMFPACK;
+    gl->set = set;
+    gl->kind = (gb_linear_kind)set->linear;
+    gl->symmetric = gl->kind != GB_LINEAR_UMFPACK;
     gl->n = n_grains;
     gl->np = n_particles;
     gl->nodes = n_grains + n_particles + NW;
@@ -398,16 +400,16 @@ static void dump_first_solution(gb_global *gl)
 
 /* Holds what the system does not move, sets the right-hand side -F, assembles with the damping mu
  * and solves (analysing first on a new pattern), regularising a singular matrix. */
-static gb_status solve_system(gb_global *gl, const gb_sim *sim, const gb_wall_control *wc, double mu, int new_pattern,
-                              int reuse_factor, gb_error *err)
+static gb_status solve_system(gb_global *gl, const gb_sim *sim, const unsigned char *in_system, const gb_wall_control *wc,
+                              double mu, int new_pattern, int reuse_factor, gb_error *err)
 {
     gb_status st;
     double t0 = gb_clock_seconds();
     int n = gl->n, np = gl->np;
     for (int i = 0; i < n; i++) {
-        int out = !sim->in_system[i];
+        int out = !in_system[i];
         gl->held[3 * i] = gl->held[3 * i + 1] = (unsigned char)out;
-        gl->held[3 * i + 2] = (unsigned char)(out || sim->in_system[i] == GB_IN_SYSTEM_NO_ROTATION ||
+        gl->held[3 * i + 2] = (unsigned char)(out || in_system[i] == GB_IN_SYSTEM_NO_ROTATION ||
                                               !(gl->S[6 * i + 5] > 0)); /* no rotational stiffness */
         for (int a = 0; a < 3; a++) gl->rhs[3 * i + a] = gl->held[3 * i + a] ? 0 : -sim->F[3 * i + a];
     }
@@ -480,13 +482,14 @@ gb_status gb_global_resume(gb_global *gl, const gb_pair_list *P, const unsigned 
     return GB_OK;
 }
 
-gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const gb_wall_control *wc, double mu, gb_error *err)
+gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const unsigned char *in_system, const gb_wall_control *wc,
+                          double mu, gb_error *err)
 {
     gb_status st;
     /* PETSc's solver, made at the first move: the scene's settings and its symmetry are known then. */
     if (gl->kind == GB_LINEAR_PETSC && !gl->petsc) {
-        gl->symmetric = sim->scene->solver.newton != GB_NEWTON_LINE_SEARCH;
-        if ((st = gb_petsc_create(&sim->scene->solver.petsc, gl->symmetric, &gl->petsc, err))) return st;
+        gl->symmetric = gl->set->newton != GB_NEWTON_LINE_SEARCH;
+        if ((st = gb_petsc_create(&gl->set->petsc, gl->symmetric, &gl->petsc, err))) return st;
     }
     double t0 = gb_clock_seconds();
     gl->stats.moves++;
@@ -499,16 +502,16 @@ gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const gb_wall_control *wc,
     if ((st = gb_global_pair_buffers(gl, &sim->pairs, err))) return st;
     if (new_pattern && sim->pairs.n) memset(gl->unloading, 0, (size_t)sim->pairs.n);
     if (gl->resumed) resume_unloading(gl, &sim->pairs);
-    /* A grain with a single contact in the system keeps that contact's kt (see mark_system). */
+    /* A grain with a single contact in the system keeps that contact's kt (see gb_solver_mark_system). */
     for (int k = 0; k < sim->pairs.n; k++) {
         const gb_pair *p = &sim->pairs.p[k];
-        int single_i = sim->in_system[p->i] >= GB_IN_SYSTEM_NO_ROTATION; /* NO_ROTATION or SINGLE */
-        int single_j = p->j >= 0 && sim->in_system[p->j] >= GB_IN_SYSTEM_NO_ROTATION;
+        int single_i = in_system[p->i] >= GB_IN_SYSTEM_NO_ROTATION; /* NO_ROTATION or SINGLE */
+        int single_j = p->j >= 0 && in_system[p->j] >= GB_IN_SYSTEM_NO_ROTATION;
         gl->stick[k] = p->d > 0 && (gl->unloading[k] || single_i || single_j);
     }
     gb_global_tangents(gl, sim);
     gl->stats.assemble += gb_clock_seconds() - t0;
-    if ((st = solve_system(gl, sim, wc, mu, new_pattern, 0, err))) return st;
+    if ((st = solve_system(gl, sim, in_system, wc, mu, new_pattern, 0, err))) return st;
     /* A sliding contact has no tangential stiffness in K (it slides on), but if the solution moves
      * it back, it sticks again with its spring kt: Newton's step, blind to that, overshoots, and the
      * contact flips between sliding and sticking from one iteration to the next. Such contacts get
@@ -538,12 +541,12 @@ gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const gb_wall_control *wc,
         t0 = gb_clock_seconds();
         gb_global_tangents(gl, sim);
         gl->stats.assemble += gb_clock_seconds() - t0;
-        if ((st = solve_system(gl, sim, wc, mu, 0, 1, err))) return st;
+        if ((st = solve_system(gl, sim, in_system, wc, mu, 0, 1, err))) return st;
         gl->stats.corrections++;
     }
     /* The moves: the solution, scaled down as a whole if a grain or particle would move more than
      * max_move (a share of its radius), and the reference cases for the held grains. */
-    const gb_solver_settings *sv = &sim->scene->solver;
+    const gb_solver_settings *sv = gl->set;
     double worst = 0;
     for (int i = 0; i < n; i++) worst = fmax(worst, hypot(gl->x[3 * i], gl->x[3 * i + 1]) / sim->g[i].r);
     for (int e = 0; e < np; e++) {
@@ -553,7 +556,7 @@ gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const gb_wall_control *wc,
     double a = sv->global_alpha, scale = worst * a > sv->max_move ? sv->max_move / worst : a;
     for (int i = 0; i < n; i++) {
         double *d = &sim->dX[3 * i];
-        if (!sim->in_system[i]) {
+        if (!in_system[i]) {
             gb_gem_grain_move(sim, i, d);
             continue;
         }

@@ -1,5 +1,5 @@
 #define _POSIX_C_SOURCE 200809L
-#include "io/csv_read.h"
+#include "scene/csv_read.h"
 
 #include "core/number.h"
 

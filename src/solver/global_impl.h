@@ -1,14 +1,14 @@
 /* The global system's internals, shared by its assembly (assemble.c) and its solution (global.c);
- * private to src/global. */
+ * private to src/solver. */
 #ifndef GB_GLOBAL_IMPL_H
 #define GB_GLOBAL_IMPL_H
 
 #include <cholmod.h>
 #include <umfpack.h>
 
-#include "gem/sim.h"
-#include "global/global.h"
-#include "global/linear_petsc.h"
+#include "solver/global.h"
+#include "solver/solver_impl.h"
+#include "solver/linear_petsc.h"
 
 /* Wall DOFs: x axis (left and right walls inward), y axis (bottom and top inward), and the
  * isotropic strain of constant mean stress control. */
@@ -19,6 +19,7 @@ enum { NW = 3, W_X = 0, W_Y = 1, W_MEAN = 2 };
  * to v (itself included, in increasing order), the rows of u's DOFs; every column of v has the
  * same rows. */
 struct gb_global {
+    const gb_solver_settings *set;
     gb_linear_kind kind;
     int symmetric;            /* the host's symmetric part and CHOLMOD's matrix (else the exact tangent) */
     int n, np;                /* grains, boundary particles */

@@ -1,4 +1,4 @@
-/* The line-search iteration's smoother (src/gem/line_search.c): a damped inertial relaxation,
+/* The line-search iteration's smoother (line_search.c): a damped inertial relaxation,
  * FIRE (Bitzek, Koskinen, Gaehler, Moseler and Gumbsch, Phys. Rev. Lett. 97, 170201, 2006, with
  * its published parameters), in which each grain's mass is its own contact stiffness S (K 8): its
  * acceleration is its reference move (K 9-12 at alpha = 1), a time step of 1 is one Jacobi sweep of
@@ -18,7 +18,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "gem/sim.h"
+#include "solver/solver_impl.h"
 
 /* FIRE's parameters (Bitzek et al. 2006): N_min, f_inc, f_dec, alpha_start, f_alpha. The largest
  * step, in Jacobi sweeps: on the 1e3 path 0.7, 1.0 and 1.3 took 7 668, 6 560 and 51 529 steps
@@ -28,7 +28,7 @@ static const double F_INC = 1.1, F_DEC = 0.5, ALPHA_START = 0.1, F_ALPHA = 0.99,
 
 /* A boundary particle's acceleration (its move at alpha = 1, as a grain's by K 9): its force over
  * its own stiffness, the host's (the symmetric part of K's diagonal block: K is not symmetric) plus
- * its contacts' (bp_S); the global system's diagonal block for it (src/global/assemble.c). */
+ * its contacts' (bp_S); the global system's diagonal block for it (assemble.c). */
 static void particle_move(const gb_sim *sim, int e, double d[2])
 {
     const double *K = sim->host->K.K, *Sp = &sim->bp_S[3 * e], *F = &sim->bp_F[2 * e];
@@ -56,31 +56,32 @@ static void advance(double *v, double *d, int dofs, double dt, double cap)
     for (int k = 0; k < dofs; k++) d[k] *= f, v[k] *= f;
 }
 
-gb_status gb_gem_inertial(gb_sim *sim, const gb_wall_control *wc, double target, int max_steps, gb_error *err)
+gb_status gb_solver_inertial(gb_solver *s, gb_sim *sim, const gb_wall_control *wc, double target, int max_steps,
+                             gb_error *err)
 {
     /* The DOFs: grains' (3 each), then the boundary particles' (2 each) unless the host is rigid. */
     int n = sim->n, np = sim->host && !sim->scene->host.rigid ? sim->bp.n : 0, dofs = 3 * n + 2 * np;
-    double *v = sim->inertial.velocity, *acc = sim->inertial.acceleration, inv_alpha = 1 / sim->scene->solver.alpha;
+    double *v = s->velocity, *acc = s->acceleration, inv_alpha = 1 / s->set->alpha;
     memset(v, 0, (size_t)dofs * sizeof(double));
     memset(sim->dX, 0, 3 * (size_t)n * sizeof(double));
     if (sim->bp.n) memset(sim->bp.dx, 0, 2 * (size_t)sim->bp.n * sizeof(double));
     double dt = DT_START, mixing = ALPHA_START;
     int since_uphill = 0;
     gb_status st = GB_OK;
-    double a2 = sim->accuracy * sim->accuracy, max_move = sim->scene->solver.max_move;
+    double a2 = sim->accuracy * sim->accuracy, max_move = s->set->max_move;
     int step = 0;
     for (; step < max_steps; step++) {
         /* servo walls follow the grains, each step by their own stiffness (K section 2.6) */
         double wall_residual = gb_gem_wall_moves(sim, wc);
         /* One pass over the grains (the step's cost is its pass over the contacts, and this): the
          * merit and the largest force (gb_gem_merit, gb_gem_largest_grain_force2), the second
-         * half of the last move's fixing work (the trapezoid of gb_gem_iterate), the moves, and
+         * half of the last move's fixing work (the trapezoid of gb_gem_balance), the moves, and
          * the power of the forces (minus the fixing forces) on the velocities. */
         double merit = wall_residual * wall_residual, work = 0, power = 0, vv = 0, aa = 0;
         int balanced = 1;
         for (int i = 0; i < n; i++) {
             const double *F = &sim->F[3 * i];
-            if (sim->in_system[i]) merit += F[0] * F[0], merit += F[1] * F[1], merit += F[2] * F[2];
+            if (s->in_system[i]) merit += F[0] * F[0], merit += F[1] * F[1], merit += F[2] * F[2];
             balanced &= gb_gem_force2(sim, i) <= a2;
             gb_gem_grain_move(sim, i, &acc[3 * i]);
             for (int q = 3 * i; q < 3 * i + 3; q++) {
@@ -122,7 +123,7 @@ gb_status gb_gem_inertial(gb_sim *sim, const gb_wall_control *wc, double target,
             for (int k = 0; k < 2; k++) vp[k] += dt * acc[3 * n + 2 * e + k];
             advance(vp, &sim->bp.dx[2 * e], 2, dt, max_move * sim->bp.r[e]);
         }
-        sim->work.sweeps++;
+        s->work.sweeps++;
         sim->relaxation -= 0.5 * work;
         if ((st = gb_gem_move_and_forces(sim, err))) break;
     }
@@ -132,20 +133,4 @@ gb_status gb_gem_inertial(gb_sim *sim, const gb_wall_control *wc, double target,
     memset(sim->wall_dx, 0, sizeof sim->wall_dx);
     sim->half_pending = 0;
     return st;
-}
-
-gb_status gb_gem_inertial_create(gb_sim *sim, gb_error *err)
-{
-    size_t k = 3 * (size_t)sim->n + 2 * (size_t)sim->bp.n + 1;
-    sim->inertial.velocity = malloc(k * sizeof(double));
-    sim->inertial.acceleration = malloc(k * sizeof(double));
-    if (sim->inertial.velocity && sim->inertial.acceleration) return GB_OK;
-    gb_gem_inertial_free(sim);
-    return gb_fail(err, GB_ENOMEM, "out of memory for the smoother of %d grains", sim->n);
-}
-
-void gb_gem_inertial_free(gb_sim *sim)
-{
-    free(sim->inertial.velocity), free(sim->inertial.acceleration);
-    memset(&sim->inertial, 0, sizeof sim->inertial);
 }

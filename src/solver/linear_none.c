@@ -1,7 +1,7 @@
 /* gembem without PETSc: no distributed linear solver. The scene reader refuses
  * solver.linear: petsc (gb_petsc_available), so that these are never reached by a run. */
 #include "gembem/petsc.h"
-#include "global/linear_petsc.h"
+#include "solver/linear_petsc.h"
 
 int gb_petsc_available(void) { return 0; }
 

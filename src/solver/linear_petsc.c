@@ -11,7 +11,7 @@
 
 #include "core/clock.h"
 #include "gembem/petsc.h"
-#include "global/linear_petsc.h"
+#include "solver/linear_petsc.h"
 
 enum { CMD_STOP = 0, CMD_CREATE = 1, CMD_PATTERN = 2, CMD_SOLVE = 3, CMD_FREE = 4, CMD_ON_FACTOR = 5 };
 

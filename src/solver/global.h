@@ -6,13 +6,12 @@
 #define GB_GLOBAL_H
 
 #include "contact/pairs.h"
+#include "gembem/scene.h"
 #include "gembem/status.h"
 
 struct gb_sim;
 typedef struct gb_global gb_global;
 
-/* PETSC: the matrix distributed over the MPI ranks (linear_petsc.h); symmetric with newton: damped. */
-typedef enum { GB_LINEAR_CHOLMOD = 0, GB_LINEAR_UMFPACK = 1, GB_LINEAR_PETSC = 2 } gb_linear_kind;
 
 /* Time spent, for benchmarks (seconds, cumulative). */
 typedef struct {
@@ -25,11 +24,14 @@ typedef struct {
     long ksp_iterations; /* PETSc: the KSP's iterations (1 per solve for a direct solver) */
 } gb_global_stats;
 
-gb_status gb_global_create(gb_linear_kind kind, int n_grains, int n_particles, gb_global **out, gb_error *err);
+/* The system of n_grains grains and n_particles boundary particles, solved as the settings say (they
+ * must outlive it: solver.linear, newton, petsc, global_alpha, max_move). */
+gb_status gb_global_create(const gb_solver_settings *set, int n_grains, int n_particles, gb_global **out,
+                           gb_error *err);
 void gb_global_free(gb_global *gl);
 
-/* Fills sim->dX for every grain. Grains outside the system (sim->in_system 0: fewer than two
- * contacts) move as in the reference iteration (cases b, c) and are held in the system; a rotation
+/* Fills sim->dX for every grain. Grains outside the system (in_system[i] 0: fewer than two
+ * contacts, src/solver/damped.c) move as in the reference iteration (cases b, c) and are held in the system; a rotation
  * without stiffness (kt = 0) or marked GB_IN_SYSTEM_NO_ROTATION is held;
  * the rest solve K dX = -F together, with the walls under stress control as DOFs of the same system
  * (their residual: force minus target). The diagonal is scaled by 1 + mu (Levenberg-Marquardt:
@@ -37,8 +39,8 @@ void gb_global_free(gb_global *gl);
  * reference iteration). A move larger than `max_move` scales the whole step down.
  * Fills sim->wall_dx too. */
 struct gb_wall_control_s;
-gb_status gb_global_moves(gb_global *gl, struct gb_sim *sim, const struct gb_wall_control_s *wc, double mu,
-                          gb_error *err);
+gb_status gb_global_moves(gb_global *gl, struct gb_sim *sim, const unsigned char *in_system,
+                          const struct gb_wall_control_s *wc, double mu, gb_error *err);
 
 /* What the solver carries from one load step to the next (for checkpoints): the sliding contacts
  * that a solution unloaded, one flag per pair of P, while the sparsity pattern is P's; NULL when the

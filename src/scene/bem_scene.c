@@ -1,11 +1,12 @@
-/* Elastostatic scenes: YAML through the shared reader, every error at file:line:column. */
+/* Elastostatic scenes (`gembem bem`, and a hybrid scene's host): YAML through the shared reader,
+ * every error at file:line:column. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "bem/scene_read.h"
 #include "gembem/bem.h"
+#include "scene/bem_scene_read.h"
 #include "scene/yaml_read.h"
 
 void gb_bem_scene_free(gb_bem_scene *s)

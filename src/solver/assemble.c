@@ -4,7 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "global/global_impl.h"
+#include "solver/global_impl.h"
 
 /* The tangent stiffness, as a share of kn, of a frictionless single contact in the system. */
 static const double SINGLE_CONTACT_KT = 1e-2;
@@ -52,7 +52,7 @@ gb_status gb_global_pair_buffers(gb_global *gl, const gb_pair_list *P, gb_error 
 
 void gb_global_tangents(gb_global *gl, const gb_sim *sim)
 {
-    int exact = sim->scene->solver.newton == GB_NEWTON_LINE_SEARCH;
+    int exact = gl->set->newton == GB_NEWTON_LINE_SEARCH;
     memset(gl->S, 0, 6 * (size_t)gl->n * sizeof(double));
     memset(gl->Sp, 0, 3 * (size_t)gl->np * sizeof(double));
     for (int k = 0; k < sim->pairs.n; k++) {
@@ -143,7 +143,7 @@ static void add_exact_diagonal(gb_global *gl, const gb_sim *sim, const gb_pair *
  * kn lever (c, s, 0). */
 void gb_global_assemble(gb_global *gl, const gb_sim *sim, double shift)
 {
-    int exact = sim->scene->solver.newton == GB_NEWTON_LINE_SEARCH;
+    int exact = gl->set->newton == GB_NEWTON_LINE_SEARCH;
     memset(gl->Ax, 0, (size_t)gl->nnz * sizeof(double));
     const unsigned char *held = gl->held;
     int n = gl->n, np = gl->np;

@@ -1,0 +1,142 @@
+/* A solve: the relaxation loop, by the reference iteration or the global solver, and the solver's
+ * life and accounts. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "solver/solver_impl.h"
+
+void gb_solver_free(gb_solver *s)
+{
+    if (!s) return;
+    gb_global_free(s->global);
+    free(s->in_system);
+    gb_sim_state_free(&s->trial);
+    free(s->direction), free(s->velocity), free(s->acceleration);
+    free(s);
+}
+
+gb_status gb_solver_create(gb_sim *sim, const gb_solver_settings *set, gb_error *err)
+{
+    gb_solver_free(sim->solver);
+    sim->solver = NULL;
+    gb_solver *s = calloc(1, sizeof *s);
+    if (!s) return gb_fail(err, GB_ENOMEM, "out of memory");
+    s->set = set;
+    s->damping.mu = 1e-6;
+    s->damping.best = INFINITY; /* reset at every relaxation: a restart needs no more */
+    const gb_solver_state *from = &sim->scene->solver_state;
+    if (from->present) { /* a restart continues the damping of the run it continues */
+        s->damping.mu = from->mu;
+        memcpy(s->damping.history, from->history, sizeof s->damping.history);
+        s->damping.next = from->next;
+    }
+    size_t n = (size_t)sim->n + 1, np = (size_t)sim->bp.n;
+    gb_status st = GB_OK;
+    int ok = 1;
+    if (set->method == GB_METHOD_GLOBAL) {
+        st = gb_global_create(set, sim->n, sim->bp.n, &s->global, err);
+        ok = (s->in_system = calloc(n, 1)) != NULL;
+        if (set->newton == GB_NEWTON_LINE_SEARCH) {
+            s->direction = malloc((3 * n + 2 * np + 2 * GB_N_WALLS) * sizeof(double));
+            s->velocity = malloc((3 * n + 2 * np) * sizeof(double));
+            s->acceleration = malloc((3 * n + 2 * np) * sizeof(double));
+            ok = ok && s->direction && s->velocity && s->acceleration;
+        }
+    }
+    if (!st && !ok) st = gb_fail(err, GB_ENOMEM, "out of memory for the global solver of %d grains", sim->n);
+    if (st) {
+        gb_solver_free(s);
+        return st;
+    }
+    sim->solver = s;
+    return GB_OK;
+}
+
+/* An iteration of the global solver, from the current forces. */
+static gb_status global_move(gb_solver *s, gb_sim *sim, const gb_wall_control *wc, double wall_residual,
+                             gb_error *err)
+{
+    gb_solver_mark_system(s, sim);
+    double m0 = gb_gem_merit(sim, s->in_system, wall_residual);
+    gb_status st = gb_sim_state_save(sim, &s->trial, err);
+    if (st) return st;
+    if (s->set->newton == GB_NEWTON_LINE_SEARCH) return gb_solver_line_search_move(s, sim, wc, m0, err);
+    return gb_solver_damped_move(s, sim, wc, m0, err);
+}
+
+/* solver.history: what iteration `it` of this relaxation did. */
+static void report_iteration(gb_sim *sim, long it, double max_force, double wall_residual)
+{
+    const gb_solver *s = sim->solver;
+    double move = 0;
+    for (int i = 0; i < sim->n; i++) move = fmax(move, hypot(sim->dX[3 * i], sim->dX[3 * i + 1]) / sim->g[i].r);
+    int global = s->global != NULL, line_search = s->set->newton == GB_NEWTON_LINE_SEARCH;
+    gb_iteration_report r = {sim->pos.step + 1, sim->attempt, it, max_force, wall_residual, move,
+                             global && !line_search ? s->damping.mu : 0, global && line_search ? s->length : 0};
+    sim->on_iteration(sim->on_iteration_user, &r);
+}
+
+gb_status gb_solver_relax(gb_sim *sim, const gb_wall_control *wc, long cap, long *iterations, double *max_force,
+                          double *wall_residual, gb_error *err)
+{
+    gb_solver *s = sim->solver;
+    long it = sim->cur.relax_iters;
+    if (!it) {
+        sim->attempt++;
+        s->damping.best = INFINITY, s->damping.since = 0; /* the damped iteration's stall detection */
+    }
+    gb_status st = GB_OK;
+    for (; it <= cap; it++) {
+        if (gb_gem_balance(sim, wc, max_force, wall_residual, err, &st) || st) break;
+        /* Every grain's move from the same configuration, then all at once (order-independent). */
+        st = s->global ? global_move(s, sim, wc, *wall_residual, err) : gb_gem_reference_move(sim, err);
+        if (st) break;
+        if (sim->on_iteration) report_iteration(sim, it + 1, *max_force, *wall_residual);
+        sim->cur.relax_iters = it + 1;
+        /* not after the last iteration allowed: its failed attempt is undone at once */
+        if (it < cap && sim->on_within_step && (st = sim->on_within_step(sim->on_within_step_user, sim, err))) {
+            it++;
+            break;
+        }
+    }
+    sim->cur.relax_iters = 0;
+    if (it > cap) {
+        *iterations += cap;
+        return GB_ENOCONV;
+    }
+    *iterations += it;
+    return st;
+}
+
+gb_solver_work gb_solver_work_done(const gb_sim *sim)
+{
+    const gb_solver *s = sim->solver;
+    gb_solver_work w = s->work;
+    if (s->global) w.factorisations = gb_global_statistics(s->global)->factorisations;
+    return w;
+}
+
+const gb_global_stats *gb_solver_statistics(const gb_sim *sim)
+{
+    return sim->solver->global ? gb_global_statistics(sim->solver->global) : NULL;
+}
+
+int gb_solver_is_global(const gb_sim *sim) { return sim->solver->global != NULL; }
+
+gb_solver_damping *gb_solver_damping_of(const gb_sim *sim) { return &sim->solver->damping; }
+
+int gb_solver_predicts_strain(const gb_sim *sim)
+{
+    return sim->solver->global && sim->solver->set->newton == GB_NEWTON_LINE_SEARCH;
+}
+
+const unsigned char *gb_solver_unloading(const gb_sim *sim)
+{
+    return sim->solver->global ? gb_global_unloading(sim->solver->global, &sim->pairs) : NULL;
+}
+
+gb_status gb_solver_resume(gb_sim *sim, const unsigned char *unloading, gb_error *err)
+{
+    return sim->solver->global ? gb_global_resume(sim->solver->global, &sim->pairs, unloading, err) : GB_OK;
+}

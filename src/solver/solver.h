@@ -1,0 +1,60 @@
+/* The solver: iterations that bring a problem to equilibrium within a tolerance.
+ *
+ * A problem is a gb_sim (src/gem/sim.h): the grains, their contacts and the contact law, the walls
+ * or the elastic host, and the loads of the step in progress. A solve is gb_solver_relax: iterations
+ * until every fixing force is within the load step's accuracy (K 14), by the method the settings
+ * name: the reference iteration of the granular element method (src/gem, the oracle), or the global
+ * solver (one sparse system for every grain, boundary particle and servo wall: global.h), damped
+ * (damped.c) or with a line search and an inertial smoother (line_search.c, inertial.c). Pure
+ * granular and hybrid scenes go through the same calls. The solver depends on the problem, never
+ * the reverse: src/gem knows a gb_sim's solver only as an opaque pointer. */
+#ifndef GB_SOLVER_H
+#define GB_SOLVER_H
+
+#include "gem/sim.h"
+#include "solver/global.h"
+
+typedef struct gb_solver gb_solver;
+
+/* The damping state of the global solver's damped iteration, which a load step leaves for the next
+ * (state.yaml's solver_state, checkpoints): the Levenberg-Marquardt damping, the merits before the
+ * last accepted moves (non-monotone acceptance), and the stall detection of the step in progress. */
+typedef struct {
+    double mu;
+    double history[GB_SOLVER_HISTORY];
+    int next;
+    long since; /* moves since one brought the merit below half the step's lowest */
+    double best; /* the step's lowest merit (INFINITY before the step's first move) */
+} gb_solver_damping;
+
+/* A solver for sim by the settings `set` (which must outlive it); it replaces (and frees) the one
+ * sim had. With the reference method it holds no system. The damping starts from the scene's
+ * solver_state when it has one (a restart continues the run it continues). */
+gb_status gb_solver_create(gb_sim *sim, const gb_solver_settings *set, gb_error *err);
+void gb_solver_free(gb_solver *s);
+
+/* Relaxes sim to equilibrium under the wall control, at most `cap` iterations, adding the
+ * iterations done to *iterations. A relaxation resumed from a checkpoint within it
+ * (sim->cur.relax_iters > 0) goes on from there: its iterations, attempt and the damped
+ * iteration's stall detection are those it had. Between two iterations (not after the last allowed
+ * one) it calls sim->on_within_step, whose error ends it. GB_ENOCONV at the cap. */
+gb_status gb_solver_relax(gb_sim *sim, const gb_wall_control *wc, long cap, long *iterations, double *max_force,
+                          double *wall_residual, gb_error *err);
+
+/* The solver's work since the start of the process (all zero for the reference iteration). */
+gb_solver_work gb_solver_work_done(const gb_sim *sim);
+/* The global system's statistics, or NULL for the reference iteration. */
+const gb_global_stats *gb_solver_statistics(const gb_sim *sim);
+/* Whether sim is solved by the global solver (else by the reference iteration). */
+int gb_solver_is_global(const gb_sim *sim);
+/* The damping state, to read and to restore (checkpoints, state.yaml). */
+gb_solver_damping *gb_solver_damping_of(const gb_sim *sim);
+/* Whether the grains follow a strain step's box affinely before the relaxation (the line search's
+ * predictor: src/run/program.c). */
+int gb_solver_predicts_strain(const gb_sim *sim);
+/* The global system's unloading flags of the pairs (gb_global_unloading), NULL without one; and a
+ * resumed run's (gb_global_resume), nothing without one. */
+const unsigned char *gb_solver_unloading(const gb_sim *sim);
+gb_status gb_solver_resume(gb_sim *sim, const unsigned char *unloading, gb_error *err);
+
+#endif

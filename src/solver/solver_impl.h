@@ -1,0 +1,44 @@
+/* The solver's state, shared by its iterations (relax.c, damped.c, line_search.c, inertial.c);
+ * private to src/solver. */
+#ifndef GB_SOLVER_IMPL_H
+#define GB_SOLVER_IMPL_H
+
+#include "solver/solver.h"
+
+/* in_system: 0 moved by the reference cases, else by the global system, its rotation held or not */
+#define GB_IN_SYSTEM 1
+#define GB_IN_SYSTEM_NO_ROTATION 2
+/* a grain with a single contact that has rolling resistance: in the system with its rotation (the
+ * rolling spring holds it), the contact's kt and kr kept in K (gb_solver_mark_system) */
+#define GB_IN_SYSTEM_SINGLE 3
+
+struct gb_solver {
+    const gb_solver_settings *set;
+    gb_global *global;          /* the global system, NULL for the reference iteration */
+    unsigned char *in_system;   /* per grain: moved by the global system in this iteration (GB_IN_SYSTEM...) */
+    gb_sim_state trial;         /* the configuration before a trial move */
+    gb_solver_damping damping;  /* newton: damped */
+    double *direction;          /* newton: line_search: the Newton direction of grains, particles, walls */
+    double *velocity, *acceleration; /* its smoother's: 3 per grain, 2 per boundary particle */
+    double length;              /* the share of Newton's step the last line search took (0: the smoother) */
+    gb_solver_work work;        /* since the start of the process: only its changes within a load step are
+                                   reported, so a resumed run needs none of it */
+};
+
+/* Which grains the global system moves (s->in_system), from the current contacts. */
+void gb_solver_mark_system(gb_solver *s, const gb_sim *sim);
+
+/* One iteration of the global solver from the current forces, whose merit (gb_gem_merit over
+ * s->in_system) is m0, with the configuration saved in s->trial: the damped iteration (damped.c),
+ * and the line search (line_search.c). */
+gb_status gb_solver_damped_move(gb_solver *s, gb_sim *sim, const gb_wall_control *wc, double m0, gb_error *err);
+gb_status gb_solver_line_search_move(gb_solver *s, gb_sim *sim, const gb_wall_control *wc, double m0,
+                                     gb_error *err);
+
+/* The line search's smoother (inertial.c): every grain and boundary particle moves, servo walls
+ * follow, until the merit is at most `target`, after max_steps, or when every grain, particle and
+ * wall is balanced. The forces are current on return. */
+gb_status gb_solver_inertial(gb_solver *s, gb_sim *sim, const gb_wall_control *wc, double target, int max_steps,
+                             gb_error *err);
+
+#endif
