@@ -105,10 +105,21 @@ gb_status gb_solver_line_search_move(gb_solver *s, gb_sim *sim, const gb_wall_co
     if ((st = gb_solver_inertial(s, sim, wc, SMOOTHED * m0, MAX_SMOOTHING, err))) return st;
     if (gb_gem_merit(sim, s->in_system, gb_gem_wall_moves(sim, wc)) <= (1 - ARMIJO) * m0) return GB_OK;
     /* The smoother did not lower the merit either: a shorter Newton step, and if none lowers the
-     * merit, the smoother's configuration after all (the same smoothing again). */
+     * merit, the smoother's configuration after all (kept, not smoothed again: a deposit settling
+     * under its weight, where Newton's steps raise the merit 1e2-1e6 times and the smoother's
+     * merit rises and falls as the grains rearrange, spent a third of its smoother steps on such
+     * repeats: tools/settle_packing.sh's 1e3 discs 85 866 steps -> 60 433, the same state;
+     * docs/solver/research.md, eighth round). */
+    if ((st = gb_sim_state_save(sim, &s->smoothed, err))) return st;
     gb_sim_state_restore(sim, &s->trial);
     gb_gem_forces(sim);
     if ((st = backtrack(s, sim, wc, m0, dir, 1, MAX_HALVINGS, &found, err)) || found) return st;
     s->length = 0;
-    return gb_solver_inertial(s, sim, wc, SMOOTHED * m0, MAX_SMOOTHING, err);
+    gb_sim_state_restore(sim, &s->smoothed);
+    gb_gem_forces(sim);
+    /* as the smoother leaves them: no move pending (its fixing work is accounted) */
+    memset(sim->dX, 0, 3 * (size_t)n * sizeof(double));
+    if (np) memset(sim->bp.dx, 0, 2 * (size_t)np * sizeof(double));
+    memset(sim->wall_dx, 0, sizeof sim->wall_dx);
+    return GB_OK;
 }

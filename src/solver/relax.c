@@ -11,7 +11,7 @@ void gb_solver_free(gb_solver *s)
     if (!s) return;
     gb_global_free(s->global);
     free(s->in_system);
-    gb_sim_state_free(&s->trial);
+    gb_sim_state_free(&s->trial), gb_sim_state_free(&s->smoothed);
     free(s->direction), free(s->velocity), free(s->acceleration);
     free(s);
 }

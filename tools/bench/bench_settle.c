@@ -1,6 +1,6 @@
 /* The equilibrium of a deposit under its own weight (not a test; tools/settle_packing.sh makes the
  * scene; docs/limits.md: the global solver does not converge on it).
- *   bench_settle SCENE.yaml reference|cholmod|umfpack [CAP (1000000)] [ACCURACY]
+ *   bench_settle SCENE.yaml reference|cholmod|umfpack|line_search [CAP (1000000)] [ACCURACY]
  * ACCURACY: a in force units, or "target" for 1e-6 kn r_mean (default: the scene's).
  * The scene holds a deposit (gb_packgen: every disc resting on others, no force yet) and a body
  * force; the walls stay fixed and the chosen solver brings the grains to equilibrium. Prints one
@@ -19,7 +19,7 @@
 
 int main(int argc, char **argv)
 {
-    if (argc < 3) return fprintf(stderr, "usage: %s SCENE.yaml reference|cholmod|umfpack [CAP] [ACCURACY]\n", argv[0]), 2;
+    if (argc < 3) return fprintf(stderr, "usage: %s SCENE.yaml reference|cholmod|umfpack|line_search [CAP] [ACCURACY]\n", argv[0]), 2;
     const char *method = argv[2];
     long cap = argc > 3 ? atol(argv[3]) : 1000000;
     gb_error err = {0};
@@ -29,6 +29,10 @@ int main(int argc, char **argv)
     bench_set_accuracy(&sc, argc > 4 ? argv[4] : NULL);
     sc.solver.method = strcmp(method, "reference") ? GB_METHOD_GLOBAL : GB_METHOD_REFERENCE;
     sc.solver.linear = strcmp(method, "umfpack") ? GB_LINEAR_CHOLMOD : GB_LINEAR_UMFPACK;
+    if (!strcmp(method, "line_search")) { /* the default global solver: UMFPACK's exact tangent */
+        sc.solver.linear = GB_LINEAR_UMFPACK;
+        sc.solver.newton = GB_NEWTON_LINE_SEARCH;
+    }
     double t0 = bench_now();
     if (gb_sim_create(&sc, &sim, &err)) return fprintf(stderr, "%s\n", err.msg), 1;
     double t_create = bench_now() - t0;
@@ -51,8 +55,9 @@ int main(int argc, char **argv)
     } else {
         printf(" %.2f | | | | | %.2f |\n", detect, t - detect);
     }
-    fprintf(stderr, "  %s %d: set-up (pair list) %.2f s, largest fixing force %.3g, status %d\n", method, sim->n, t_create,
-            mf, (int)st);
+    gb_solver_work w = gb_solver_work_done(sim);
+    fprintf(stderr, "  %s %d: set-up (pair list) %.2f s, largest fixing force %.3g, status %d; %ld trials, %ld smoother steps\n",
+            method, sim->n, t_create, mf, (int)st, w.trials, w.sweeps);
     gb_sim_free(sim);
     gb_scene_free(&sc);
     return st ? 3 : 0;
