@@ -3,7 +3,7 @@
 # one of the project's other parts below. A test may carry more labels (the modules it also runs,
 # set where it is added: set_property(TEST name APPEND PROPERTY LABELS cli)).
 set(GB_TEST_MODULES
-    bem cli contact core gem global hybrid io measure pack scene   # src/<module>
+    bem cli contact core gem hybrid io measure pack run scene solver   # src/<module>
     validation demo python study fuzz tools)                       # validation/, the demo, python/, studies/, fuzz/, tools/
 
 # A test of one C program: the executable is named after its first source (test_x.c: test_x).

@@ -1,5 +1,6 @@
 /* The reference iteration of the granular element method (Kishino 1989, section 2.5, Fig. 1). */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "core/clock.h"
@@ -260,20 +261,43 @@ static void account_move(gb_sim *sim, double diss, const double before[GB_N_WALL
     sim->dissipation_step += diss;
 }
 
-static double update_pair(gb_sim *sim, gb_pair *p)
+/* Below this many pairs a move's contact update stays on one thread (a parallel region costs a few
+ * microseconds). */
+enum { PARALLEL_PAIRS = 1024 };
+
+/* Updates every pair to the moved bodies (K 6, 13, 25), the energy each dissipated into
+ * sim->pair_diss. The pairs are independent (each reads the bodies and writes itself), so the
+ * update runs on solver.threads OpenMP threads; what is summed over pairs is summed afterwards in
+ * the pairs' order, so that every result is the same bits whatever the thread count. The update
+ * is about half of a smoother step's time (src/solver/inertial.c). */
+static gb_status update_pairs(gb_sim *sim, gb_error *err)
 {
-    return gb_pair_update(p, &sim->world, sim->dX, &sim->wall_dx[0][0], gb_sim_material(sim, p->j),
-                          gb_sim_tan_phi(sim, p->j));
+    int n = sim->pairs.n;
+    if (n > sim->pair_diss_cap) {
+        double *d = realloc(sim->pair_diss, (size_t)sim->pairs.cap * sizeof(double));
+        if (!d) return gb_fail(err, GB_ENOMEM, "out of memory for %d pairs", sim->pairs.cap);
+        sim->pair_diss = d, sim->pair_diss_cap = sim->pairs.cap;
+    }
+    gb_pair *P = sim->pairs.p;
+    double *diss = sim->pair_diss;
+    const double *dX = sim->dX, *wall_dx = &sim->wall_dx[0][0];
+    const gb_world *w = &sim->world;
+    int threads = sim->scene->solver.threads;
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1 && n >= PARALLEL_PAIRS)
+    for (int k = 0; k < n; k++)
+        diss[k] = gb_pair_update(&P[k], w, dX, wall_dx, gb_sim_material(sim, P[k].j), gb_sim_tan_phi(sim, P[k].j));
+    return GB_OK;
 }
 
 gb_status gb_gem_apply_moves(gb_sim *sim, gb_error *err)
 {
     gb_status st = move_bodies(sim, err);
+    if (!st) st = update_pairs(sim, err);
     if (st) return st;
     double diss = 0, wall_after[GB_N_WALLS] = {0, 0, 0, 0};
     for (int k = 0; k < sim->pairs.n; k++) {
-        gb_pair *p = &sim->pairs.p[k];
-        diss += update_pair(sim, p);
+        const gb_pair *p = &sim->pairs.p[k];
+        diss += sim->pair_diss[k];
         if (p->j < 0 && !GB_IS_PARTICLE(p->j)) wall_after[-1 - p->j] += p->pn;
     }
     account_move(sim, diss, sim->wall_force, wall_after);
@@ -285,12 +309,13 @@ gb_status gb_gem_move_and_forces(gb_sim *sim, gb_error *err)
     double wall_before[GB_N_WALLS];
     memcpy(wall_before, sim->wall_force, sizeof wall_before);
     gb_status st = move_bodies(sim, err);
+    if (!st) st = update_pairs(sim, err);
     if (st) return st;
     reset_forces(sim);
     double diss = 0;
     for (int k = 0; k < sim->pairs.n; k++) {
-        gb_pair *p = &sim->pairs.p[k];
-        diss += update_pair(sim, p);
+        const gb_pair *p = &sim->pairs.p[k];
+        diss += sim->pair_diss[k];
         if (p->d > 0) gb_gem_add_contact(sim, p, 1);
     }
     account_move(sim, diss, wall_before, sim->wall_force);

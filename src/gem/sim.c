@@ -27,6 +27,7 @@ void gb_gem_problem_free(gb_sim *sim)
     gb_host_free(sim->host);
     gb_particles_free(&sim->bp);
     free(sim->bp_F), free(sim->bp_S);
+    free(sim->pair_diss);
     free(sim);
 }
 

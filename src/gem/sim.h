@@ -89,6 +89,8 @@ struct gb_sim {
     double *one;        /* per grain, GB_ONE values of its last contact: normal towards the other side, kn, kr */
 #define GB_ONE 4
     gb_pair_list pairs;
+    double *pair_diss;  /* scratch of a move's contact update: the energy each pair dissipated */
+    int pair_diss_cap;
     gb_world world;     /* what the grains touch: themselves, the box's walls, boundary particles */
     gb_particles bp;    /* boundary particles (none without a host) */
     gb_host *host;      /* the elastic host of a hybrid scene, or NULL */

@@ -74,8 +74,8 @@ void gb_run_record_settings(FILE *f, const gb_scene *sc)
         fprintf(f, "    accuracy: %.17g   # [%s]\n", sv->accuracy, sc->force_unit);
     fprintf(f, "    alpha: %.17g\n    alpha1: %.17g\n    beta: %.17g\n    beta1: %.17g\n", sv->alpha, sv->alpha1,
             sv->beta, sv->beta1);
-    fprintf(f, "    max_iterations: %ld\n    cutbacks: %d\n    history: %s\n", sv->max_iterations, sv->cutbacks,
-            sv->history ? "true" : "false");
+    fprintf(f, "    max_iterations: %ld\n    cutbacks: %d\n    history: %s\n    threads: %d\n", sv->max_iterations,
+            sv->cutbacks, sv->history ? "true" : "false", sv->threads);
     fprintf(f, "  loading:\n");
     for (int k = 0; k < sc->n_stages; k++) stage(f, &sc->stages[k]);
     fprintf(f, "  output:\n    snapshot_every: %d\n    snapshot_steps: [", sc->snapshot_every);

@@ -10,7 +10,7 @@ gb_solver_settings gb_solver_defaults(void)
 {
     gb_solver_settings s = {.alpha = 0.75, .alpha1 = 0.5, .beta = 20.0, .beta1 = 20.0, .max_iterations = 100000,
                             .method = GB_METHOD_REFERENCE, .global_alpha = 1.0, .max_move = 0.1, .cutbacks = 4,
-                            .newton = GB_NEWTON_DAMPED,
+                            .newton = GB_NEWTON_DAMPED, .threads = 1,
                             .petsc = {.ksp = "preonly", .factor = "mumps", .rtol = 1e-12}};
     return s;
 }
@@ -92,9 +92,11 @@ gb_status gb_solver_section_read(gb_ymap *top, gb_solver_settings *sv, gb_error 
         (st = gb_ymap_int(&m, "max_iterations", 0, 1, 2000000000L, &sv->max_iterations, err)))
         return st;
     if ((st = gb_ymap_bool(&m, "history", 0, &sv->history, err))) return st;
-    long cutbacks = sv->cutbacks;
-    if ((st = gb_ymap_int(&m, "cutbacks", 0, 0, 20, &cutbacks, err))) return st;
-    sv->cutbacks = (int)cutbacks;
+    long cutbacks = sv->cutbacks, threads = sv->threads;
+    if ((st = gb_ymap_int(&m, "cutbacks", 0, 0, 20, &cutbacks, err)) ||
+        (st = gb_ymap_int(&m, "threads", 0, 1, 1024, &threads, err)))
+        return st;
+    sv->cutbacks = (int)cutbacks, sv->threads = (int)threads;
     if (!(sv->alpha <= 1.5) || !(sv->alpha1 <= 1.5))
         return gb_yaml_fail(m.doc, m.node, err, "solver: expected alpha and alpha1 in (0, 1.5]; the paper uses "
                                                 "alpha < 1 because neighbours move too");
