@@ -90,7 +90,7 @@ typedef struct {
     int cutbacks;          /* a load step that does not converge is retried in halves, down to 1/2^cutbacks */
     int newton;            /* global: GB_NEWTON_DAMPED or GB_NEWTON_LINE_SEARCH */
     int history;           /* write each iteration's largest force and move (history.csv) */
-    int threads;           /* OpenMP threads of the contacts' update in a move (default 1: studies run several
+    int threads;           /* OpenMP threads of the contacts' update and the grains' moves (default 1: studies run several
                               scenes at once); the results are the same bits whatever the count */
 } gb_solver_settings;
 

@@ -261,10 +261,6 @@ static void account_move(gb_sim *sim, double diss, const double before[GB_N_WALL
     sim->dissipation_step += diss;
 }
 
-/* Below this many pairs a move's contact update stays on one thread (a parallel region costs a few
- * microseconds). */
-enum { PARALLEL_PAIRS = 1024 };
-
 /* Updates every pair to the moved bodies (K 6, 13, 25), the energy each dissipated into
  * sim->pair_diss. The pairs are independent (each reads the bodies and writes itself), so the
  * update runs on solver.threads OpenMP threads; what is summed over pairs is summed afterwards in
@@ -283,7 +279,7 @@ static gb_status update_pairs(gb_sim *sim, gb_error *err)
     const double *dX = sim->dX, *wall_dx = &sim->wall_dx[0][0];
     const gb_world *w = &sim->world;
     int threads = sim->scene->solver.threads;
-#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1 && n >= PARALLEL_PAIRS)
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1 && n >= GB_PARALLEL_PAIRS)
     for (int k = 0; k < n; k++)
         diss[k] = gb_pair_update(&P[k], w, dX, wall_dx, gb_sim_material(sim, P[k].j), gb_sim_tan_phi(sim, P[k].j));
     return GB_OK;
@@ -385,7 +381,9 @@ int gb_gem_balance(gb_sim *sim, const gb_wall_control *wc, double *max_force, do
 
 gb_status gb_gem_reference_move(gb_sim *sim, gb_error *err)
 {
-    for (int i = 0; i < sim->n; i++) gb_gem_grain_move(sim, i, &sim->dX[3 * i]);
+    int n = sim->n, threads = sim->scene->solver.threads;
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1 && n >= GB_PARALLEL_GRAINS)
+    for (int i = 0; i < n; i++) gb_gem_grain_move(sim, i, &sim->dX[3 * i]);
     sim->relaxation -= 0.5 * gb_gem_fixing_work(sim);
     sim->half_pending = 1;
     return gb_gem_apply_moves(sim, err);

@@ -129,6 +129,10 @@ struct gb_sim {
     void *on_within_step_user;
 };
 
+/* solver.threads: below this many pairs (grains) a move's contact update (the grains' moves) stays
+ * on one thread; a parallel region costs a few microseconds. */
+enum { GB_PARALLEL_PAIRS = 1024, GB_PARALLEL_GRAINS = 512 };
+
 /* The difference of two counts of the solver's work. */
 static inline gb_solver_work gb_solver_work_minus(gb_solver_work a, gb_solver_work b)
 {

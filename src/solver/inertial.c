@@ -69,6 +69,7 @@ gb_status gb_solver_inertial(gb_solver *s, gb_sim *sim, const gb_wall_control *w
     int since_uphill = 0;
     gb_status st = GB_OK;
     double a2 = sim->accuracy * sim->accuracy, max_move = s->set->max_move;
+    int threads = s->set->threads;
     int step = 0;
     for (; step < max_steps; step++) {
         /* servo walls follow the grains, each step by their own stiffness (K section 2.6) */
@@ -79,11 +80,13 @@ gb_status gb_solver_inertial(gb_solver *s, gb_sim *sim, const gb_wall_control *w
          * the power of the forces (minus the fixing forces) on the velocities. */
         double merit = wall_residual * wall_residual, work = 0, power = 0, vv = 0, aa = 0;
         int balanced = 1;
+        /* each grain's move on solver.threads threads (each writes its own), the sums in order */
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1 && n >= GB_PARALLEL_GRAINS)
+        for (int i = 0; i < n; i++) gb_gem_grain_move(sim, i, &acc[3 * i]);
         for (int i = 0; i < n; i++) {
             const double *F = &sim->F[3 * i];
             if (s->in_system[i]) merit += F[0] * F[0], merit += F[1] * F[1], merit += F[2] * F[2];
             balanced &= gb_gem_force2(sim, i) <= a2;
-            gb_gem_grain_move(sim, i, &acc[3 * i]);
             for (int q = 3 * i; q < 3 * i + 3; q++) {
                 work += sim->F[q] * sim->dX[q];
                 acc[q] *= inv_alpha;
