@@ -3,8 +3,8 @@
 the cavity polygon read from the gmsh .msh file itself, point-in-polygon by ray casting and the
 distance to its edges), no overlap between grains or with a wall or the polygon beyond a share of
 the (smaller) radius, the solid fraction from the
-written grains and the region's area (shoelace), the force balance of every grain from the written
-contact forces, and that pack_info.yaml reports these numbers.
+written grains and the region's area (shoelace), the force and moment balance of every grain from
+the written contact forces, and that pack_info.yaml reports these numbers.
 
   check_pack.py DIR (--box L R B T | --msh FILE --group NAME) --max-overlap F --accuracy A
                 [--weight W] [--solid-fraction PHI --tolerance T]
@@ -130,22 +130,27 @@ def main():
         fails.append(f"solid fraction {phi}, target {a.solid_fraction} +- {a.tolerance}")
     if int(inf["grains"]) != len(g):
         fails.append(f"{len(g)} grains written, {inf['grains']} reported")
-    # balance: the contact forces (pn along the normal from i to j, pt along (-ny, nx)) and the weight
-    F = [[0.0, -a.weight * math.pi * r * r] for _, _, r in g]
+    # balance (K 5): a contact pushes grain i by -(pn n + pt t), n the unit normal from i to j and
+    # t = (-ny, nx), and j by the opposite; its tangential force turns both by pt times their radius
+    # (in force units: pt). Plus the weight. Until session 11 this check added +pt t to i: right
+    # only while every pt was 0 (the frictionless settling), 260 dyn off once friction acted.
+    F = [[0.0, -a.weight * math.pi * r * r, 0.0] for _, _, r in g]
     gg = bd = 0
     for c in csv.DictReader(open(a.dir + "/state_contacts.csv")):
         i, pn, pt, nx, ny = int(c["i"]), float(c["pn"]), float(c["pt"]), float(c["nx"]), float(c["ny"])
-        fx, fy = -pn * nx + pt * -ny, -pn * ny + pt * nx
+        fx, fy = -(pn * nx + pt * -ny), -(pn * ny + pt * nx)
         F[i][0] += fx
         F[i][1] += fy
+        F[i][2] += pt
         if c["j"].isdigit():
             j = int(c["j"])
             F[j][0] -= fx
             F[j][1] -= fy
+            F[j][2] += pt
             gg += 1
         else:
             bd += 1
-    fmax = max(math.hypot(*f) for f in F)
+    fmax = max(math.sqrt(f[0] ** 2 + f[1] ** 2 + f[2] ** 2) for f in F)
     if fmax > a.accuracy:
         fails.append(f"a grain is out of balance by {fmax:.4g}, more than the accuracy {a.accuracy}")
     if inf["contacts"] != f"{{grain_grain: {gg}, boundary: {bd}}}":
