@@ -1,0 +1,107 @@
+/* `gembem bem`: an elastic body alone, solved and written to a run directory (its files:
+ * docs/run-directory.md and `gembem bem --help`). */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "bem/output.h"
+#include "gembem/output.h"
+#include "io/file_util.h"
+
+typedef struct {
+    gb_bem_scene sc;
+    gb_bem_system sys;
+    gb_bem_solution sol;
+    gb_bem_stiffness k;
+    double *u, *s, *bs;
+    int has_k;
+} bem_run;
+
+static void bem_run_free(bem_run *r)
+{
+    gb_bem_stiffness_free(&r->k);
+    gb_bem_solution_free(&r->sol);
+    gb_bem_system_free(&r->sys);
+    gb_bem_scene_free(&r->sc);
+    free(r->u), free(r->s), free(r->bs);
+}
+
+static gb_status compute(const char *scene, bem_run *r, gb_error *err)
+{
+    gb_status st = gb_bem_scene_load(scene, &r->sc, err);
+    if (st) return st;
+    gb_bem_guard guard = gb_bem_guard_default();
+    if ((st = gb_bem_assemble(&r->sc.mesh, &r->sc.material, &r->sys, err))) return st;
+    if ((st = gb_bem_solve(&r->sc.mesh, &r->sys, &r->sc.problem, &guard, &r->sol, err))) return st;
+    int n = r->sc.npts, m = r->sc.mesh.n;
+    r->u = calloc(2 * (size_t)(n ? n : 1), sizeof(double));
+    r->s = calloc(3 * (size_t)(n ? n : 1), sizeof(double));
+    r->bs = calloc(3 * (size_t)m, sizeof(double));
+    if (!r->u || !r->s || !r->bs) return gb_fail(err, GB_ENOMEM, "out of memory");
+    if ((st = gb_bem_boundary_stress(&r->sc.mesh, &r->sc.material, &r->sol, r->bs, err))) return st;
+    for (int i = 0; i < n && !st; i++) /* point by point: the grid may hold points outside the body */
+        if (r->sc.pt_inside[i])
+            st = gb_bem_interior(&r->sc.mesh, &r->sc.material, &r->sc.problem, &r->sol, 1, r->sc.pts + 2 * i,
+                                 r->u + 2 * i, r->s + 3 * i, err);
+    if (st) return st;
+    if (r->sc.stiffness_group[0]) {
+        int g = gb_bem_mesh_group(&r->sc.mesh, r->sc.stiffness_group);
+        if ((st = gb_bem_condense(&r->sc.mesh, &r->sys, &r->sc.problem, g, &guard, &r->k, err))) return st;
+        r->has_k = 1;
+    }
+    return GB_OK;
+}
+
+static gb_status write_text(const char *path, const char *text, gb_error *err)
+{
+    gb_atomic_file a;
+    gb_status st = gb_atomic_open(&a, path, err);
+    if (st) return st;
+    fputs(text, a.f);
+    return gb_atomic_commit(&a, err);
+}
+
+static gb_status write_all(const char *dir, bem_run *r, char *summary, size_t cap, gb_error *err)
+{
+    char path[1200];
+    gb_status st = GB_OK;
+#define OUT(name) (snprintf(path, sizeof path, "%s/%s", dir, name), path)
+    if (!st) st = gb_copy_file(r->sc.path, OUT("scene.yaml"), err);
+    char text[4096];
+    snprintf(text, sizeof text, "gembem %s\n", gb_version());
+    if (!st) st = write_text(OUT("version.txt"), text, err);
+    if (!st && r->sc.write_boundary_csv)
+        st = gb_bem_write_boundary_csv(OUT("boundary.csv"), &r->sc.mesh, &r->sol, r->bs, err);
+    if (!st && r->sc.write_boundary_vtp) st = gb_bem_write_boundary_vtp(OUT("boundary.vtp"), &r->sc.mesh, &r->sol, err);
+    if (!st && r->sc.write_interior_vtu) st = gb_bem_write_interior_vtu(OUT("interior.vtu"), &r->sc, r->u, r->s, err);
+    if (!st && r->sc.write_interior_csv) st = gb_bem_write_interior_csv(OUT("interior.csv"), &r->sc, r->u, r->s, err);
+    if (!st && r->has_k && r->sc.stiffness_write)
+        st = gb_bem_write_stiffness_csv(OUT("stiffness.csv"), &r->sc.mesh, &r->k, err);
+    int used = snprintf(text, sizeof text,
+                        "gembem %s\nscene: %s\nmesh: %s (%d elements, %d loop(s), %s)\nunits: length %s, force %s\n"
+                        "system rcond: %.6e (at the scene's own lengths: %.6e), length scale used: %.6g\n",
+                        gb_version(), r->sc.path, r->sc.mesh_path, r->sc.mesh.n, r->sc.mesh.n_loops,
+                        r->sc.mesh.unbounded ? "unbounded" : "bounded", r->sc.length_unit, r->sc.force_unit,
+                        r->sol.rcond, r->sol.rcond_first, r->sol.scale);
+    if (r->has_k && used > 0 && used < (int)sizeof text)
+        snprintf(text + used, sizeof text - (size_t)used,
+                 "stiffness on '%s': %d x %d, ||K - K^t||_F / ||K||_F = %.6e, rcond %.6e, length scale %.6g\n",
+                 r->sc.stiffness_group, r->k.m, r->k.m, r->k.asymmetry, r->k.rcond, r->k.scale);
+    if (!st) st = write_text(OUT("summary.txt"), text, err);
+    if (!st && summary) snprintf(summary, cap, "%s", text);
+#undef OUT
+    return st;
+}
+
+gb_status gb_bem_run(const char *scene, const char *dir, int overwrite, char *summary, size_t cap, gb_error *err)
+{
+    bem_run r;
+    memset(&r, 0, sizeof r);
+    /* the directory first: a refusal costs no solve */
+    gb_status st = gb_output_dir_check(dir, overwrite, "output directory", err);
+    if (!st) st = compute(scene, &r, err);
+    if (!st) st = gb_make_dirs(dir, err);
+    if (!st) st = write_all(dir, &r, summary, cap, err);
+    bem_run_free(&r);
+    return st;
+}
