@@ -47,6 +47,7 @@ typedef struct {
     int *chunk, n_chunks; /* chunk c's grain pairs: gg's [chunk[c], chunk[c + 1]) */
     int width;          /* the chunks' W */
     double *part;       /* the blocks' and chunks' partial sums and maxima */
+    double ff, vv;      /* the discs' sum of |F|^2 (forces), of |v|^2 (the step) */
     int part_cap;
     int par;            /* the discs are many enough for the threads */
 } fire_state;
@@ -84,8 +85,8 @@ static void pair_forces(fire_state *S, int first, double *f, int full, int *cont
     *largest = lo, *contacts = nc;
 }
 
-/* Forces of the springs and the body force into f (2 per disc); returns the largest |F|, and in
- * *power the discs' share of F.v (v: their velocities). With `full`, the report's contact counts,
+/* Forces of the springs and the body force into f (2 per disc); returns the largest |F|, in
+ * *power the discs' share of F.v (v: their velocities) and in S->ff their sum of |F|^2. With `full`, the report's contact counts,
  * walls and largest overlap too. */
 static double forces(fire_state *S, double *f, const double *v, double *power, gb_fire_report *rep, int full)
 {
@@ -125,20 +126,20 @@ static double forces(fire_state *S, double *f, const double *v, double *power, g
     double *part = S->part;
 #pragma omp parallel for schedule(static) if (S->par)
     for (int b = 0; b < nb; b++) {
-        double worst = 0, P = 0;
+        double worst = 0, P = 0, ff = 0;
         for (int i = b * BLOCK, e = i + BLOCK < n ? i + BLOCK : n; i < e; i++) {
             double q = f[2 * i] * f[2 * i] + f[2 * i + 1] * f[2 * i + 1];
             if (q > worst || q != q) worst = q;
-            P += f[2 * i] * v[2 * i], P += f[2 * i + 1] * v[2 * i + 1];
+            P += f[2 * i] * v[2 * i], P += f[2 * i + 1] * v[2 * i + 1], ff += q;
         }
-        part[2 * b] = worst, part[2 * b + 1] = P;
+        part[3 * b] = worst, part[3 * b + 1] = P, part[3 * b + 2] = ff;
     }
-    double worst = 0, P = 0;
+    double worst = 0, P = 0, ff = 0;
     for (int b = 0; b < nb; b++) {
-        if (part[2 * b] > worst || part[2 * b] != part[2 * b]) worst = part[2 * b];
-        P += part[2 * b + 1];
+        if (part[3 * b] > worst || part[3 * b] != part[3 * b]) worst = part[3 * b];
+        P += part[3 * b + 1], ff += part[3 * b + 2];
     }
-    *power = P;
+    *power = P, S->ff = ff;
     return sqrt(worst);
 }
 
@@ -169,8 +170,8 @@ static gb_status rebuild(fire_state *S, gb_error *err)
     }
     S->width = gap > CHUNK_MIN ? gap : CHUNK_MIN;
     S->n_chunks = (n + S->width - 1) / S->width;
-    /* the chunks (at most n / CHUNK_MIN + 1), the blocks of the step's 2 n + 1 coordinates */
-    int part = 2 * (S->n_chunks + blocks(2 * (long)n + 1)) + 2;
+    /* the chunks' 2 sums (at most n / CHUNK_MIN + 1 chunks), or the disc blocks' 3 */
+    int part = 2 * S->n_chunks + 3 * blocks(n) + 2;
     if (part > S->part_cap) {
         double *q = realloc(S->part, (size_t)part * sizeof(double));
         int *chunk = q ? realloc(S->chunk, (size_t)part * sizeof(int)) : NULL;
@@ -272,22 +273,17 @@ gb_status gb_fire_relax_scaled(const gb_fire_world *w, const gb_fire_goal *goal,
             for (int i = 0; i < n; i++) w->g[i].x -= 0.5 * dt * v[2 * i], w->g[i].y -= 0.5 * dt * v[2 * i + 1];
             if (free_scale) set_scale(&S, S.scale * exp(-0.5 * dt * v[2 * n] / c));
             memset(v, 0, len * sizeof(double));
+            S.vv = 0;
         }
-        /* semi-implicit Euler: the velocity first, mixed towards the force while descending (in
-         * the pass over the discs below, with their move) */
-        double vv = 0, ff = 0, h = dt * inv_m;
-        const int nl = blocks((long)len);
-#pragma omp parallel for schedule(static) if (S.par)
-        for (int b = 0; b < nl; b++) {
-            double sv = 0, sf = 0;
-            for (size_t k = (size_t)b * BLOCK, e = k + BLOCK < len ? k + BLOCK : len; k < e; k++)
-                v[k] += h * f[k], sv += v[k] * v[k], sf += f[k] * f[k];
-            S.part[2 * b] = sv, S.part[2 * b + 1] = sf;
-        }
-        for (int b = 0; b < nl; b++) vv += S.part[2 * b], ff += S.part[2 * b + 1];
+        /* semi-implicit Euler: the velocity first, v + h F, mixed towards the force while descending
+         * (in the pass over the discs below, with their move); the mix needs |v + h F|^2, which is
+         * |v|^2 + 2 h F.v + h^2 |F|^2 from the sums the last step and the force pass took (one pass
+         * over the discs fewer) */
+        const double h = dt * inv_m, ff = S.ff + f[2 * n] * f[2 * n];
+        const double vv = fmax(0, S.vv + 2 * h * (P > 0 ? P : 0) + h * h * ff);
         const double keep = P > 0 && ff > 0 ? 1 - alpha : 1, mix = P > 0 && ff > 0 ? alpha * sqrt(vv / ff) : 0;
         double next = S.scale;
-        v[2 * n] = keep * v[2 * n] + mix * f[2 * n];
+        v[2 * n] = keep * (v[2 * n] + h * f[2 * n]) + mix * f[2 * n];
         if (free_scale) {
             /* the radii grow at most `ramp` in ln(scale) per step, so that no contact closes by
              * more than a small share of a radius between two force evaluations */
@@ -298,20 +294,29 @@ gb_status gb_fire_relax_scaled(const gb_fire_world *w, const gb_fire_goal *goal,
             double step = target_ln - log(S.scale), grow = step > 0 ? goal->ramp : -goal->ramp;
             next = fabs(step) <= goal->ramp ? goal->scale_to : S.scale * exp(grow);
         }
-        /* one pass over the discs: the velocity mixed, the move, the radii, the drift since the
-         * pair list's rebuild */
+        /* one pass over the discs: the velocity, the move, the radii, the drift since the pair
+         * list's rebuild, |v|^2 */
         S.scale = next;
         double drift2 = 0;
         const double *r0 = w->r0;
         gb_grain *g = w->g;
+        const int nb = blocks(n);
 #pragma omp parallel for schedule(static) if (S.par) reduction(max : drift2)
-        for (int i = 0; i < n; i++) {
-            v[2 * i] = keep * v[2 * i] + mix * f[2 * i], v[2 * i + 1] = keep * v[2 * i + 1] + mix * f[2 * i + 1];
-            g[i].x += dt * v[2 * i], g[i].y += dt * v[2 * i + 1];
-            if (r0) g[i].r = next * r0[i];
-            double q = gb_pairs_grain_drift2(&S.L, &S.world, i);
-            if (q > drift2) drift2 = q;
+        for (int b = 0; b < nb; b++) {
+            double sv = 0;
+            for (int i = b * BLOCK, e = i + BLOCK < n ? i + BLOCK : n; i < e; i++) {
+                double *u = v + 2 * i, *F = f + 2 * i;
+                u[0] = keep * (u[0] + h * F[0]) + mix * F[0], u[1] = keep * (u[1] + h * F[1]) + mix * F[1];
+                g[i].x += dt * u[0], g[i].y += dt * u[1];
+                if (r0) g[i].r = next * r0[i];
+                double q = gb_pairs_grain_drift2(&S.L, &S.world, i);
+                if (q > drift2) drift2 = q;
+                sv += u[0] * u[0] + u[1] * u[1];
+            }
+            S.part[b] = sv;
         }
+        S.vv = v[2 * n] * v[2 * n];
+        for (int b = 0; b < nb; b++) S.vv += S.part[b];
         if ((st = refresh(&S, drift2, err))) goto done;
         worst = forces(&S, f, v, &P, rep, 0);
     }
