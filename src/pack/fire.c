@@ -29,7 +29,11 @@ static const double DT_MAX = 0.5;
  *   largest j - i: a chunk's pairs then write only to the discs of it and of the next one, so the
  *   even chunks run at once, then the odd ones, each disc's sum in an order fixed by W. The discs
  *   are numbered by rows of cells (pack.c's sort_by_cell), so j - i is about two rows of discs.
- * Below PARALLEL discs the threads' start costs more than they save (the results are the same). */
+ * Below PARALLEL discs the threads' start costs more than they save (the results are the same).
+ * The threads run only when OMP_NUM_THREADS asks for them: libgomp's threads spin while they wait
+ * at the end of a loop, and on a machine other jobs load a spinning thread holds the core the
+ * other one needs (1e5 discs on 2 threads at load 3-5: 11.4 minutes against 2.6 on one;
+ * OMP_WAIT_POLICY=passive 2.5; docs/benchmarks.md), as CHOLMOD's threads did (src/global). */
 enum { BLOCK = 2048, CHUNK_MIN = 1024, PARALLEL = 4096 };
 static int blocks(long m) { return (int)((m + BLOCK - 1) / BLOCK); }
 
@@ -214,7 +218,7 @@ gb_status gb_fire_relax_scaled(const gb_fire_world *w, const gb_fire_goal *goal,
     memset(&S, 0, sizeof S);
     S.w = w, S.world = (gb_world){w->g, n, w->box, w->bp};
     double *v = calloc(len, sizeof(double)), *f = calloc(len, sizeof(double));
-    S.par = n >= PARALLEL;
+    S.par = n >= PARALLEL && getenv("OMP_NUM_THREADS");
     gb_status st = GB_OK;
     if (!v || !f) {
         st = gb_fail(err, GB_ENOMEM, "out of memory for the relaxation of %d grains", n);
