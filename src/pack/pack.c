@@ -32,8 +32,8 @@ static const double GROW_FORCE = 0.1;
  * the settling then decompresses it to the target. A packing relaxes much faster at a higher
  * stress, and one jammed at 10 times the target decompresses to it with few rearrangements: 1e4
  * discs (seeds 1-6) took 17 700 FIRE iterations on average against 30 800 growing to the target
- * itself (3 times: 34 400; 30 times: 20 900; the relaxation at 10 times to 100 times the
- * tolerance: 19 400). The price: a porosity lower by about 0.002 (the structure found at the
+ * itself (3 times without the free relaxation: 34 400; 5 times: 26 100; 15: 16 700; 20: 17 900;
+ * 30: 20 900; the relaxation at 10 times to 100 times the tolerance: 19 400). The price: a porosity lower by about 0.002 (the structure found at the
  * higher stress is denser; docs/benchmarks.md). The overshoot stays below OVER_MAX kn (contacts'
  * overlaps of some 0.1 % of the diameter): at 1e-2 kn (ctest pack_make's box to 1e-3 kn, times
  * 10) the free scale's balance, sum pn (ri + rj) = 2 A p, and Love's stress with the centres'
