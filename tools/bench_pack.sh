@@ -13,7 +13,10 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=$root/${1:-build}; shift || true
 sizes=${*:-10000 100000}
-echo "machine: $(nproc --all) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); $(date -u +%Y-%m-%d); load average $(cut -d' ' -f1-3 /proc/loadavg)"
+# FIRE runs on OpenMP's threads when OMP_NUM_THREADS is set (one thread without it; the packing is
+# the same bits whatever their number); on a machine other jobs load, OMP_WAIT_POLICY=passive keeps
+# a waiting thread from spinning on the core the others need.
+echo "machine: $(nproc --all) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); $(date -u '+%Y-%m-%d %H:%M'); load average $(cut -d' ' -f1-3 /proc/loadavg); OMP_NUM_THREADS=${OMP_NUM_THREADS:-unset} OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-unset}"
 echo
 echo "| discs | seconds: total [CPU] (place / grow / settle / equilibrium) | FIRE iterations: grow + settle | CPU us per iteration | peak memory [MB] | porosity | coordination (without rattlers) | rattlers | mean stress / target | largest fixing force / accuracy |"
 echo "|---:|---|---|---:|---:|---:|---|---:|---:|---:|"

@@ -21,6 +21,22 @@ static const int N_DELAY = 5;
  * below 2 / omega, about 0.58 sqrt(m / kn) for the 6 neighbours of a dense packing. */
 static const double DT_MAX = 0.5;
 
+/* The force loop and FIRE's passes run on OpenMP's threads in a fixed decomposition, so that the
+ * arithmetic and the trajectory are the same bits whatever the thread count (ctest pack_make
+ * compares a seed's bytes, .ci/run runs the suite on 1 and 2 threads):
+ * - sums over discs in blocks of BLOCK, each summed in its order, the blocks one after the other;
+ * - the grain pairs (the list is sorted by (i, j)) in chunks of W discs by i, W at least the
+ *   largest j - i: a chunk's pairs then write only to the discs of it and of the next one, so the
+ *   even chunks run at once, then the odd ones, each disc's sum in an order fixed by W. The discs
+ *   are numbered by rows of cells (pack.c's sort_by_cell), so j - i is about two rows of discs.
+ * Below PARALLEL discs the threads' start costs more than they save (the results are the same).
+ * The threads run only when OMP_NUM_THREADS asks for them: libgomp's threads spin while they wait
+ * at the end of a loop, and on a machine other jobs load a spinning thread holds the core the
+ * other one needs (1e5 discs on 2 threads at load 3-5: 11.4 minutes against 2.6 on one;
+ * OMP_WAIT_POLICY=passive 2.5; docs/benchmarks.md), as CHOLMOD's threads did (src/global). */
+enum { BLOCK = 2048, CHUNK_MIN = 1024, PARALLEL = 4096 };
+static int blocks(long m) { return (int)((m + BLOCK - 1) / BLOCK); }
+
 typedef struct {
     const gb_fire_world *w;
     gb_world world;
@@ -32,42 +48,74 @@ typedef struct {
     int *gg, n_gg;      /* the grain pairs of the list, (i, j) packed: 8 bytes a pair instead of a gb_pair's 56 */
     int *other, n_other; /* the list's pairs with walls and particles, by index */
     int cap;
+    int *chunk, n_chunks; /* chunk c's grain pairs: gg's [chunk[c], chunk[c + 1]) */
+    int width;          /* the chunks' W */
+    double *part;       /* the blocks' and chunks' partial sums and maxima */
+    double ff, vv;      /* the discs' sum of |F|^2 (forces), of |v|^2 (the step) */
+    int part_cap;
+    int par;            /* the discs are many enough for the threads */
 } fire_state;
 
-/* Forces of the springs and the body force into f (2 per disc); returns the largest |F|, and in
- * *power the discs' share of F.v (v: their velocities). With `full`, the report's contact counts,
+/* The grain pairs of the chunks c = first, first + 2, ... into f; their sums of pn (ri + rj) and
+ * pn times the distance into part[2 c], part[2 c + 1]; with full, the contacts and the largest
+ * overlap over the smaller radius. */
+static void pair_forces(fire_state *S, int first, double *f, int full, int *contacts, double *largest)
+{
+    const gb_grain *g = S->w->g;
+    const int *gg = S->gg, *chunk = S->chunk, half = (S->n_chunks - first + 1) / 2;
+    const double kn = S->w->kn_gg;
+    double *part = S->part, lo = *largest;
+    int nc = *contacts;
+#pragma omp parallel for schedule(static) if (S->par) reduction(max : lo) reduction(+ : nc)
+    for (int q = 0; q < half; q++) {
+        int c = first + 2 * q;
+        double virial = 0, wr = 0;
+        for (int k = chunk[c]; k < chunk[c + 1]; k++) {
+            int i = gg[2 * k], j = gg[2 * k + 1];
+            double dx = g[j].x - g[i].x, dy = g[j].y - g[i].y, sum = g[i].r + g[j].r, d2 = dx * dx + dy * dy;
+            if (d2 >= sum * sum) continue;
+            double dist = sqrt(d2), d = sum - dist, pn = kn * d, fx = pn, fy = 0;
+            if (dist > 0) { /* coincident centres: pushed along x */
+                double h = pn / dist;
+                fx = h * dx, fy = h * dy;
+            }
+            f[2 * i] -= fx, f[2 * i + 1] -= fy;
+            f[2 * j] += fx, f[2 * j + 1] += fy;
+            virial += pn * dist, wr += pn * sum;
+            if (full) lo = fmax(lo, d / fmin(g[i].r, g[j].r)), nc++;
+        }
+        part[2 * c] = virial, part[2 * c + 1] = wr;
+    }
+    *largest = lo, *contacts = nc;
+}
+
+/* Forces of the springs and the body force into f (2 per disc); returns the largest |F|, in
+ * *power the discs' share of F.v (v: their velocities) and in S->ff their sum of |F|^2. With `full`, the report's contact counts,
  * walls and largest overlap too. */
 static double forces(fire_state *S, double *f, const double *v, double *power, gb_fire_report *rep, int full)
 {
     const gb_fire_world *w = S->w;
     const gb_grain *g = w->g;
-    if (w->body[0] != 0 || w->body[1] != 0)
-        for (int i = 0; i < w->n; i++) {
+    const int n = w->n, nb = blocks(n);
+    const double bx = w->body[0], by = w->body[1];
+    if (bx != 0 || by != 0) {
+#pragma omp parallel for schedule(static) if (S->par)
+        for (int i = 0; i < n; i++) {
             double a = PI * g[i].r * g[i].r;
-            f[2 * i] = w->body[0] * a, f[2 * i + 1] = w->body[1] * a;
+            f[2 * i] = bx * a, f[2 * i + 1] = by * a;
         }
-    else
-        memset(f, 0, 2 * (size_t)w->n * sizeof(double));
-    double virial = 0, wr = 0;
+    } else
+        memset(f, 0, 2 * (size_t)n * sizeof(double));
+    double largest = 0, virial = 0, wr = 0;
+    int contacts = 0;
+    pair_forces(S, 0, f, full, &contacts, &largest);
+    pair_forces(S, 1, f, full, &contacts, &largest);
+    for (int c = 0; c < S->n_chunks; c++) wr += S->part[2 * c + 1], virial += S->part[2 * c];
     if (full) {
-        rep->contacts = rep->wall_contacts = 0, rep->largest_overlap = 0;
+        rep->contacts = contacts, rep->wall_contacts = 0, rep->largest_overlap = largest;
         memset(rep->wall, 0, sizeof rep->wall);
     }
-    for (int k = 0; k < S->n_gg; k++) {
-        int i = S->gg[2 * k], j = S->gg[2 * k + 1];
-        double dx = g[j].x - g[i].x, dy = g[j].y - g[i].y, sum = g[i].r + g[j].r, d2 = dx * dx + dy * dy;
-        if (d2 >= sum * sum) continue;
-        double dist = sqrt(d2), d = sum - dist, pn = w->kn_gg * d, fx = pn, fy = 0;
-        if (dist > 0) { /* coincident centres: pushed along x */
-            double q = pn / dist;
-            fx = q * dx, fy = q * dy;
-        }
-        f[2 * i] -= fx, f[2 * i + 1] -= fy;
-        f[2 * j] += fx, f[2 * j + 1] += fy;
-        virial += pn * dist, wr += pn * sum;
-        if (full) rep->largest_overlap = fmax(rep->largest_overlap, d / fmin(g[i].r, g[j].r)), rep->contacts++;
-    }
-    for (int k = 0; k < S->n_other; k++) {
+    for (int k = 0; k < S->n_other; k++) { /* few: the discs along the walls or the cavity */
         gb_pair *p = &S->L.p[S->other[k]];
         int i = p->i, j = p->j;
         gb_pair_geometry(p, &S->world);
@@ -79,41 +127,74 @@ static double forces(fire_state *S, double *f, const double *v, double *power, g
         if (full && !GB_IS_PARTICLE(j)) rep->wall[-1 - j] += pn, rep->wall_contacts++;
     }
     rep->virial = virial, S->wr = wr;
-    double worst = 0, P = 0;
-    for (int i = 0; i < w->n; i++) {
-        double q = f[2 * i] * f[2 * i] + f[2 * i + 1] * f[2 * i + 1];
-        if (q > worst || q != q) worst = q;
-        P += f[2 * i] * v[2 * i], P += f[2 * i + 1] * v[2 * i + 1];
+    double *part = S->part;
+#pragma omp parallel for schedule(static) if (S->par)
+    for (int b = 0; b < nb; b++) {
+        double worst = 0, P = 0, ff = 0;
+        for (int i = b * BLOCK, e = i + BLOCK < n ? i + BLOCK : n; i < e; i++) {
+            double q = f[2 * i] * f[2 * i] + f[2 * i + 1] * f[2 * i + 1];
+            if (q > worst || q != q) worst = q;
+            P += f[2 * i] * v[2 * i], P += f[2 * i + 1] * v[2 * i + 1], ff += q;
+        }
+        part[3 * b] = worst, part[3 * b + 1] = P, part[3 * b + 2] = ff;
     }
-    *power = P;
+    double worst = 0, P = 0, ff = 0;
+    for (int b = 0; b < nb; b++) {
+        if (part[3 * b] > worst || part[3 * b] != part[3 * b]) worst = part[3 * b];
+        P += part[3 * b + 1], ff += part[3 * b + 2];
+    }
+    *power = P, S->ff = ff;
     return sqrt(worst);
+}
+
+/* Rebuilds the list, its packed copies and their chunks. */
+static gb_status rebuild(fire_state *S, gb_error *err)
+{
+    gb_status st = gb_pairs_rebuild(&S->L, &S->world, err);
+    if (st) return st;
+    int n = S->w->n, np = S->L.n;
+    if (np > S->cap) {
+        int cap = np + np / 2 + 16, *gg = realloc(S->gg, 2 * (size_t)cap * sizeof(int));
+        if (gg) S->gg = gg;
+        int *other = gg ? realloc(S->other, (size_t)cap * sizeof(int)) : NULL;
+        if (other) S->other = other;
+        if (!gg || !other) return gb_fail(err, GB_ENOMEM, "out of memory for %d contact pairs", np);
+        S->cap = cap;
+    }
+    int gap = 0;
+    S->n_gg = S->n_other = 0;
+    for (int k = 0; k < np; k++) {
+        const gb_pair *p = &S->L.p[k];
+        if (p->j < 0) {
+            S->other[S->n_other++] = k;
+            continue;
+        }
+        S->gg[2 * S->n_gg] = p->i, S->gg[2 * S->n_gg++ + 1] = p->j;
+        if (p->j - p->i > gap) gap = p->j - p->i;
+    }
+    S->width = gap > CHUNK_MIN ? gap : CHUNK_MIN;
+    S->n_chunks = (n + S->width - 1) / S->width;
+    /* the chunks' 2 sums (at most n / CHUNK_MIN + 1 chunks), or the disc blocks' 3 */
+    int part = 2 * S->n_chunks + 3 * blocks(n) + 2;
+    if (part > S->part_cap) {
+        double *q = realloc(S->part, (size_t)part * sizeof(double));
+        int *chunk = q ? realloc(S->chunk, (size_t)part * sizeof(int)) : NULL;
+        if (q) S->part = q;
+        if (chunk) S->chunk = chunk;
+        if (!chunk) return gb_fail(err, GB_ENOMEM, "out of memory for %d grains", n);
+        S->part_cap = part;
+    }
+    for (int c = 0, k = 0; c <= S->n_chunks; c++) {
+        while (k < S->n_gg && S->gg[2 * k] < c * S->width) k++;
+        S->chunk[c] = k;
+    }
+    return GB_OK;
 }
 
 static void set_scale(fire_state *S, double scale)
 {
     S->scale = scale;
     for (int i = 0; S->w->r0 && i < S->w->n; i++) S->w->g[i].r = scale * S->w->r0[i];
-}
-
-/* Rebuilds the list and its packed copies. */
-static gb_status rebuild(fire_state *S, gb_error *err)
-{
-    gb_status st = gb_pairs_rebuild(&S->L, &S->world, err);
-    if (st) return st;
-    if (S->L.n > S->cap) {
-        int cap = S->L.n + S->L.n / 2 + 16, *gg = realloc(S->gg, 2 * (size_t)cap * sizeof(int));
-        if (gg) S->gg = gg;
-        int *other = gg ? realloc(S->other, (size_t)cap * sizeof(int)) : NULL;
-        if (other) S->other = other;
-        if (!gg || !other) return gb_fail(err, GB_ENOMEM, "out of memory for %d contact pairs", S->L.n);
-        S->cap = cap;
-    }
-    S->n_gg = S->n_other = 0;
-    for (int k = 0; k < S->L.n; k++) {
-        if (S->L.p[k].j >= 0) S->gg[2 * S->n_gg] = S->L.p[k].i, S->gg[2 * S->n_gg++ + 1] = S->L.p[k].j;
-        else S->other[S->n_other++] = k;
-    }
-    return GB_OK;
 }
 
 /* The list covers the pairs within its skin at the last rebuild: stale when displacements (drift2:
@@ -137,6 +218,7 @@ gb_status gb_fire_relax_scaled(const gb_fire_world *w, const gb_fire_goal *goal,
     memset(&S, 0, sizeof S);
     S.w = w, S.world = (gb_world){w->g, n, w->box, w->bp};
     double *v = calloc(len, sizeof(double)), *f = calloc(len, sizeof(double));
+    S.par = n >= PARALLEL && getenv("OMP_NUM_THREADS");
     gb_status st = GB_OK;
     if (!v || !f) {
         st = gb_fail(err, GB_ENOMEM, "out of memory for the relaxation of %d grains", n);
@@ -191,17 +273,21 @@ gb_status gb_fire_relax_scaled(const gb_fire_world *w, const gb_fire_goal *goal,
                 alpha = A_START;
             }
             /* half a step back: the descent went past a minimum along v */
+#pragma omp parallel for schedule(static) if (S.par)
             for (int i = 0; i < n; i++) w->g[i].x -= 0.5 * dt * v[2 * i], w->g[i].y -= 0.5 * dt * v[2 * i + 1];
             if (free_scale) set_scale(&S, S.scale * exp(-0.5 * dt * v[2 * n] / c));
             memset(v, 0, len * sizeof(double));
+            S.vv = 0;
         }
-        /* semi-implicit Euler: the velocity first, mixed towards the force while descending (in
-         * the pass over the discs below, with their move) */
-        double vv = 0, ff = 0, h = dt * inv_m;
-        for (size_t k = 0; k < len; k++) v[k] += h * f[k], vv += v[k] * v[k], ff += f[k] * f[k];
+        /* semi-implicit Euler: the velocity first, v + h F, mixed towards the force while descending
+         * (in the pass over the discs below, with their move); the mix needs |v + h F|^2, which is
+         * |v|^2 + 2 h F.v + h^2 |F|^2 from the sums the last step and the force pass took (one pass
+         * over the discs fewer) */
+        const double h = dt * inv_m, ff = S.ff + f[2 * n] * f[2 * n];
+        const double vv = fmax(0, S.vv + 2 * h * (P > 0 ? P : 0) + h * h * ff);
         const double keep = P > 0 && ff > 0 ? 1 - alpha : 1, mix = P > 0 && ff > 0 ? alpha * sqrt(vv / ff) : 0;
         double next = S.scale;
-        v[2 * n] = keep * v[2 * n] + mix * f[2 * n];
+        v[2 * n] = keep * (v[2 * n] + h * f[2 * n]) + mix * f[2 * n];
         if (free_scale) {
             /* the radii grow at most `ramp` in ln(scale) per step, so that no contact closes by
              * more than a small share of a radius between two force evaluations */
@@ -212,19 +298,29 @@ gb_status gb_fire_relax_scaled(const gb_fire_world *w, const gb_fire_goal *goal,
             double step = target_ln - log(S.scale), grow = step > 0 ? goal->ramp : -goal->ramp;
             next = fabs(step) <= goal->ramp ? goal->scale_to : S.scale * exp(grow);
         }
-        /* one pass over the discs: the velocity mixed, the move, the radii, the drift since the
-         * pair list's rebuild */
+        /* one pass over the discs: the velocity, the move, the radii, the drift since the pair
+         * list's rebuild, |v|^2 */
         S.scale = next;
         double drift2 = 0;
         const double *r0 = w->r0;
         gb_grain *g = w->g;
-        for (int i = 0; i < n; i++) {
-            v[2 * i] = keep * v[2 * i] + mix * f[2 * i], v[2 * i + 1] = keep * v[2 * i + 1] + mix * f[2 * i + 1];
-            g[i].x += dt * v[2 * i], g[i].y += dt * v[2 * i + 1];
-            if (r0) g[i].r = next * r0[i];
-            double q = gb_pairs_grain_drift2(&S.L, &S.world, i);
-            if (q > drift2) drift2 = q;
+        const int nb = blocks(n);
+#pragma omp parallel for schedule(static) if (S.par) reduction(max : drift2)
+        for (int b = 0; b < nb; b++) {
+            double sv = 0;
+            for (int i = b * BLOCK, e = i + BLOCK < n ? i + BLOCK : n; i < e; i++) {
+                double *u = v + 2 * i, *F = f + 2 * i;
+                u[0] = keep * (u[0] + h * F[0]) + mix * F[0], u[1] = keep * (u[1] + h * F[1]) + mix * F[1];
+                g[i].x += dt * u[0], g[i].y += dt * u[1];
+                if (r0) g[i].r = next * r0[i];
+                double q = gb_pairs_grain_drift2(&S.L, &S.world, i);
+                if (q > drift2) drift2 = q;
+                sv += u[0] * u[0] + u[1] * u[1];
+            }
+            S.part[b] = sv;
         }
+        S.vv = v[2 * n] * v[2 * n];
+        for (int b = 0; b < nb; b++) S.vv += S.part[b];
         if ((st = refresh(&S, drift2, err))) goto done;
         worst = forces(&S, f, v, &P, rep, 0);
     }
@@ -245,7 +341,7 @@ gb_status gb_fire_relax_scaled(const gb_fire_world *w, const gb_fire_goal *goal,
     }
 done:
     gb_pairs_free(&S.L);
-    free(S.gg), free(S.other);
+    free(S.gg), free(S.other), free(S.chunk), free(S.part);
     free(v), free(f);
     return st;
 }
