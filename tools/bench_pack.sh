@@ -13,10 +13,11 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=$root/${1:-build}; shift || true
 sizes=${*:-10000 100000}
-# FIRE runs on OpenMP's threads when OMP_NUM_THREADS is set (one thread without it; the packing is
-# the same bits whatever their number); on a machine other jobs load, OMP_WAIT_POLICY=passive keeps
-# a waiting thread from spinning on the core the others need.
-echo "machine: $(nproc --all) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); $(date -u '+%Y-%m-%d %H:%M'); load average $(cut -d' ' -f1-3 /proc/loadavg); OMP_NUM_THREADS=${OMP_NUM_THREADS:-unset} OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-unset}"
+# THREADS=n (default 1) puts `threads: n` in the scene's solver section: FIRE then runs on n OpenMP
+# threads (the packing is the same bits whatever their number); on a machine other jobs load,
+# OMP_WAIT_POLICY=passive keeps a waiting thread from spinning on the core the others need.
+threads=${THREADS:-1}
+echo "machine: $(nproc --all) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); $(date -u '+%Y-%m-%d %H:%M'); load average $(cut -d' ' -f1-3 /proc/loadavg); threads $threads, OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-unset}"
 echo
 echo "| discs | seconds: total [CPU] (place / grow / settle / equilibrium) | FIRE iterations: grow + settle | CPU us per iteration | peak memory [MB] | porosity | coordination (without rattlers) | rattlers | mean stress / target | largest fixing force / accuracy |"
 echo "|---:|---|---|---:|---:|---:|---|---:|---:|---:|"
@@ -28,6 +29,7 @@ for n in $sizes; do
                                 for (k = 1; k <= 3; k++) s += 1 / (3 * pi * r[k] * r[k]);
                                 printf "%.6g", sqrt(n / s / 0.84) }')
   sed -e "s/right: 24.4/right: $side/; s/top: 24.4/top: $side/; s/count: 1000$/count: $n/" \
+      -e "s/^solver: {/solver: {threads: $threads, /" \
     "$root/validation/packing/box_growth.yaml" > "$d/scene.yaml"
   grep -q "count: $n$" "$d/scene.yaml" || { echo "bench_pack.sh: could not make the scene for $n discs" >&2; exit 1; }
   /usr/bin/time -v "$build/gembem" pack "$d/scene.yaml" -o "$d/out" --overwrite --quiet 2> "$d/time.log" ||

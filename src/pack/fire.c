@@ -30,10 +30,10 @@ static const double DT_MAX = 0.5;
  *   even chunks run at once, then the odd ones, each disc's sum in an order fixed by W. The discs
  *   are numbered by rows of cells (pack.c's sort_by_cell), so j - i is about two rows of discs.
  * Below PARALLEL discs the threads' start costs more than they save (the results are the same).
- * The threads run only when OMP_NUM_THREADS asks for them: libgomp's threads spin while they wait
- * at the end of a loop, and on a machine other jobs load a spinning thread holds the core the
- * other one needs (1e5 discs on 2 threads at load 3-5: 11.4 minutes against 2.6 on one;
- * OMP_WAIT_POLICY=passive 2.5; docs/benchmarks.md), as CHOLMOD's threads did (src/global). */
+ * The threads run only when the scene's solver.threads asks for them (as in the solver's passes,
+ * src/gem/relax.c): libgomp's threads spin while they wait at the end of a loop, and on a machine
+ * other jobs load a spinning thread holds the core the other one needs (1e5 discs on 2 threads at
+ * load 3-5: 11.4 minutes against 2.6 on one; OMP_WAIT_POLICY=passive 2.5; docs/benchmarks.md). */
 enum { BLOCK = 2048, CHUNK_MIN = 1024, PARALLEL = 4096 };
 static int blocks(long m) { return (int)((m + BLOCK - 1) / BLOCK); }
 
@@ -53,6 +53,7 @@ typedef struct {
     double *part;       /* the blocks' and chunks' partial sums and maxima */
     double ff, vv;      /* the discs' sum of |F|^2 (forces), of |v|^2 (the step) */
     int part_cap;
+    int threads;        /* gb_fire_world's, at least 1 */
     int par;            /* the discs are many enough for the threads */
 } fire_state;
 
@@ -66,7 +67,7 @@ static void pair_forces(fire_state *S, int first, double *f, int full, int *cont
     const double kn = S->w->kn_gg;
     double *part = S->part, lo = *largest;
     int nc = *contacts;
-#pragma omp parallel for schedule(static) if (S->par) reduction(max : lo) reduction(+ : nc)
+#pragma omp parallel for schedule(static) num_threads(S->threads) if (S->par) reduction(max : lo) reduction(+ : nc)
     for (int q = 0; q < half; q++) {
         int c = first + 2 * q;
         double virial = 0, wr = 0;
@@ -99,7 +100,7 @@ static double forces(fire_state *S, double *f, const double *v, double *power, g
     const int n = w->n, nb = blocks(n);
     const double bx = w->body[0], by = w->body[1];
     if (bx != 0 || by != 0) {
-#pragma omp parallel for schedule(static) if (S->par)
+#pragma omp parallel for schedule(static) num_threads(S->threads) if (S->par)
         for (int i = 0; i < n; i++) {
             double a = PI * g[i].r * g[i].r;
             f[2 * i] = bx * a, f[2 * i + 1] = by * a;
@@ -128,7 +129,7 @@ static double forces(fire_state *S, double *f, const double *v, double *power, g
     }
     rep->virial = virial, S->wr = wr;
     double *part = S->part;
-#pragma omp parallel for schedule(static) if (S->par)
+#pragma omp parallel for schedule(static) num_threads(S->threads) if (S->par)
     for (int b = 0; b < nb; b++) {
         double worst = 0, P = 0, ff = 0;
         for (int i = b * BLOCK, e = i + BLOCK < n ? i + BLOCK : n; i < e; i++) {
@@ -218,7 +219,8 @@ gb_status gb_fire_relax_scaled(const gb_fire_world *w, const gb_fire_goal *goal,
     memset(&S, 0, sizeof S);
     S.w = w, S.world = (gb_world){w->g, n, w->box, w->bp};
     double *v = calloc(len, sizeof(double)), *f = calloc(len, sizeof(double));
-    S.par = n >= PARALLEL && getenv("OMP_NUM_THREADS");
+    S.threads = w->threads > 1 ? w->threads : 1; /* a world made without it: one */
+    S.par = n >= PARALLEL && S.threads > 1;
     gb_status st = GB_OK;
     if (!v || !f) {
         st = gb_fail(err, GB_ENOMEM, "out of memory for the relaxation of %d grains", n);
@@ -273,7 +275,7 @@ gb_status gb_fire_relax_scaled(const gb_fire_world *w, const gb_fire_goal *goal,
                 alpha = A_START;
             }
             /* half a step back: the descent went past a minimum along v */
-#pragma omp parallel for schedule(static) if (S.par)
+#pragma omp parallel for schedule(static) num_threads(S.threads) if (S.par)
             for (int i = 0; i < n; i++) w->g[i].x -= 0.5 * dt * v[2 * i], w->g[i].y -= 0.5 * dt * v[2 * i + 1];
             if (free_scale) set_scale(&S, S.scale * exp(-0.5 * dt * v[2 * n] / c));
             memset(v, 0, len * sizeof(double));
@@ -305,7 +307,7 @@ gb_status gb_fire_relax_scaled(const gb_fire_world *w, const gb_fire_goal *goal,
         const double *r0 = w->r0;
         gb_grain *g = w->g;
         const int nb = blocks(n);
-#pragma omp parallel for schedule(static) if (S.par) reduction(max : drift2)
+#pragma omp parallel for schedule(static) num_threads(S.threads) if (S.par) reduction(max : drift2)
         for (int b = 0; b < nb; b++) {
             double sv = 0;
             for (int i = b * BLOCK, e = i + BLOCK < n ? i + BLOCK : n; i < e; i++) {

@@ -20,6 +20,7 @@ typedef struct {
     double body[2];            /* body force per unit disc area */
     const double *r0;          /* the drawn radii, or NULL: the radii are held as they are */
     double area;               /* the region's, for the mean stress */
+    int threads;               /* OpenMP threads of the passes (the scene's solver.threads) */
 } gb_fire_world;
 
 /* What a relaxation must reach. With r0: either the scale ramps to scale_to, growing at most `ramp`

@@ -323,7 +323,8 @@ gb_status gb_pack_make(gb_scene *scene, const gb_bem_mesh *mesh, const gb_pack_d
     }
     gb_fire_world w = {scene->grains, n, mesh ? NULL : &scene->box, mesh ? &P.bp : NULL, scene->grain_grain.kn,
                        scene->grain_wall.kn, scene->grain_boundary.kn,
-                       {scene->body_force_per_area[0], scene->body_force_per_area[1]}, P.r, P.rg.area};
+                       {scene->body_force_per_area[0], scene->body_force_per_area[1]}, P.r, P.rg.area,
+                       scene->solver.threads};
     P.w = w;
     P.tol = SETTLE * scene->solver.accuracy;
     res->n = n;

@@ -2,7 +2,8 @@
 # gembem pack, checked by check_pack.py without gembem's code (its docstring says what), and:
 # a seeded packing made twice gives the same bytes; the solid fraction target is reached to 1e-9
 # (the radii are scaled to it); the stress target is within 2 % of the walls' stresses that gembem
-# run measures from the state; a run scene starts from the cavity packing's state.
+# run measures from the state; a run scene starts from the cavity packing's state; 4 500 discs
+# grown on 1 and on 2 threads (solver.threads) give the same bytes.
 #   run_pack.sh GEMBEM GMSH PYTHON
 set -u
 gembem=$1; gmsh=$2; python=$3; dir=$(cd "$(dirname "$0")" && pwd); root=$dir/../..
@@ -43,5 +44,16 @@ p = 0.5 * (float(row["s1"]) + float(row["s2"]))
 print(f"stress: the walls' mean stress {p:.6g}, target 1e5")
 sys.exit(0 if abs(p - 1e5) <= 0.02e5 else 1)
 PY
+# solver.threads: 4 500 discs (above FIRE's threshold for its threads) grown with 1 and 2 threads
+# give the same bytes (src/pack/fire.c's fixed decomposition)
+for t in 1 2; do
+  sed -e "s/count: 300/count: 4500/; s/right: 10,/right: 38,/; s/top: 10}/top: 38}/" \
+      -e "s/^solver: {/solver: {threads: $t, /" box_growth.yaml > threads$t.yaml
+  run pack threads$t.yaml -o threads$t
+done
+for f in state_grains.csv state_contacts.csv; do
+  cmp -s threads1/$f threads2/$f && echo "ok   $f: the same bytes on 1 and 2 threads" ||
+    { echo "FAIL $f differs between 1 and 2 threads"; fail=$((fail + 1)); }
+done
 echo "$fail failures"
 [ $fail -eq 0 ]

@@ -102,7 +102,7 @@ int main(int argc, char **argv)
     gb_box b = {cx + s * (box[0] - cx), cx + s * (box[1] - cx), cy + s * (box[2] - cy), cy + s * (box[3] - cy)};
     for (int i = 0; i < n; i++) g[i].x = cx + s * (g[i].x - cx), g[i].y = cy + s * (g[i].y - cy);
 
-    gb_fire_world w = {g, n, &b, NULL, kn, have_wall_kn ? kn_wall : kn, 0, {0, 0}, NULL, 0};
+    gb_fire_world w = {g, n, &b, NULL, kn, have_wall_kn ? kn_wall : kn, 0, {0, 0}, NULL, 0, 1};
     gb_fire_report rep;
     gb_error err = {0};
     gb_status st = gb_fire_relax(&w, tol, max_iter, &rep, &err);
