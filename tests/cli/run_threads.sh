@@ -3,6 +3,9 @@
 # with 2 threads gives the same bits, since every sum over pairs is taken in the pairs' order
 # (tests/cli/scenes/threads.yaml: 800 discs, more pairs than the threshold of the parallel update,
 # a friction relaxation and 3 strain steps of the line search). Also refused: threads 0.
+# Bits are compared on purpose: both runs make the same BLAS and UMFPACK calls with the same
+# OPENBLAS_NUM_THREADS (inherited); only gembem's own loops change their thread count, and their
+# sums are taken in a fixed order (the property under test, not an accident of one machine).
 set -u
 gembem=$1 packgen=$2; root=$(cd "$(dirname "$0")/../.." && pwd)
 source "$root/tests/csv.sh"

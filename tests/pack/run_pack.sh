@@ -45,7 +45,8 @@ print(f"stress: the walls' mean stress {p:.6g}, target 1e5")
 sys.exit(0 if abs(p - 1e5) <= 0.02e5 else 1)
 PY
 # solver.threads: 4 500 discs (above FIRE's threshold for its threads) grown with 1 and 2 threads
-# give the same bytes (src/pack/fire.c's fixed decomposition)
+# give the same bytes (src/pack/fire.c's fixed decomposition); FIRE calls no BLAS, so only its own loops'
+# thread count differs between the two runs
 for t in 1 2; do
   sed -e "s/count: 300/count: 4500/; s/right: 10,/right: 38,/; s/top: 10}/top: 38}/" \
       -e "s/^solver: {/solver: {threads: $t, /" box_growth.yaml > threads$t.yaml
