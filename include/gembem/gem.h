@@ -54,8 +54,8 @@ typedef struct {
     int rattlers;             /* grains with fewer than two contacts */
 } gb_step_report;
 
-/* Called after the initial state (step 0) and after every converged step. A non-OK status stops
- * the run with that error. */
+/* Called after the initial state (step 0) and after every converged step, after its output
+ * (gb_sim_run, gembem/run.h). A non-OK status stops the run with that error. */
 typedef gb_status (*gb_step_fn)(void *user, const gb_sim *sim, const gb_step_report *rep, gb_error *err);
 
 /* One iteration of a load step (solver.history). */
@@ -78,18 +78,12 @@ typedef void (*gb_iteration_fn)(void *user, const gb_iteration_report *rep);
  * status fails the step with that error. */
 typedef gb_status (*gb_within_step_fn)(void *user, const gb_sim *sim, gb_error *err);
 
-/* The scene must outlive the simulation. */
-gb_status gb_sim_create(const gb_scene *scene, gb_sim **out, gb_error *err);
-void gb_sim_free(gb_sim *sim);
-/* Calls fn after every iteration that did not converge (for solver.history); NULL: none. */
+/* Calls fn after every iteration that did not converge (for solver.history); NULL: none. gb_sim_run
+ * with an output sets its own. */
 void gb_sim_on_iteration(gb_sim *sim, gb_iteration_fn fn, void *user);
-/* Calls fn between the iterations of every relaxation; NULL: none. */
+/* Calls fn between the iterations of every relaxation; NULL: none. gb_sim_run with an output sets
+ * its own (checkpoints within a step). */
 void gb_sim_on_within_step(gb_sim *sim, gb_within_step_fn fn, void *user);
-
-/* Runs the whole loading program. A step that reaches the iteration cap returns GB_ENOCONV with a
- * message naming the step and its distance from convergence; the simulation then holds the state of
- * the last converged step. */
-gb_status gb_sim_run(gb_sim *sim, gb_step_fn on_step, void *user, gb_error *err);
 
 const gb_scene *gb_sim_scene(const gb_sim *sim);
 int gb_sim_n_grains(const gb_sim *sim);

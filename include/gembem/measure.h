@@ -25,7 +25,8 @@ typedef struct {
     double work_walls, work_body;
     double dissipation;      /* since the start (K 28, summed over iterations) */
     double dissipation_step; /* of the last load step */
-    double dissipation_step_k28; /* the same from the step's start and end states alone (K 25-28) */
+    double dissipation_step_k28; /* the same from the step's start and end states alone (K 25-28): NaN
+                                    from gb_micro_measure (a state), the run's measures fill it */
     double p_max;            /* largest single-contact share of the last step's dissipation */
     double balance;          /* W - D - (elastic energy - its initial value): the paper's check */
     /* The iteration's own books: the walls' work as they are moved (instant strain increments and

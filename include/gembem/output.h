@@ -9,8 +9,9 @@
 
 typedef struct gb_run_output gb_run_output;
 
-/* Creates (or, with overwrite, reuses) the run directory for a simulation not yet run (its scene's
- * hash, for resuming, is taken from its initial state). `command` is recorded in run_info.yaml. */
+/* Creates (or, with overwrite, reuses) the run directory for a simulation not yet run, for
+ * gb_sim_run (gembem/run.h) to write its steps into (the scene's hash, for resuming, is taken from
+ * its initial state). `command` is recorded in run_info.yaml. */
 gb_status gb_run_output_open(const char *dir, const gb_sim *sim, int overwrite, const char *command,
                              gb_run_output **out, gb_error *err);
 /* Reopens the run directory of an interrupted run (docs/run-directory.md, "Checkpoints and resume"): its
@@ -21,16 +22,6 @@ gb_status gb_run_output_resume(const char *dir, gb_sim *sim, const char *command
                                gb_error *err);
 /* Reads the scene's path from dir's checkpoint, into path. */
 gb_status gb_run_output_resume_scene(const char *dir, char *path, size_t cap, gb_error *err);
-/* One row of steps.csv (flushed at once), the snapshots the scene asks for at this step, and the
- * checkpoint when due (output.checkpoint_every, output.checkpoint_minutes). */
-gb_status gb_run_output_step(gb_run_output *o, const gb_sim *sim, const gb_step_report *rep, gb_error *err);
-/* One row of history.csv (solver.history), for gb_sim_on_iteration with o as user. A write error
- * is reported by the next gb_run_output_step or gb_run_output_close. */
-void gb_run_output_iteration(void *o, const gb_iteration_report *rep);
-/* For gb_sim_on_within_step with o as user: checkpoint.txt within the load step in progress when
- * output.checkpoint_minutes have passed since the last checkpoint (docs/run-directory.md, "Checkpoints and
- * resume"); a history.csv that could not be written stops the run here. */
-gb_status gb_run_output_within_step(void *o, const gb_sim *sim, gb_error *err);
 /* Writes the final state (state.yaml, state_grains.csv, state_contacts.csv), records the run's
  * status in run_info.yaml and frees o. */
 gb_status gb_run_output_close(gb_run_output *o, const gb_sim *sim, gb_status run_status, const char *message,

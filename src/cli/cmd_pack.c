@@ -4,6 +4,7 @@
 
 #include "cli/cli.h"
 #include "gembem/pack.h"
+#include "gembem/run.h"
 #include "io/file_util.h"
 
 static void usage(FILE *to)

@@ -7,11 +7,9 @@
 #include <unistd.h>
 
 #include "cli/cli.h"
-#include "gembem/gem.h"
-#include "gembem/output.h"
+#include "gembem/run.h"
 
 typedef struct {
-    gb_run_output *out;
     int progress;   /* stderr is a terminal */
     int quiet;
     struct timespec t0;
@@ -24,10 +22,11 @@ static double elapsed(const struct timespec *t0)
     return (double)(t.tv_sec - t0->tv_sec) + 1e-9 * (double)(t.tv_nsec - t0->tv_nsec);
 }
 
+/* Progress on a terminal: the loop (gb_sim_run) has written the step's files. */
 static gb_status on_step(void *user, const gb_sim *sim, const gb_step_report *r, gb_error *err)
 {
+    (void)err;
     run_ctx *c = user;
-    gb_status st = gb_run_output_step(c->out, sim, r, err);
     if (c->progress && !c->quiet) {
         /* a host has no box stresses: its steps show no stress ratio (steps.csv writes nan) */
         char ratio[48] = "";
@@ -36,7 +35,7 @@ static gb_status on_step(void *user, const gb_sim *sim, const gb_step_report *r,
         fprintf(stderr, "\rstep %d of %d%s  iterations %ld  elapsed %.1f s   ", r->step, r->total_steps, ratio,
                 r->iterations, elapsed(&c->t0));
     }
-    return st;
+    return GB_OK;
 }
 
 static void usage(FILE *to)
@@ -91,20 +90,19 @@ int gb_cli_run(int argc, char **argv)
         gb_scene_free(&scene);
         return gb_cli_report(&err);
     }
-    run_ctx ctx = {NULL, isatty(2), quiet, {0, 0}};
+    run_ctx ctx = {isatty(2), quiet, {0, 0}};
     clock_gettime(CLOCK_MONOTONIC, &ctx.t0);
-    if (resume ? gb_run_output_resume(dir, sim, command, &ctx.out, &err)
-               : gb_run_output_open(dir, sim, overwrite, command, &ctx.out, &err)) {
+    gb_run_output *out = NULL;
+    if (resume ? gb_run_output_resume(dir, sim, command, &out, &err)
+               : gb_run_output_open(dir, sim, overwrite, command, &out, &err)) {
         gb_sim_free(sim);
         gb_scene_free(&scene);
         return gb_cli_report(&err);
     }
-    if (scene.solver.history) gb_sim_on_iteration(sim, gb_run_output_iteration, ctx.out);
-    gb_sim_on_within_step(sim, gb_run_output_within_step, ctx.out);
-    gb_status st = gb_sim_run(sim, on_step, &ctx, &err);
+    gb_status st = gb_sim_run(sim, out, on_step, &ctx, &err);
     if (ctx.progress && !quiet) fprintf(stderr, "\n");
     gb_error close_err = {0};
-    gb_status cst = gb_run_output_close(ctx.out, sim, st, st ? err.msg : NULL, &close_err);
+    gb_status cst = gb_run_output_close(out, sim, st, st ? err.msg : NULL, &close_err);
     int code = 0;
     if (st) code = gb_cli_report(&err);
     else if (cst) code = gb_cli_report(&close_err);

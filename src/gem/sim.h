@@ -5,6 +5,7 @@
 
 #include "contact/pairs.h"
 #include "gembem/gem.h"
+#include "gembem/run.h"
 #include "hybrid/host.h"
 
 /* How the walls move during one relaxation. */
@@ -125,6 +126,7 @@ struct gb_sim {
     double energy0;           /* elastic energy of the initial state */
     gb_sim_position pos;
     gb_sim_step cur;          /* the load step in progress */
+    gb_run_profile profile;   /* the loop's phases (src/run/program.c) */
     gb_within_step_fn on_within_step; /* between two iterations of a relaxation (checkpoints) */
     void *on_within_step_user;
 };

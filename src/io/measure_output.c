@@ -1,6 +1,6 @@
-/* The step's measures in the run directory: localisation.csv (a row per step) and, in fields/,
- * the grains' strain and D2min, the triangulation for ParaView, the sliding contacts and the
- * host's stress around its cavity. Stateless: the step's start is the simulation's saved state. */
+/* The step's measures (src/measure/step.c) in the run directory: localisation.csv (a row per step)
+ * and, in fields/, the grains' strain and D2min, the triangulation for ParaView, the sliding
+ * contacts and the host's stress around its cavity. */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
 #include <float.h>
@@ -11,76 +11,10 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "gem/sim.h"
-#include "gembem/strain_field.h"
 #include "io/file_util.h"
-#include "measure/step_measures.h"
+#include "io/measure_output.h"
 
-#define LOC_FRACTION 0.1 /* the most strained 10 % of the area */
-
-/* The granular zone's measures of one step. */
-typedef struct {
-    int n;
-    double *x0, *x1, *r;
-    gb_triangulation t;
-    gb_strain *tri, *grain;
-    int *grain_tri;
-    gb_d2min *d2;
-    gb_localisation loc;
-    gb_strain mean; /* of the triangulated zone */
-    double d2_range;
-    int tri_ok; /* 0: too few or collinear grains, no triangles */
-} zone;
-
-static void zone_free(zone *z)
-{
-    free(z->x0), free(z->x1), free(z->r), free(z->tri), free(z->grain), free(z->grain_tri), free(z->d2);
-    gb_triangulation_free(&z->t);
-}
-
-static gb_status zone_measure(const gb_sim *sim, zone *z, gb_error *err)
-{
-    memset(z, 0, sizeof *z);
-    int n = z->n = sim->n;
-    size_t m = (size_t)(n > 0 ? n : 1);
-    z->x0 = malloc(2 * m * sizeof(double)), z->x1 = malloc(2 * m * sizeof(double)), z->r = malloc(m * sizeof(double));
-    z->grain = malloc(m * sizeof *z->grain), z->grain_tri = malloc(m * sizeof(int)), z->d2 = calloc(m, sizeof *z->d2);
-    if (!z->x0 || !z->x1 || !z->r || !z->grain || !z->grain_tri || !z->d2)
-        return gb_fail(err, GB_ENOMEM, "out of memory for the measures of %d grains", n);
-    double dmax = 0;
-    for (int i = 0; i < n; i++) {
-        z->x0[2 * i] = sim->saved.g[i].x, z->x0[2 * i + 1] = sim->saved.g[i].y;
-        z->x1[2 * i] = sim->g[i].x, z->x1[2 * i + 1] = sim->g[i].y;
-        z->r[i] = sim->g[i].r;
-        dmax = fmax(dmax, 2 * z->r[i]);
-    }
-    /* The triangulation drops edges with a gap wider than the largest diameter (gap < 0). A zone
-     * that cannot be triangulated (fewer than 3 grains, collinear, qhull's precision failure) has
-     * no triangles: a measure, not a reason to stop the run. */
-    gb_error terr = {0};
-    gb_status st = gb_triangulate(n, z->x0, z->r, -1, &z->t, &terr);
-    if (st && st != GB_EINPUT && st != GB_ENUMERIC) return gb_fail(err, st, "%s", terr.msg);
-    z->tri_ok = !st && z->t.n > 0;
-    z->tri = malloc((size_t)(z->t.n > 0 ? z->t.n : 1) * sizeof *z->tri);
-    if (!z->tri) return gb_fail(err, GB_ENOMEM, "out of memory for %d triangles", z->t.n);
-    gb_strain_triangles(&z->t, z->x0, z->x1, z->tri);
-    gb_strain_points(&z->t, z->tri, n, z->grain, z->grain_tri);
-    gb_strain_mean(z->t.n, z->tri, &z->mean);
-    if (z->tri_ok && (st = gb_localisation_index(z->t.n, z->tri, LOC_FRACTION, &z->loc, err))) return st;
-    /* The index is a share of the zone's shear: undefined where that shear is noise (a relaxation,
-     * step 0), not a ratio of two roundings. A grain's place is known to the step's accuracy over
-     * its stiffness, a / kn, a strain to that over a diameter; and to the rounding of coordinates. */
-    double dmean = 0;
-    for (int i = 0; i < n; i++) dmean += 2 * z->r[i] / n;
-    double noise = n > 0 ? fmax(sim->accuracy / sim->scene->grain_grain.kn, 1e3 * DBL_EPSILON * gb_sim_extent(sim)) / dmean : 0;
-    if (!(z->loc.mean_gamma > noise)) z->loc.index = NAN;
-    /* D2min over the first shell and near contacts: touching grains are at most the largest
-     * diameter apart. */
-    z->d2_range = 1.5 * dmax;
-    return n > 0 && dmax > 0 ? gb_d2min_points(n, z->x0, z->x1, z->d2_range, z->d2, err) : GB_OK;
-}
-
-static gb_status write_grains(const char *path, const zone *z, gb_error *err)
+static gb_status write_grains(const char *path, const gb_zone_measures *z, gb_error *err)
 {
     gb_atomic_file a;
     gb_status st = gb_atomic_open(&a, path, err);
@@ -97,7 +31,7 @@ static gb_status write_grains(const char *path, const zone *z, gb_error *err)
     return gb_atomic_commit(&a, err);
 }
 
-static void vtu_cell_array(FILE *f, const char *name, const zone *z, size_t offset)
+static void vtu_cell_array(FILE *f, const char *name, const gb_zone_measures *z, size_t offset)
 {
     fprintf(f, "<DataArray type=\"Float64\" Name=\"%s\" format=\"ascii\">\n", name);
     for (int k = 0; k < z->t.n; k++) fprintf(f, "%.10e\n", *(const double *)((const char *)&z->tri[k] + offset));
@@ -105,7 +39,7 @@ static void vtu_cell_array(FILE *f, const char *name, const zone *z, size_t offs
 }
 
 /* The triangles on the grains' centres at the step's end, their strain as cell data. */
-static gb_status write_triangles(const char *path, const zone *z, gb_error *err)
+static gb_status write_triangles(const char *path, const gb_zone_measures *z, gb_error *err)
 {
     gb_atomic_file a;
     gb_status st = gb_atomic_open(&a, path, err);
@@ -199,7 +133,7 @@ static gb_status write_host(const char *dir, int step, const gb_host_measures *m
 }
 
 /* One row of localisation.csv, the file created (with its header) at step 0. */
-static gb_status write_row(const char *dir, int step, const zone *z, int n_sliding, const gb_host_measures *hm,
+static gb_status write_row(const char *dir, int step, const gb_zone_measures *z, int n_sliding, const gb_host_measures *hm,
                            gb_error *err)
 {
     char path[1200];
@@ -229,38 +163,27 @@ static gb_status write_row(const char *dir, int step, const zone *z, int n_slidi
     return GB_OK;
 }
 
-gb_status gb_measure_write_step(const char *dir, const gb_sim *sim, int step, int fields, gb_error *err)
+gb_status gb_measure_write_step(const char *dir, const gb_step_measures *m, gb_error *err)
 {
     char path[1200];
+    int step = m->step, fields = m->fields;
     snprintf(path, sizeof path, "%s/fields", dir);
     if (fields && mkdir(path, 0777) != 0 && errno != EEXIST)
         return gb_fail(err, GB_EIO, "%s: %s", path, strerror(errno));
-    zone z;
-    gb_host_measures hm;
-    memset(&hm, 0, sizeof hm);
-    int n_sliding = gb_measure_sliding(sim, NULL, 0);
-    gb_sliding_contact *sl = malloc((size_t)(n_sliding > 0 ? n_sliding : 1) * sizeof *sl);
-    gb_status st = sl ? zone_measure(sim, &z, err) : gb_fail(err, GB_ENOMEM, "out of memory");
-    if (!sl) memset(&z, 0, sizeof z);
-    if (!st) gb_measure_sliding(sim, sl, n_sliding);
-    /* the row needs the host's wall only; the empty cavity and the ring are for the files */
-    if (!st && sim->host) st = gb_host_measure(sim, !fields, &hm, err);
-    if (!st && fields) {
+    gb_status st = GB_OK;
+    if (fields) {
         snprintf(path, sizeof path, "%s/fields/grains_%06d.csv", dir, step);
-        st = write_grains(path, &z, err);
+        st = write_grains(path, &m->zone, err);
     }
-    if (!st && fields && z.tri_ok) {
+    if (!st && fields && m->zone.tri_ok) {
         snprintf(path, sizeof path, "%s/fields/triangles_%06d.vtu", dir, step);
-        if (!(st = write_triangles(path, &z, err))) st = add_to_pvd(dir, step, err);
+        if (!(st = write_triangles(path, &m->zone, err))) st = add_to_pvd(dir, step, err);
     }
     if (!st && fields) {
         snprintf(path, sizeof path, "%s/fields/sliding_%06d.csv", dir, step);
-        st = write_sliding(path, sl, n_sliding, err);
+        st = write_sliding(path, m->sliding, m->n_sliding, err);
     }
-    if (!st && fields && sim->host) st = write_host(dir, step, &hm, err);
-    if (!st) st = write_row(dir, step, &z, n_sliding, sim->host ? &hm : NULL, err);
-    free(sl);
-    zone_free(&z);
-    gb_host_measures_free(&hm);
+    if (!st && fields && m->has_host) st = write_host(dir, step, &m->host, err);
+    if (!st) st = write_row(dir, step, &m->zone, m->n_sliding, m->has_host ? &m->host : NULL, err);
     return st;
 }

@@ -11,15 +11,16 @@
 #include "core/clock.h"
 #include "gem/sim.h"
 #include "gembem/measure.h"
+#include "gembem/run.h"
 #include "io/host_output.h"
-#include "gembem/output.h"
 #include "io/checkpoint.h"
 #include "io/file_util.h"
+#include "io/measure_output.h"
+#include "io/run_output.h"
 #include "io/scene_report.h"
 #include "io/run_record.h"
 #include "io/run_verdict.h"
 #include "io/steps_csv.h"
-#include "measure/step_measures.h"
 
 #define GB_STR_(x) #x
 #define GB_STR(x) GB_STR_(x)
@@ -42,7 +43,8 @@ struct gb_run_output {
     double last_checkpoint;   /* gb_clock_seconds() */
     int interrupted;          /* earlier runs of the directory that ended without a status */
     char resumed[4096];       /* run_info.yaml's "resumed:" list items */
-    gb_run_times times;
+    double started_seconds;   /* gb_clock_seconds() when this process opened the directory */
+    double close_seconds;     /* spent writing the final state */
 };
 
 /* The files a run appends to (or rewrites in place at their end), cut back to their checkpoint's
@@ -77,7 +79,7 @@ static gb_status write_info(const gb_run_output *o, const gb_sim *sim, const cha
     gb_scene_report_write(a.f, sc);
     gb_run_record_settings(a.f, sc);
     gb_run_record_machine(a.f);
-    gb_run_record_times(a.f, sim, &o->times);
+    gb_run_record_times(a.f, sim, gb_clock_seconds() - o->started_seconds, o->close_seconds);
     if (verdict) gb_run_verdict_write(a.f, verdict);
     fprintf(a.f, "status: %s\n", status);
     if (o->resumed[0])
@@ -118,7 +120,7 @@ gb_status gb_run_output_open(const char *dir, const gb_sim *sim, int overwrite, 
         return gb_fail(err, GB_EIO, "%s: %s", path, strerror(errno));
     }
     snprintf(path, sizeof path, "%s/scene.yaml", dir);
-    o->times.started = gb_clock_seconds();
+    o->started_seconds = gb_clock_seconds();
     if ((st = gb_copy_file(scene->path, path, err)) || (st = write_info(o, sim, "running", NULL, NULL, err))) {
         free(o);
         return st;
@@ -179,8 +181,7 @@ void gb_run_output_iteration(void *user, const gb_iteration_report *r)
 
 static int snapshot_due(const gb_scene *s, int step);
 static gb_status add_snapshot(gb_run_output *o, int step, gb_error *err);
-static gb_status write_step(gb_run_output *o, const gb_sim *sim, const gb_step_report *r, double *measures,
-                            gb_error *err);
+
 
 /* The value of "key: " on its line of run_info.yaml's text, quotes dropped, or "". */
 static void info_value(const char *text, const char *key, char *out, size_t cap)
@@ -311,7 +312,7 @@ gb_status gb_run_output_resume(const char *dir, gb_sim *sim, const char *command
     if (!st) st = open_append(o, "micromechanics.csv", &o->micro, err);
     if (!st && o->scene->host.present) st = open_append(o, "host_steps.csv", &o->host, err);
     if (!st && o->scene->solver.history) st = open_append(o, "history.csv", &o->history, err);
-    o->times.started = gb_clock_seconds();
+    o->started_seconds = gb_clock_seconds();
     if (!st) st = write_info(o, sim, "running", NULL, NULL, err);
     if (st) {
         FILE *files[4] = {o->steps, o->micro, o->host, o->history};
@@ -407,25 +408,19 @@ gb_status gb_run_output_within_step(void *user, const gb_sim *sim, gb_error *err
     return checkpoint(o, sim, err);
 }
 
-gb_status gb_run_output_step(gb_run_output *o, const gb_sim *sim, const gb_step_report *r, gb_error *err)
+int gb_run_output_fields_due(const gb_run_output *o, int step)
 {
-    double t0 = gb_clock_seconds(), measures = 0;
-    o->times.steps += r->seconds;
-    gb_status st = write_step(o, sim, r, &measures, err);
-    o->times.measures += measures;
-    o->times.output += gb_clock_seconds() - t0 - measures;
-    return st;
+    return o->scene->measures_every > 0 && step % o->scene->measures_every == 0;
 }
 
-static gb_status write_step(gb_run_output *o, const gb_sim *sim, const gb_step_report *r, double *measures,
-                            gb_error *err)
+gb_status gb_run_output_step(gb_run_output *o, const gb_sim *sim, const gb_step_report *r,
+                             const gb_step_measures *ms, gb_error *err)
 {
     gb_test_kill_point(o->steps);
     gb_steps_csv_row(o->steps, r);
     if (fflush(o->steps) != 0 || ferror(o->steps)) return gb_fail(err, GB_EIO, "%s/steps.csv: write failed", o->dir);
     if (o->history_failed) return gb_fail(err, GB_EIO, "%s/history.csv: write failed", o->dir);
-    gb_micro m;
-    gb_micro_measure(sim, &m);
+    const gb_micro m = ms->micro;
     gb_test_kill_point(o->micro);
     fprintf(o->micro, "%d,%d,%d,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.6f,%.10e,%.10e,%.10e,%.10e,%.10e,%.6f,%.17g,"
                       "%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.10e,%.6f,%.10e,%.10e,%.10e\n",
@@ -441,12 +436,7 @@ static gb_status write_step(gb_run_output *o, const gb_sim *sim, const gb_step_r
     char path[1024];
     if (o->host) gb_test_kill_point(o->host);
     if (o->host && (st = gb_host_write_step(o->host, r->step, sim, err))) return st;
-    /* Strain field, D2min, localisation, sliding contacts, host around the cavity (src/measure). */
-    int fields = sc->measures_every > 0 && r->step % sc->measures_every == 0;
-    double t0 = gb_clock_seconds();
-    st = gb_measure_write_step(o->dir, sim, r->step, fields, err);
-    *measures = gb_clock_seconds() - t0;
-    if (st) return st;
+    if ((st = gb_measure_write_step(o->dir, ms, err))) return st;
     if ((sc->contacts_every > 0 && r->step % sc->contacts_every == 0) || snapshot_due(sc, r->step)) {
         snprintf(path, sizeof path, "%s/contacts", o->dir);
         if ((st = gb_make_dirs(path, err))) return st;
@@ -491,7 +481,7 @@ gb_status gb_run_output_close(gb_run_output *o, const gb_sim *sim, gb_status run
     double t0 = gb_clock_seconds();
     if (!st && sim) st = gb_state_write(o->dir, sim, err);
     if (!st && sim && sim->host) st = gb_host_write_outputs(o->dir, sim, err);
-    o->times.output += gb_clock_seconds() - t0;
+    o->close_seconds += gb_clock_seconds() - t0;
     /* The verdict of every step the directory holds (a resumed run's earlier ones too), and the
      * warnings where the result is noise (docs/run-directory.md#warnings): said once more on stderr. */
     gb_run_verdict verdict;

@@ -10,6 +10,7 @@
 #include "core/clock.h"
 #include "core/memory.h"
 #include "gembem/petsc.h"
+#include "gembem/run.h"
 #include "io/scene_report.h"
 #include "solver/solver.h"
 
@@ -105,20 +106,23 @@ void gb_run_record_machine(FILE *f)
     fprintf(f, "  omp_threads: \"%s\"   # OMP_NUM_THREADS\n", omp ? omp : "default");
 }
 
-void gb_run_record_times(FILE *f, const gb_sim *sim, const gb_run_times *t)
+void gb_run_record_times(FILE *f, const gb_sim *sim, double total, double close)
 {
-    fprintf(f, "time:   # seconds of this process (after a resume: since it), by phase\n");
-    fprintf(f, "  total: %.3f\n  load_steps: %.3f   # the solver, contact detection included\n",
-            gb_clock_seconds() - t->started, t->steps);
+    gb_run_profile p = {0, 0, 0, 0};
+    if (sim) p = gb_sim_profile(sim);
+    fprintf(f, "time:   # seconds of this process (after a resume: since it), by phase\n  total: %.3f\n", total);
+    fprintf(f, "  control: %.3f   # the steps' loads, saved states, cut-backs\n", p.control);
+    fprintf(f, "  solve: %.3f   # relaxations (checkpoints within a step included)\n", p.solve);
     if (sim) {
-        fprintf(f, "  contact_detection: %.3f\n", sim->detect_seconds);
+        fprintf(f, "  contact_detection: %.3f   # within solve\n", sim->detect_seconds);
         const gb_global_stats *g = gb_solver_statistics(sim);
         if (g) {
-            fprintf(f, "  assembly: %.3f\n  analysis: %.3f   # %ld symbolic analyses\n"
-                       "  factorisation: %.3f   # %ld factorisations\n  solve: %.3f\n",
+            fprintf(f, "  assembly: %.3f   # within solve\n  analysis: %.3f   # within solve, %ld symbolic analyses\n"
+                       "  factorisation: %.3f   # within solve, %ld factorisations\n  linear_solve: %.3f   # within solve\n",
                     g->assemble, g->analyse, g->analyses, g->factorise, g->factorisations, g->solve);
         }
     }
-    fprintf(f, "  measures: %.3f   # localisation.csv, fields/\n  output: %.3f   # the other files, checkpoints\n",
-            t->measures, t->output);
+    fprintf(f, "  measure: %.3f   # steps.csv's errors, micromechanics.csv, localisation.csv, fields/\n", p.measure);
+    fprintf(f, "  output: %.3f   # the steps' other files, checkpoints, and the final state (%.3f)\n", p.output + close,
+            close);
 }

@@ -7,19 +7,13 @@
 
 #include "gembem/gem.h"
 
-/* The times that the run directory's writer measures itself (seconds, this process). */
-typedef struct {
-    double started;   /* gb_clock_seconds() when the process opened the run directory */
-    double steps;     /* the load steps' wall time (steps.csv's seconds) */
-    double measures;  /* localisation.csv and fields/ (src/measure) */
-    double output;    /* every other file of the steps, the checkpoints and the final state */
-} gb_run_times;
-
 /* settings: the scene's every setting, defaults spelled out. */
 void gb_run_record_settings(FILE *f, const gb_scene *sc);
 /* machine: CPU model and cores, memory, the BLAS's and OpenMP's threads. */
 void gb_run_record_machine(FILE *f);
-/* time: the split of this process's time by phase; sim may be NULL (no solver times). */
-void gb_run_record_times(FILE *f, const gb_sim *sim, const gb_run_times *t);
+/* time: the split of this process's time (total seconds since it opened the run directory) by the
+ * loop's phases (gb_sim_profile) and the solver's parts; close: the final state's writing. sim
+ * may be NULL (no phases yet). */
+void gb_run_record_times(FILE *f, const gb_sim *sim, double total, double close);
 
 #endif

@@ -2,8 +2,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "gem/sim.h"
-#include "gembem/measure.h"
+#include "measure/step_measures.h"
 
 static const double PI = 3.14159265358979323846;
 
@@ -17,14 +16,13 @@ void gb_tensor2_principal(gb_tensor2 *t)
     t->angle_deg = a <= -90 ? a + 180 : a;
 }
 
-/* The step's dissipation as the paper computes it, from the step's start and end alone:
- * du_t of the whole step (K 25) in the tangent at the start, its elastic part dpt/kt (K 26), the
+/* du_t of the whole step (K 25) in the tangent at the start, its elastic part dpt/kt (K 26), the
  * slip (K 27) times the mean tangential force, zero if either end is zero (K 28). */
-static double step_dissipation_k28(const gb_sim *sim)
+double gb_micro_step_dissipation(const gb_sim_state *start, const gb_sim *sim)
 {
-    const gb_pair *a = sim->saved.p, *b = sim->pairs.p;
-    int na = sim->saved.n_pairs, nb = sim->pairs.n, ia = 0;
-    const gb_box *b0 = &sim->saved.box, *b1 = &sim->box;
+    const gb_pair *a = start->p, *b = sim->pairs.p;
+    int na = start->n_pairs, nb = sim->pairs.n, ia = 0;
+    const gb_box *b0 = &start->box, *b1 = &sim->box;
     double wall_dx[GB_N_WALLS][2] = {{b1->left - b0->left, 0}, {b1->right - b0->right, 0},
                                      {0, b1->bottom - b0->bottom}, {0, b1->top - b0->top}};
     double total = 0;
@@ -36,11 +34,11 @@ static double step_dissipation_k28(const gb_sim *sim)
         const gb_pair *p = &a[ia];
         if (!(p->d > 0) || p->pt == 0) continue;
         const gb_material *mat = gb_sim_material(sim, q->j);
-        if (!(mat->kt > 0) || GB_IS_PARTICLE(q->j)) continue; /* particles: not in the saved state */
-        const gb_grain *g0 = &sim->saved.g[q->i], *g1 = &sim->g[q->i];
+        if (!(mat->kt > 0) || GB_IS_PARTICLE(q->j)) continue; /* particles: not in a start state */
+        const gb_grain *g0 = &start->g[q->i], *g1 = &sim->g[q->i];
         double dx = g1->x - g0->x, dy = g1->y - g0->y, rot = g1->r * (g1->rot - g0->rot);
         if (q->j >= 0) {
-            const gb_grain *h0 = &sim->saved.g[q->j], *h1 = &sim->g[q->j];
+            const gb_grain *h0 = &start->g[q->j], *h1 = &sim->g[q->j];
             dx -= h1->x - h0->x, dy -= h1->y - h0->y, rot += h1->r * (h1->rot - h0->rot);
         } else {
             dx -= wall_dx[-1 - q->j][0], dy -= wall_dx[-1 - q->j][1];
@@ -86,7 +84,7 @@ void gb_micro_measure(const gb_sim *sim, gb_micro *m)
     m->dissipation = sim->dissipation;
     m->dissipation_step = sim->dissipation_step;
     m->p_max = sim->dissipation_step > 0 ? max_diss / sim->dissipation_step : 0;
-    m->dissipation_step_k28 = step_dissipation_k28(sim);
+    m->dissipation_step_k28 = NAN; /* of a step: gb_step_measure, from its start */
     m->balance = m->work - m->dissipation - (m->elastic_energy - sim->energy0);
     m->work_walls_iter = sim->work_walls_iter;
     m->relaxation = sim->relaxation;

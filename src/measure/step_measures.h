@@ -1,9 +1,11 @@
-/* Measures of one load step on a simulation (private to the library): the contacts sliding at
- * its end, the host's stress around its cavity, and the files of the run directory they go to. */
+/* Measures of one load step (private to the library): pure functions of the step's start and end
+ * states, computed by the run's measure phase (src/run/program.c) and written by src/io. */
 #ifndef GB_STEP_MEASURES_H
 #define GB_STEP_MEASURES_H
 
-#include "gembem/gem.h"
+#include "gem/sim.h"
+#include "gembem/measure.h"
+#include "gembem/strain_field.h"
 
 /* A contact at the Coulomb limit (K 13). */
 typedef struct {
@@ -52,9 +54,40 @@ typedef struct {
 gb_status gb_host_measure(const gb_sim *sim, int wall_only, gb_host_measures *m, gb_error *err);
 void gb_host_measures_free(gb_host_measures *m);
 
-/* The step's measures in the run directory `dir` (see docs/measures.md): one row of
- * localisation.csv (created at step 0) and, with `fields`, the files of fields/ for this step.
- * The step's increment runs from the step's start (the simulation's saved state) to its end. */
-gb_status gb_measure_write_step(const char *dir, const gb_sim *sim, int step, int fields, gb_error *err);
+/* The step's dissipation as the paper computes it from the step's start and end states alone
+ * (K 25-28): NaN-free, 0 without sliding. */
+double gb_micro_step_dissipation(const gb_sim_state *start, const gb_sim *end);
+
+/* The granular zone's strain over a step: the grains' centres at the start triangulated, each
+ * triangle's strain to the end, averaged at the grains, their D2min and the localisation index. */
+typedef struct {
+    int n;
+    double *x0, *x1, *r;  /* the grains' centres at the start and the end (2 per grain), radii */
+    gb_triangulation t;
+    gb_strain *tri, *grain;
+    int *grain_tri;
+    gb_d2min *d2;
+    gb_localisation loc;
+    gb_strain mean;       /* of the triangulated zone */
+    double d2_range;
+    int tri_ok;           /* 0: too few or collinear grains, no triangles */
+} gb_zone_measures;
+
+/* Everything measured of one load step (or of the initial state, step 0, start = end), as
+ * docs/measures.md lists: the micromechanics, the zone's strain, the sliding contacts and, with a
+ * host, its stress around the cavity (on the wall only unless `fields`: the fields/ files are due). */
+typedef struct {
+    int step, fields;
+    gb_micro micro;
+    gb_zone_measures zone;
+    gb_sliding_contact *sliding;
+    int n_sliding;
+    int has_host;
+    gb_host_measures host;
+} gb_step_measures;
+
+gb_status gb_step_measure(const gb_sim_state *start, const gb_sim *end, int step, int fields, gb_step_measures *m,
+                          gb_error *err);
+void gb_step_measures_free(gb_step_measures *m);
 
 #endif

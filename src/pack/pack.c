@@ -8,6 +8,7 @@
 
 #include "core/clock.h"
 #include "gembem/pack.h"
+#include "gembem/run.h"
 #include "pack/fire.h"
 #include "pack/place.h"
 #include "pack/region.h"
@@ -287,7 +288,7 @@ static gb_status equilibrium(packer *P, const gb_bem_mesh *mesh, gb_sim **sim, g
     s->checkpoint_every = 0;
     gb_status st = gb_scene_admit(s, mesh, err);
     if (!st) st = gb_sim_create(s, sim, err);
-    if (!st) st = gb_sim_run(*sim, on_step, P->res, err);
+    if (!st) st = gb_sim_run(*sim, NULL, on_step, P->res, err);
     if (!st) st = measure(*sim, P->res, err);
     P->res->seconds[GB_PACK_EQUILIBRIUM] = gb_clock_seconds() - t0;
     return st;

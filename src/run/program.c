@@ -6,6 +6,8 @@
 #include <string.h>
 
 #include "core/clock.h"
+#include "io/run_output.h"
+#include "measure/step_measures.h"
 #include "scene/admit.h"
 #include "solver/solver.h"
 
@@ -121,6 +123,16 @@ static gb_status apply_loads(gb_sim *sim, const gb_stage *sg, double h, gb_error
     }
 }
 
+/* The solve phase: a relaxation of the sub-step in progress, timed. */
+static gb_status relax(gb_sim *sim, const gb_wall_control *wc, long cap, double *max_force, double *residual,
+                       gb_error *err)
+{
+    double t0 = gb_clock_seconds();
+    gb_status st = gb_solver_relax(sim, wc, cap, &sim->cur.phase_iters, max_force, residual, err);
+    sim->profile.solve += gb_clock_seconds() - t0;
+    return st;
+}
+
 /* The sub-step in progress (sim->cur: from fraction t to t + h of the step's increment; the whole
  * step: t = 0, h = 1): its loads, unless a checkpoint within it has them applied already, then
  * relaxation to equilibrium; shear_mean_stress relaxes with the walls held, then restores the mean
@@ -149,7 +161,7 @@ static gb_status load_step(gb_sim *sim, const gb_stage *sg, double *max_force, d
         break;
     case GB_STAGE_SHEAR_MEAN:
         if (c->phase == GB_PHASE_RELAX) {
-            if ((st = gb_solver_relax(sim, &wc, cap, &c->phase_iters, max_force, residual, err))) return st;
+            if ((st = relax(sim, &wc, cap, max_force, residual, err))) return st;
             c->phase = GB_PHASE_MEAN;
         }
         wc.mode = GB_WALLS_MEAN;
@@ -157,7 +169,7 @@ static gb_status load_step(gb_sim *sim, const gb_stage *sg, double *max_force, d
         break;
     default: break;
     }
-    return gb_solver_relax(sim, &wc, cap - c->phase_iters, &c->phase_iters, max_force, residual, err);
+    return relax(sim, &wc, cap - c->phase_iters, max_force, residual, err);
 }
 
 /* The step in progress (sim->cur). A step that does not converge is cut back, as nonlinear finite
@@ -254,10 +266,37 @@ static gb_status step_failed(const gb_sim *sim, const gb_stage *sg, gb_status st
                    c->stage_step, sg->steps, msg);
 }
 
-gb_status gb_sim_run(gb_sim *sim, gb_step_fn on_step, void *user, gb_error *err)
+gb_run_profile gb_sim_profile(const gb_sim *sim) { return sim->profile; }
+
+/* The measure and output phases of a step (or of the initial state, step 0): the step's report
+ * from its end state, with an output the step's measures from its start (the saved state, not yet
+ * replaced by the end) and end, its files, then on_step. t: when the step's control and solve
+ * phases ended. */
+static gb_status measure_and_output(gb_sim *sim, gb_run_output *out, gb_step_fn on_step, void *user,
+                                    const gb_step_report *rep, double t, gb_error *err)
+{
+    gb_status st = GB_OK;
+    gb_step_measures m;
+    memset(&m, 0, sizeof m);
+    if (out) st = gb_step_measure(&sim->saved, sim, rep->step, gb_run_output_fields_due(out, rep->step), &m, err);
+    double t1 = gb_clock_seconds();
+    sim->profile.measure += t1 - t;
+    if (!st && out) st = gb_run_output_step(out, sim, rep, &m, err);
+    gb_step_measures_free(&m);
+    if (!st && on_step) st = on_step(user, sim, rep, err);
+    sim->profile.output += gb_clock_seconds() - t1;
+    return st;
+}
+
+gb_status gb_sim_run(gb_sim *sim, gb_run_output *out, gb_step_fn on_step, void *user, gb_error *err)
 {
     const gb_scene *sc = sim->scene;
     gb_status st = GB_OK;
+    double t = gb_clock_seconds();
+    if (out) {
+        gb_sim_on_within_step(sim, gb_run_output_within_step, out);
+        if (sc->solver.history) gb_sim_on_iteration(sim, gb_run_output_iteration, out);
+    }
     gb_step_report rep;
     memset(&rep, 0, sizeof rep);
     rep.stage = -1;
@@ -274,7 +313,9 @@ gb_status gb_sim_run(gb_sim *sim, gb_step_fn on_step, void *user, gb_error *err)
         sim->energy0 = gb_sim_elastic_energy(sim);
     }
     if (!within) save_state(sim, err, &st);
-    if (!st && on_step && !from.resume) st = on_step(user, sim, &rep, err);
+    double t1 = gb_clock_seconds();
+    sim->profile.measure += t1 - t; /* the initial report */
+    if (!st && !from.resume) st = measure_and_output(sim, out, on_step, user, &rep, t1, err);
     int step = sim->pos.step;
     for (int s = within ? sim->cur.stage : from.resume ? from.stage : 0; s < sc->n_stages && !st; s++) {
         const gb_stage *sg = &sc->stages[s];
@@ -290,7 +331,8 @@ gb_status gb_sim_run(gb_sim *sim, gb_step_fn on_step, void *user, gb_error *err)
             gb_gem_stress(sim, &start[0], &start[1]);
         }
         for (int k = first; k <= sg->steps && !st; k++) {
-            double t0 = gb_clock_seconds(), max_force = 0, residual = 0;
+            /* control and solve */
+            double t0 = gb_clock_seconds(), solve0 = sim->profile.solve, max_force = 0, residual = 0;
             step++;
             if (!within) {
                 gb_sim_step c = {.active = 1, .stage = s, .stage_step = k, .step = step, .start = {start[0], start[1]},
@@ -314,6 +356,9 @@ gb_status gb_sim_run(gb_sim *sim, gb_step_fn on_step, void *user, gb_error *err)
                 restore_state(sim, &sim->saved);
                 break;
             }
+            double t1 = gb_clock_seconds();
+            sim->profile.control += t1 - t0 - (sim->profile.solve - solve0);
+            /* measure: the report, the work accounts */
             rep.stage = s;
             rep.step = step;
             rep.iterations = sim->cur.iters;
@@ -324,9 +369,11 @@ gb_status gb_sim_run(gb_sim *sim, gb_step_fn on_step, void *user, gb_error *err)
             rep.seconds = gb_clock_seconds() - t0;
             gb_sim_position at = {s, k, step, {start[0], start[1]}, 0};
             sim->pos = at;
-            /* The output sees the step's start in the saved state; then it becomes the start of the next. */
-            if (on_step) st = on_step(user, sim, &rep, err);
+            /* measure and output see the step's start in the saved state; then it becomes the next's */
+            st = measure_and_output(sim, out, on_step, user, &rep, t1, err);
+            double t2 = gb_clock_seconds();
             if (!st) save_state(sim, err, &st);
+            sim->profile.control += gb_clock_seconds() - t2;
         }
     }
     return st;

@@ -16,7 +16,7 @@
 
 #include "../unit/scene_fixture.h"
 #include "check.h"
-#include "gembem/gem.h"
+#include "gembem/run.h"
 
 enum { N_SOLVERS = 4 };
 static const char *const SOLVERS[N_SOLVERS] = {"reference", "global CHOLMOD", "global UMFPACK",
@@ -51,7 +51,7 @@ static gb_status run(gb_scene *s, int solver, outcome *o, const char *name)
     memset(o, 0, sizeof *o);
     o->finite = 1;
     gb_status st = gb_sim_create(s, &sim, &err);
-    if (!st) st = gb_sim_run(sim, watch, o, &err);
+    if (!st) st = gb_sim_run(sim, NULL, watch, o, &err);
     printf("%-28s %-18s: %s%s%s\n", name, SOLVERS[solver], st ? "stopped: " : "converged", st ? err.msg : "",
            o->finite ? "" : " NON-FINITE");
     CHECK(st == GB_OK || st == GB_ENOCONV);

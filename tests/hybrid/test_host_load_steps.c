@@ -216,7 +216,7 @@ static int run(const char *path, int line_search, run_log *log)
     }
     memset(log, 0, sizeof *log);
     log->per_step = 2 * sim->host->m + 3 * sim->n;
-    gb_status st = gb_sim_run(sim, check, log, &err);
+    gb_status st = gb_sim_run(sim, NULL, check, log, &err);
     if (st) fprintf(stderr, "%s\n", err.msg);
     CHECK(st == GB_OK);
     CHECK(log->n_steps == gb_scene_total_steps(&sc) + 1);

@@ -56,7 +56,7 @@ int main(void)
         fprintf(stderr, "%s\n", err.msg);
         return 1;
     }
-    gb_status st = gb_sim_run(sim, check, NULL, &err);
+    gb_status st = gb_sim_run(sim, NULL, check, NULL, &err);
     if (st) fprintf(stderr, "%s\n", err.msg);
     CHECK(st == GB_OK);
     gb_sim_free(sim);

@@ -9,7 +9,7 @@
 
 #include "check.h"
 #include "core/memory.h"
-#include "gembem/gem.h"
+#include "gembem/run.h"
 #include "scene_fixture.h"
 
 int main(void)

@@ -13,7 +13,7 @@
 #include <stdlib.h>
 
 #include "check.h"
-#include "gembem/gem.h"
+#include "gembem/run.h"
 #include "gembem/measure.h"
 
 static const double S0 = 1.5e5;
@@ -66,7 +66,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "%s\n", err.msg);
         return 1;
     }
-    gb_status st = gb_sim_run(sim, check_step, NULL, &err);
+    gb_status st = gb_sim_run(sim, NULL, check_step, NULL, &err);
     if (st) fprintf(stderr, "%s\n", err.msg);
     CHECK(st == GB_OK);
     gb_sim_free(sim);

@@ -33,7 +33,7 @@ static gb_status run(const char *path, int linear, double radius_factor, double 
     sc->host.rigid = rigid;
     if (friction >= 0) sc->grain_grain.friction_deg = friction;
     gb_status st = gb_sim_create(sc, sim, &err);
-    if (!st) st = gb_sim_run(*sim, NULL, NULL, &err);
+    if (!st) st = gb_sim_run(*sim, NULL, NULL, NULL, &err);
     if (st) fprintf(stderr, "%s\n", err.msg);
     return st;
 }

@@ -8,7 +8,7 @@
 
 #include "check.h"
 #include "exact.h"
-#include "gembem/gem.h"
+#include "gembem/run.h"
 
 /* Kishino (1989), Table 2: stress ratio at e1 - e2 = 1, 2, 3, 4, 5 %, cases 1-4. */
 static const double TABLE2[4][5] = {
@@ -51,7 +51,7 @@ int main(int argc, char **argv)
         return 1;
     }
     at_percent a = {{0}, {0}};
-    gb_status st = gb_sim_run(sim, collect, &a, &err);
+    gb_status st = gb_sim_run(sim, NULL, collect, &a, &err);
     if (st) fprintf(stderr, "%s\n", err.msg);
     CHECK(st == GB_OK);
     const double theta0 = 60.0 * 3.14159265358979323846 / 180.0;

@@ -7,7 +7,7 @@
 #include <stdlib.h>
 
 #include "check.h"
-#include "gembem/gem.h"
+#include "gembem/run.h"
 
 typedef struct {
     double peak;
@@ -49,7 +49,7 @@ int main(int argc, char **argv)
             return 1;
         }
         curve c = {-1, 0, 0, 0};
-        gb_status st = gb_sim_run(sim, watch, &c, &err);
+        gb_status st = gb_sim_run(sim, NULL, watch, &c, &err);
         if (st) fprintf(stderr, "%s\n", err.msg);
         CHECK(st == GB_OK);
         printf("%s: peak ratio %.4f at step %d, bottom discs separate at step %d\n", argv[k], c.peak, c.peak_step,

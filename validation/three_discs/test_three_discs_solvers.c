@@ -8,7 +8,7 @@
 #include <time.h>
 
 #include "check.h"
-#include "gembem/gem.h"
+#include "gembem/run.h"
 
 typedef struct {
     double ratio[5];
@@ -49,7 +49,7 @@ int main(int argc, char **argv)
             scene.solver.linear = m == 2;
             double t0 = now();
             gb_status st = gb_sim_create(&scene, &sim, &err);
-            if (!st) st = gb_sim_run(sim, collect, &res[m], &err);
+            if (!st) st = gb_sim_run(sim, NULL, collect, &res[m], &err);
             if (st) fprintf(stderr, "%s: %s\n", names[m], err.msg);
             CHECK(st == GB_OK);
             printf("%s, %-15s: %6ld iterations, %.4f s; ratios", argv[f], names[m], res[m].iterations, now() - t0);

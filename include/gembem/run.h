@@ -1,0 +1,35 @@
+/* Running a scene's loading program (src/run): a simulation made from a scene, and the loop that
+ * takes it through its load steps, each in four phases (docs/architecture.md): control (the
+ * step's loads, cut-backs), solve (relaxation to equilibrium, src/solver), measure (the step's
+ * report and measures, src/measure) and output (the run directory's files, src/io). */
+#ifndef GEMBEM_RUN_H
+#define GEMBEM_RUN_H
+
+#include "gembem/gem.h"
+#include "gembem/output.h"
+
+/* Where a run's time went, by phase (seconds of this process, summed over its steps, step 0
+ * included), as Box2D's b2Profile or LAMMPS's timers. */
+typedef struct {
+    double control;  /* the steps' set-up: accuracy, loads, states saved and restored, work accounts */
+    double solve;    /* relaxations (gb_solver_relax); a checkpoint taken within a step is here too */
+    double measure;  /* the steps' reports and, with an output, their measures (docs/measures.md) */
+    double output;   /* the steps' files and checkpoints, and the on_step callback */
+} gb_run_profile;
+
+/* The scene must outlive the simulation. */
+gb_status gb_sim_create(const gb_scene *scene, gb_sim **out, gb_error *err);
+void gb_sim_free(gb_sim *sim);
+
+/* Runs the whole loading program: for the initial state (step 0, unless resumed) and each load
+ * step, control -> solve -> measure -> output. With `out` (gb_run_output_open or _resume; NULL:
+ * none) the loop writes the step's files, checkpoints (also within a step) and solver.history;
+ * then on_step (NULL: none), e.g. to print progress, sees the step's report. A step that reaches
+ * the iteration cap returns GB_ENOCONV with a message naming the step and its distance from
+ * convergence; the simulation then holds the state of the last converged step. */
+gb_status gb_sim_run(gb_sim *sim, gb_run_output *out, gb_step_fn on_step, void *user, gb_error *err);
+
+/* The time split of the runs of sim so far (zero before one). */
+gb_run_profile gb_sim_profile(const gb_sim *sim);
+
+#endif
