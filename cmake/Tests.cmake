@@ -6,13 +6,22 @@ set(GB_TEST_MODULES
     bem cli contact core gem hybrid io measure pack run scene solver   # src/<module>
     validation demo python study fuzz tools)                       # validation/, the demo, python/, studies/, fuzz/, tools/
 
-# A test of one C program: the executable is named after its first source (test_x.c: test_x).
+# A test of one C program: the executable is named after its first source (test_x.c: test_x). It
+# sees the public API only (include/gembem/), as the tools and validation programs do.
 function(gb_add_test name source)
   get_filename_component(exe ${source} NAME_WE)
   add_executable(${exe} ${source} ${ARGN})
-  target_include_directories(${exe} PRIVATE ${PROJECT_SOURCE_DIR}/src ${PROJECT_SOURCE_DIR}/tests)
+  target_include_directories(${exe} PRIVATE ${PROJECT_SOURCE_DIR}/tests)
   target_link_libraries(${exe} PRIVATE gembem)
   add_test(NAME ${name} COMMAND ${exe} WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+endfunction()
+
+# A white-box unit test of a module's internals (its private headers in src/<module>/): the
+# contact law of one pair, a grain's stiffness, the BEM's quadrature, a YAML reader.
+function(gb_add_module_test name source)
+  gb_add_test(${name} ${source} ${ARGN})
+  get_filename_component(exe ${source} NAME_WE)
+  target_include_directories(${exe} PRIVATE ${PROJECT_SOURCE_DIR}/src)
 endfunction()
 
 # Called at the end of every CMakeLists.txt that adds tests: checks the names of this directory's

@@ -10,7 +10,7 @@ validation/SPEED_VS_ERROR.md with its own PNG:
   cavity       the 27-grain hybrid cavity packing (validation/cavity_packing), confined and as
                placed, over the accuracy a and the linear solver; the error is the distance from a
                tightly converged run of the same scene
-  jammed1e4    10 000 discs jammed by gb_jam (as tools/bench_gem.sh), one step of isotropic stress
+  jammed1e4    10 000 discs jammed by gembem pack (tools/jammed_packing.sh), one step of isotropic stress
                control to 1.05 x the packing's initial mean stress, over a and the solver; the error
                is the distance from a tightly converged run of the same scene
 
@@ -424,8 +424,8 @@ JAM_TIMEOUT = 200  # wall seconds: a reference run slower than this (about 3 min
 
 def jammed_packing():
     """The packing of tools/bench_gem.sh for 10 000 discs (tools/jammed_packing.sh), cached in
-    runs/speed_vs_error/jammed1e4/. Returns (the box line, the mean of gb_jam's final wall stresses
-    s_x, s_y [dyn/cm], gb_jam's summary)."""
+    runs/speed_vs_error/jammed1e4/. Returns (the box line, the mean of the packing's final wall stresses
+    s_x, s_y [dyn/cm], the packing's log)."""
     d = JAM_DIR
     subprocess.run([os.path.join(ROOT, "tools", "jammed_packing.sh"), BUILD, d, "10000", "1", "10"], check=True,
                    env=dict(os.environ, KEEP="1"))
@@ -435,7 +435,7 @@ def jammed_packing():
 
 
 def jammed_scene(box, stress, method, linear, a):
-    """The packing in its box (the line `box: {...}` gb_jam wrote), one isotropic stress step."""
+    """The packing in its box (the line `box: {...}` of jammed.box), one isotropic stress step."""
     return gembem.Scene(
         units={"length": "cm", "force": "dyn"},
         materials={"grain_grain": {"kn": 1.0e8, "kt": 7.0e7, "friction_deg": 25},
@@ -512,8 +512,8 @@ def jammed1e4_section():
         f"{load_after[0]:.1f} after (shared machine: two regenerations on 2026-11-22 gave the same settings times up to 1.6 times apart).",
         "",
     ] + textwrap.wrap(
-        "The packing of tools/bench_gem.sh: `gb_packgen --n 10000 --diameters 0.6,0.9,1.2 --seed 1`, shrunk "
-        "to porosity 0.15 and relaxed frictionless with the walls fixed by `gb_jam --kn 1e8 --tol 10` "
+        "The packing of tools/bench_gem.sh: `tools/jammed_packing.sh BUILD DIR 10000 1 10`, gembem pack's growth "
+        "of the paper's three sizes to porosity 0.15 in a fixed box, FIRE to |F| <= 10 dyn, then gembem's solver "
         f"(\"{jamlog.split(': ', 1)[-1]}\"). "
         "The scene: kn, kt = 1e8, 7e7 dyn/cm, friction 25 deg between grains and 0 against the walls; one "
         f"load step of isotropic stress control from the walls' stresses to 1.05 x their mean, {stress:.5g} dyn/cm. "

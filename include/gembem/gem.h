@@ -9,7 +9,7 @@ typedef struct gb_sim gb_sim;
 
 /* A contact that carries force. */
 typedef struct {
-    int i, j;          /* grains; j < 0 is the wall -1 - j (GB_WALL_xxx) */
+    int i, j;          /* grains; j < 0 is the wall -1 - j (GB_WALL_xxx) or a boundary particle (GB_IS_PARTICLE) */
     double nx, ny;     /* unit normal from i towards j */
     double overlap;    /* > 0 */
     double pn, pt;     /* normal (compression positive) and tangential force (K section 2.2) */
@@ -98,5 +98,8 @@ gb_contact *gb_sim_contacts_copy(const gb_sim *sim, int *n, gb_error *err);
 double gb_sim_elastic_energy(const gb_sim *sim);
 /* The fixing force (fx, fy, m/r) of grain i (K 5). */
 void gb_sim_fixing_force(const gb_sim *sim, int i, double F[3]);
+/* The boundary stresses s1 (vertical) and s2 (horizontal) of the walls (K section 4.1), from the
+ * forces of the current contacts (recomputed: F, S and the walls' forces). */
+void gb_sim_stress(gb_sim *sim, double *s1, double *s2);
 
 #endif

@@ -17,6 +17,11 @@ typedef struct {
 } gb_material;
 
 enum { GB_WALL_LEFT = 0, GB_WALL_RIGHT = 1, GB_WALL_BOTTOM = 2, GB_WALL_TOP = 3, GB_N_WALLS = 4 };
+/* The other side j of a contact (gb_contact, contacts files): a grain (j >= 0), a wall (j = -1 -
+ * GB_WALL_xxx) or a host's boundary particle on cavity element e, j = GB_PARTICLE_J(e). */
+#define GB_PARTICLE_J(e) (-1 - GB_N_WALLS - (e))
+#define GB_IS_PARTICLE(j) ((j) < -GB_N_WALLS)
+#define GB_PARTICLE_OF(j) (-1 - GB_N_WALLS - (j))
 
 typedef struct {
     double left, right, bottom, top;

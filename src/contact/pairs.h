@@ -7,10 +7,8 @@
 
 /* Boundary particles (the hybrid method, docs/method.md section 10): one half-disc on each element of
  * a host's cavity, of diameter the element's length, centred on its midpoint and bulging into the
- * cavity; it moves with its element (2 DOFs, no rotation). In a pair it is j = GB_PARTICLE_J(e). */
-#define GB_PARTICLE_J(e) (-1 - GB_N_WALLS - (e))
-#define GB_IS_PARTICLE(j) ((j) < -GB_N_WALLS)
-#define GB_PARTICLE_OF(j) (-1 - GB_N_WALLS - (j))
+ * cavity; it moves with its element (2 DOFs, no rotation). In a pair it is j = GB_PARTICLE_J(e)
+ * (gembem/scene.h). */
 
 typedef struct {
     int n;

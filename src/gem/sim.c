@@ -7,6 +7,7 @@
 
 #include "core/memory.h"
 #include "gem/sim.h"
+#include "gembem/hybrid.h"
 
 static const double PI = 3.14159265358979323846;
 
@@ -228,6 +229,31 @@ gb_contact *gb_sim_contacts_copy(const gb_sim *sim, int *n, gb_error *err)
 void gb_sim_fixing_force(const gb_sim *sim, int i, double F[3])
 {
     memcpy(F, &sim->F[3 * i], 3 * sizeof(double));
+}
+
+void gb_sim_stress(gb_sim *sim, double *s1, double *s2)
+{
+    gb_gem_forces(sim);
+    gb_gem_stress(sim, s1, s2);
+}
+
+double gb_sim_detect_seconds(const gb_sim *sim) { return sim->detect_seconds; }
+
+int gb_sim_host_dofs(const gb_sim *sim) { return sim->host ? sim->host->m : 0; }
+
+void gb_sim_host_cavity(const gb_sim *sim, double *u, double *force, double *fixing)
+{
+    size_t m = (size_t)gb_sim_host_dofs(sim) * sizeof(double);
+    if (u && m) memcpy(u, sim->host->u, m);
+    if (force && m) memcpy(force, sim->host->force, m);
+    if (fixing && m) memcpy(fixing, sim->bp_F, m);
+}
+
+gb_status gb_sim_host_group_force(const gb_sim *sim, const char *group, double force[2], double disp[2],
+                                  gb_error *err)
+{
+    if (!sim->host) return gb_fail(err, GB_EINPUT, "the simulation has no host");
+    return gb_host_group_force(sim->host, group, force, disp, err);
 }
 
 void gb_gem_stress(const gb_sim *sim, double *s1, double *s2)

@@ -6,20 +6,8 @@
 #include "contact/pairs.h"
 #include "gembem/gem.h"
 #include "gembem/run.h"
+#include "gembem/solver.h"
 #include "hybrid/host.h"
-
-/* How the walls move during one relaxation. */
-typedef enum {
-    GB_WALLS_FIXED = 0,  /* strain control: the step's displacement was imposed, walls stay */
-    GB_WALLS_STRESS,     /* each axis moves to reach target stresses s1 (vertical), s2 (horizontal) */
-    GB_WALLS_MEAN        /* an isotropic strain moves the walls to reach the mean stress */
-} gb_wall_mode;
-
-typedef struct gb_wall_control_s {
-    gb_wall_mode mode;
-    double s1, s2;  /* GB_WALLS_STRESS targets */
-    double mean;    /* GB_WALLS_MEAN target */
-} gb_wall_control;
 
 /* A copy of everything an iteration changes: grains, contacts, walls and energy accounts. */
 typedef struct {

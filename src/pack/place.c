@@ -2,7 +2,7 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "core/rng.h"
+#include "gembem/rng.h"
 #include "pack/place.h"
 
 typedef struct {

@@ -2,7 +2,7 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "core/rng.h"
+#include "gembem/rng.h"
 #include "pack/sizes.h"
 
 static const double PI = 3.14159265358979323846;

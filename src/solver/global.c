@@ -167,6 +167,7 @@ static gb_status build_pattern(gb_global *gl, const gb_pair_list *P, gb_error *e
         gl->Ai = ai, gl->Ax = ax, gl->cap = nnz;
     }
     gl->nnz = nnz;
+    gl->stats.unknowns = gl->ndof, gl->stats.entries = nnz;
     for (int v = 0; v < nodes; v++)
         for (int b = 0; b < node_dofs(gl, v); b++) {
             int q = gl->Ap[gl->dof0[v] + b];
@@ -251,6 +252,7 @@ static int factor_solve(gb_global *gl, gb_error *err, gb_status *st)
         memcpy(gl->A->x, gl->Ax, (size_t)gl->nnz * sizeof(double));
         cholmod_serial_factorize(gl);
         gl->stats.factorisations++;
+        gl->stats.factor_entries = gl->cc.lnz, gl->stats.factor_flops = gl->cc.fl;
         gl->stats.factorise += gb_clock_seconds() - t0;
         if (gl->cc.status == CHOLMOD_NOT_POSDEF) return 1;
         if (gl->cc.status != CHOLMOD_OK) {

@@ -7,22 +7,11 @@
 
 #include "contact/pairs.h"
 #include "gembem/scene.h"
+#include "gembem/solver.h"
 #include "gembem/status.h"
 
 struct gb_sim;
 typedef struct gb_global gb_global;
-
-
-/* Time spent, for benchmarks (seconds, cumulative). */
-typedef struct {
-    double assemble, analyse, factorise, solve;
-    long analyses, factorisations, regularised;
-    long corrections; /* iterations solved twice: sliding contacts that the first solution unloads */
-    long moves;       /* calls of gb_global_moves: iterations plus moves retried with more damping */
-    long pcg_solves;  /* systems solved by conjugate gradients on an earlier factor (CHOLMOD, PETSc direct) */
-    long pcg_steps;   /* their conjugate-gradient steps */
-    long ksp_iterations; /* PETSc: the KSP's iterations (1 per solve for a direct solver) */
-} gb_global_stats;
 
 /* The system of n_grains grains and n_particles boundary particles, solved as the settings say (they
  * must outlive it: solver.linear, newton, petsc, global_alpha, max_move). */

@@ -27,24 +27,13 @@ typedef struct {
     double best; /* the step's lowest merit (INFINITY before the step's first move) */
 } gb_solver_damping;
 
-/* A solver for sim by the settings `set` (which must outlive it); it replaces (and frees) the one
- * sim had. With the reference method it holds no system. The damping starts from the scene's
- * solver_state when it has one (a restart continues the run it continues). */
-gb_status gb_solver_create(gb_sim *sim, const gb_solver_settings *set, gb_error *err);
+/* gb_solver_create, gb_solver_relax, gb_solver_work_done, gb_solver_statistics: gembem/solver.h. */
 void gb_solver_free(gb_solver *s);
 
-/* Relaxes sim to equilibrium under the wall control, at most `cap` iterations, adding the
- * iterations done to *iterations. A relaxation resumed from a checkpoint within it
+/* gb_solver_relax (gembem/solver.h), more of it: a relaxation resumed from a checkpoint within it
  * (sim->cur.relax_iters > 0) goes on from there: its iterations, attempt and the damped
  * iteration's stall detection are those it had. Between two iterations (not after the last allowed
- * one) it calls sim->on_within_step, whose error ends it. GB_ENOCONV at the cap. */
-gb_status gb_solver_relax(gb_sim *sim, const gb_wall_control *wc, long cap, long *iterations, double *max_force,
-                          double *wall_residual, gb_error *err);
-
-/* The solver's work since the start of the process (all zero for the reference iteration). */
-gb_solver_work gb_solver_work_done(const gb_sim *sim);
-/* The global system's statistics, or NULL for the reference iteration. */
-const gb_global_stats *gb_solver_statistics(const gb_sim *sim);
+ * one) it calls sim->on_within_step, whose error ends it. */
 /* Whether sim is solved by the global solver (else by the reference iteration). */
 int gb_solver_is_global(const gb_sim *sim);
 /* The damping state, to read and to restore (checkpoints, state.yaml). */

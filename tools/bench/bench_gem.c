@@ -12,7 +12,7 @@
 #include <string.h>
 #include "bench_clock.h"
 
-#include "solver/solver.h"
+#include "gembem/gembem.h"
 
 
 int main(int argc, char **argv)
@@ -69,12 +69,12 @@ int main(int argc, char **argv)
                 g->factorisations, g->solve, t_prep + t_steps - g->assemble - g->analyse - g->factorise - g->solve,
                 g->regularised);
     }
-    printf("| %s | %d | %d | %ld%s (%.1f s) | %s | %.3e | %.1f | %.1f |\n", method, sim->n, contacts, prep_it,
+    printf("| %s | %d | %d | %ld%s (%.1f s) | %s | %.3e | %.1f | %.1f |\n", method, gb_sim_n_grains(sim), contacts, prep_it,
            prep_it >= prep_cap ? ", not converged" : "", t_prep, done ? "" : "not reached", secs / iters,
            1e9 * secs / contact_iterations, secs);
     if (done) {
         /* Re-print with the per-step figure filled in. */
-        printf("| %s | %d | %d | %ld (%.1f s) | %.0f over %d steps (%.1f s) | %.3e | %.1f | %.1f |\n", method, sim->n, contacts,
+        printf("| %s | %d | %d | %ld (%.1f s) | %.0f over %d steps (%.1f s) | %.3e | %.1f | %.1f |\n", method, gb_sim_n_grains(sim), contacts,
                prep_it, t_prep, (double)it_total / done, done, t_steps, secs / iters, 1e9 * secs / contact_iterations,
                secs);
     }

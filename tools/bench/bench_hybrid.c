@@ -8,7 +8,7 @@
 #include <string.h>
 #include "bench_clock.h"
 
-#include "solver/solver.h"
+#include "gembem/gembem.h"
 
 
 int main(int argc, char **argv)
@@ -31,7 +31,7 @@ int main(int argc, char **argv)
     const gb_global_stats *g = gb_solver_statistics(sim);
     double rest = t_run - g->assemble - g->analyse - g->factorise - g->solve;
     printf("| %s | %d | %d | %.2f | %ld%s | %.4f | %.3f | %.3f (%ld) | %.3f (%ld) | %.3f | %.3f | %.2f |\n",
-           argc > 2 ? argv[2] : "umfpack", sim->n, sim->bp.n, t_host, it, st ? " (not converged)" : "",
+           argc > 2 ? argv[2] : "umfpack", gb_sim_n_grains(sim), gb_sim_host_dofs(sim) / 2, t_host, it, st ? " (not converged)" : "",
            it ? t_run / it : 0, g->assemble, g->analyse, g->analyses, g->factorise, g->factorisations, g->solve,
            rest, t_run);
     gb_sim_free(sim);

@@ -18,7 +18,7 @@
 #include "bench_accuracy.h"
 #include "bench_clock.h"
 
-#include "solver/solver.h"
+#include "gembem/gembem.h"
 
 
 static void progress(void *user, const gb_iteration_report *r)
@@ -55,14 +55,13 @@ int main(int argc, char **argv)
     double t_prep = bench_now() - t0;
     if (st) {
         printf("| %s | %d | | preparation not converged in %ld iterations (%.0f s), largest fixing force %g |\n", method,
-               sim->n, prep, t_prep, mf);
+               gb_sim_n_grains(sim), prep, t_prep, mf);
         gb_sim_free(sim);
         gb_scene_free(&sc);
         return 3;
     }
     double s1, s2;
-    gb_gem_forces(sim);
-    gb_gem_stress(sim, &s1, &s2);
+    gb_sim_stress(sim, &s1, &s2);
     double sr = 0.5 * (s1 + s2);
     /* The solver of the load steps. */
     gb_solver_settings steps_solver = sc.solver;
@@ -71,7 +70,7 @@ int main(int argc, char **argv)
     if (strcmp(method, "cholmod") && strcmp(method, "line_search") && gb_solver_create(sim, &steps_solver, &err))
         return fprintf(stderr, "%s\n", err.msg), 1;
     /* The load steps' share of the solver's time accounts (the preparation's subtracted). */
-    double detect0 = sim->detect_seconds;
+    double detect0 = gb_sim_detect_seconds(sim);
     long sweeps0 = gb_solver_work_done(sim).sweeps;
     gb_global_stats g0 = {0};
     if (gb_solver_statistics(sim)) g0 = *gb_solver_statistics(sim);
@@ -88,31 +87,31 @@ int main(int argc, char **argv)
         contacts = gb_sim_contacts(sim, NULL, 0);
         contact_its += (double)n * contacts;
         if (st) {
-            fprintf(stderr, "  %s %d, load step %d: %s\n", method, sim->n, k, err.msg);
+            fprintf(stderr, "  %s %d, load step %d: %s\n", method, gb_sim_n_grains(sim), k, err.msg);
             break;
         }
         done++;
     }
     struct rusage ru;
     getrusage(RUSAGE_SELF, &ru);
-    printf("| %s | %d | %d | %ld (%.1f s) | %.3g | %.3g | %s%.0f | %.3e | %.1f | %.1f | %.0f |\n", method, sim->n, contacts,
+    printf("| %s | %d | %d | %ld (%.1f s) | %.3g | %.3g | %s%.0f | %.3e | %.1f | %.1f | %.0f |\n", method, gb_sim_n_grains(sim), contacts,
            prep, t_prep, sr, sc.solver.accuracy, done < steps ? "not converged after " : "",
            done < steps ? (double)it : (double)it / steps, t_steps / (it ? it : 1),
            1e9 * t_steps / (contact_its ? contact_its : 1), t_steps, ru.ru_maxrss / 1024.0);
-    double detect = sim->detect_seconds - detect0;
+    double detect = gb_sim_detect_seconds(sim) - detect0;
     const gb_global_stats *g = gb_solver_statistics(sim);
     if (g) {
         double as = g->assemble - g0.assemble, an = g->analyse - g0.analyse, fa = g->factorise - g0.factorise,
                so = g->solve - g0.solve;
         fprintf(stderr, "  %s %d, load steps: contact detection %.2f s, assembly %.2f s, %ld analyses %.2f s, "
                 "%ld factorisations %.2f s, solves %.2f s, the rest (forces, contact update, moves) %.2f s; %ld moves, "
-                "%ld corrections, %ld systems by CG (%ld steps), %ld regularised, %ld smoother steps\n", method, sim->n, detect, as,
+                "%ld corrections, %ld systems by CG (%ld steps), %ld regularised, %ld smoother steps\n", method, gb_sim_n_grains(sim), detect, as,
                 g->analyses - g0.analyses, an, g->factorisations - g0.factorisations, fa, so,
                 t_steps - detect - as - an - fa - so, g->moves - g0.moves, g->corrections - g0.corrections,
                 g->pcg_solves - g0.pcg_solves, g->pcg_steps - g0.pcg_steps, g->regularised - g0.regularised, gb_solver_work_done(sim).sweeps - sweeps0);
     } else {
         fprintf(stderr, "  %s %d, load steps: contact detection %.2f s, the rest (forces, moves, contact update) %.2f s\n",
-                method, sim->n, detect, t_steps - detect);
+                method, gb_sim_n_grains(sim), detect, t_steps - detect);
     }
     gb_sim_free(sim);
     gb_scene_free(&sc);

@@ -12,8 +12,7 @@
 #include <string.h>
 #include <sys/resource.h>
 
-#include "gembem/petsc.h"
-#include "solver/global_impl.h"
+#include "gembem/gembem.h"
 
 int main(int argc, char **argv)
 {
@@ -33,18 +32,15 @@ int main(int argc, char **argv)
     if (gb_sim_create(&sc, &sim, &err)) return fprintf(stderr, "%s\n", err.msg), 1;
     /* The walls under stress control, 5 % above the packing's mean stress: a load step's first iteration. */
     double s1, s2, mf, wr;
-    gb_gem_forces(sim);
-    gb_gem_stress(sim, &s1, &s2);
+    gb_sim_stress(sim, &s1, &s2);
     gb_wall_control wc = {GB_WALLS_STRESS, 0.525 * (s1 + s2), 0.525 * (s1 + s2), 0};
     long its = 0;
     gb_solver_relax(sim, &wc, 1, &its, &mf, &wr, &err); /* one iteration: not converged, as expected */
-    const gb_global *gl = sim->solver->global;
-    const gb_global_stats *g = gb_global_statistics(gl);
+    const gb_global_stats *g = gb_solver_statistics(sim);
     struct rusage ru;
     getrusage(RUSAGE_SELF, &ru);
-    double lnz = gl->kind == GB_LINEAR_CHOLMOD ? gl->cc.lnz : 0, flops = gl->kind == GB_LINEAR_CHOLMOD ? gl->cc.fl : 0;
-    printf("| %s | %d | %d | %d | %d | %.4g | %.4g | %ld | %ld | %.3f | %.3f | %.3f | %.3f | %.0f |\n", solver,
-           gb_petsc_ranks(), sim->n, gl->ndof, gl->nnz, lnz, flops, g->factorisations, g->ksp_iterations, g->assemble,
+    printf("| %s | %d | %d | %d | %ld | %.4g | %.4g | %ld | %ld | %.3f | %.3f | %.3f | %.3f | %.0f |\n", solver,
+           gb_petsc_ranks(), gb_sim_n_grains(sim), g->unknowns, g->entries, g->factor_entries, g->factor_flops, g->factorisations, g->ksp_iterations, g->assemble,
            g->analyse, g->factorise, g->solve, ru.ru_maxrss / 1024.0);
     gb_sim_free(sim);
     gb_scene_free(&sc);

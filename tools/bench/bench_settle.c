@@ -15,7 +15,7 @@
 #include "bench_accuracy.h"
 #include "bench_clock.h"
 
-#include "solver/solver.h"
+#include "gembem/gembem.h"
 
 int main(int argc, char **argv)
 {
@@ -45,9 +45,9 @@ int main(int argc, char **argv)
     struct rusage ru;
     getrusage(RUSAGE_SELF, &ru);
     int contacts = gb_sim_contacts(sim, NULL, 0);
-    printf("| %s | %d | %d | %.3g | %s%ld | %.1f | %.3e | %.0f |", method, sim->n, contacts, sc.solver.accuracy,
+    printf("| %s | %d | %d | %.3g | %s%ld | %.1f | %.3e | %.0f |", method, gb_sim_n_grains(sim), contacts, sc.solver.accuracy,
            st ? "not converged: " : "", it, t, t / (it ? it : 1), ru.ru_maxrss / 1024.0);
-    double detect = sim->detect_seconds;
+    double detect = gb_sim_detect_seconds(sim);
     const gb_global_stats *g = gb_solver_statistics(sim);
     if (g) {
         printf(" %.2f | %.2f | %.2f | %.2f (%ld) | %.2f | %.2f |\n", detect, g->assemble, g->analyse, g->factorise,
@@ -57,7 +57,7 @@ int main(int argc, char **argv)
     }
     gb_solver_work w = gb_solver_work_done(sim);
     fprintf(stderr, "  %s %d: set-up (pair list) %.2f s, largest fixing force %.3g, status %d; %ld trials, %ld smoother steps\n",
-            method, sim->n, t_create, mf, (int)st, w.trials, w.sweeps);
+            method, gb_sim_n_grains(sim), t_create, mf, (int)st, w.trials, w.sweeps);
     gb_sim_free(sim);
     gb_scene_free(&sc);
     return st ? 3 : 0;

@@ -11,7 +11,7 @@
 
 #include <stddef.h>
 
-#include "core/rng.h"
+#include "gembem/rng.h"
 
 typedef struct {
     double x, y, r;

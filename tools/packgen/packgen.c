@@ -21,7 +21,7 @@
 #include <string.h>
 
 #include "deposit.h"
-#include "core/rng.h"
+#include "gembem/rng.h"
 #include "push.h"
 
 #define PG_PI 3.14159265358979323846

@@ -12,7 +12,7 @@
 #include <stddef.h>
 
 #include "deposit.h"
-#include "core/rng.h"
+#include "gembem/rng.h"
 
 typedef enum { PG_PUSH_OK = 0, PG_PUSH_NOMEM = 1, PG_PUSH_CAPPED = 2 } pg_push_status;
 

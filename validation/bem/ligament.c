@@ -6,7 +6,7 @@
  * Usage: bem_ligament [--full] */
 #include <lapacke.h>
 
-#include "bem/kernel.h"
+#include "gembem/bem.h"
 #include "vcommon.h"
 
 /* u_r error on the cavity of the pressure problem, solving H u = G t with the library's H and G,

@@ -15,7 +15,7 @@
 #include <string.h>
 
 #include "check.h"
-#include "gem/sim.h"
+#include "gembem/gembem.h"
 
 static gb_status run(const char *path, int linear, double radius_factor, double stiffness_factor, int rigid,
                      double accuracy, double friction, gb_scene *sc, gb_sim **sim)
@@ -42,12 +42,26 @@ static double largest_overlap(const gb_sim *sim, int *n_boundary)
 {
     double worst = 0;
     *n_boundary = 0;
-    for (int k = 0; k < sim->pairs.n; k++) {
-        const gb_pair *p = &sim->pairs.p[k];
-        if (p->d > worst) worst = p->d;
-        *n_boundary += p->d > 0 && GB_IS_PARTICLE(p->j);
+    int n;
+    gb_error err = {0};
+    gb_contact *c = gb_sim_contacts_copy(sim, &n, &err);
+    CHECK(c != NULL);
+    for (int k = 0; c && k < n; k++) {
+        if (c[k].overlap > worst) worst = c[k].overlap;
+        *n_boundary += GB_IS_PARTICLE(c[k].j);
     }
+    free(c);
     return worst;
+}
+
+/* The cavity's displacements u, the host's forces and the particles' fixing forces (3 m values). */
+static double *host_cavity(const gb_sim *sim)
+{
+    int m = gb_sim_host_dofs(sim);
+    double *v = malloc(3 * (size_t)(m > 0 ? m : 1) * sizeof *v);
+    CHECK(v != NULL && m > 0);
+    if (v) gb_sim_host_cavity(sim, v, v + m, v + 2 * m);
+    return v;
 }
 
 int main(int argc, char **argv)
@@ -68,9 +82,11 @@ int main(int argc, char **argv)
     /* 2. confined */
     CHECK(run(argv[1], 1, 1.15, 1.0, 0, 1e-9, -1, &sc, &sim) == GB_OK);
     double ov = largest_overlap(sim, &nb), reaction = 0, worst = 0;
-    const gb_host *h = sim->host;
-    for (int k = 0; k < h->m; k++) reaction = fmax(reaction, fabs(h->force[k]));
-    for (int k = 0; k < h->m; k++) worst = fmax(worst, fabs(sim->bp_F[k])); /* (K u + f0) - grains' force */
+    int m = gb_sim_host_dofs(sim);
+    double *h = host_cavity(sim);
+    for (int k = 0; h && k < m; k++) reaction = fmax(reaction, fabs(h[m + k]));
+    for (int k = 0; h && k < m; k++) worst = fmax(worst, fabs(h[2 * m + k])); /* (K u + f0) - grains' force */
+    free(h);
     printf("confined: %d contacts with the boundary, largest overlap %.3g cm, largest reaction %.4g kgf, "
            "largest mismatch %.3g kgf\n", nb, ov, reaction, worst);
     CHECK(nb >= 5);
@@ -85,9 +101,11 @@ int main(int argc, char **argv)
     CHECK(run(argv[1], 1, 1.15, 1e6, 0, 1e-9, 0, &s1, &stiff) == GB_OK);
     CHECK(run(argv[1], 1, 1.15, 1.0, 1, 1e-9, 0, &s2, &rigid) == GB_OK);
     double dx = 0, umax = 0;
-    for (int i = 0; i < stiff->n; i++)
-        dx = fmax(dx, hypot(stiff->g[i].x - rigid->g[i].x, stiff->g[i].y - rigid->g[i].y));
-    for (int k = 0; k < stiff->host->m; k++) umax = fmax(umax, fabs(stiff->host->u[k]));
+    const gb_grain *gs = gb_sim_grains(stiff), *gr = gb_sim_grains(rigid);
+    for (int i = 0; i < gb_sim_n_grains(stiff); i++) dx = fmax(dx, hypot(gs[i].x - gr[i].x, gs[i].y - gr[i].y));
+    double *hs = host_cavity(stiff);
+    for (int k = 0; hs && k < gb_sim_host_dofs(stiff); k++) umax = fmax(umax, fabs(hs[k]));
+    free(hs);
     printf("host x 1e6 against a rigid cavity: grains differ by %.3g cm at most, cavity moves %.3g cm at most\n", dx,
            umax);
     CHECK(dx <= 1e-6);
@@ -102,9 +120,12 @@ int main(int argc, char **argv)
     gb_sim *a, *b;
     CHECK(run(argv[1], 1, 1.15, 1.0, 0, 1e-9, -1, &r1, &a) == GB_OK);
     CHECK(run(argv[1], 1, 1.15, 1.0, 0, 1e-9, -1, &r2, &b) == GB_OK);
-    int same = a->n == b->n && a->host->m == b->host->m;
-    for (int i = 0; same && i < a->n; i++) same = a->g[i].x == b->g[i].x && a->g[i].y == b->g[i].y;
-    for (int k = 0; same && k < a->host->m; k++) same = a->host->u[k] == b->host->u[k];
+    int same = gb_sim_n_grains(a) == gb_sim_n_grains(b) && gb_sim_host_dofs(a) == gb_sim_host_dofs(b);
+    const gb_grain *ga = gb_sim_grains(a), *gb = gb_sim_grains(b);
+    for (int i = 0; same && i < gb_sim_n_grains(a); i++) same = ga[i].x == gb[i].x && ga[i].y == gb[i].y;
+    double *ha = host_cavity(a), *hb = host_cavity(b);
+    for (int k = 0; same && ha && hb && k < gb_sim_host_dofs(a); k++) same = ha[k] == hb[k];
+    free(ha), free(hb);
     printf("run twice: %s\n", same ? "identical" : "DIFFERENT");
     CHECK(same);
     gb_sim_free(a);

@@ -3,8 +3,8 @@
  * Both generators are by David Blackman and Sebastiano Vigna (public domain reference code at
  * https://prng.di.unimi.it/). Only 64-bit integer arithmetic is used, so a seed gives the same
  * stream on every machine and compiler. The state is a value passed around: no globals. */
-#ifndef GB_CORE_RNG_H
-#define GB_CORE_RNG_H
+#ifndef GEMBEM_RNG_H
+#define GEMBEM_RNG_H
 
 #include <stddef.h>
 #include <stdint.h>

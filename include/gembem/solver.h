@@ -1,0 +1,57 @@
+/* Solving a simulation's problem outside a loading program (src/solver): relaxations to
+ * equilibrium under a wall control, another solver for a simulation, and the solver's statistics
+ * (benchmarks, tests). gb_sim_run (gembem/run.h) calls the same functions for each load step. */
+#ifndef GEMBEM_SOLVER_H
+#define GEMBEM_SOLVER_H
+
+#include "gembem/gem.h"
+
+/* How the walls move during one relaxation. */
+typedef enum {
+    GB_WALLS_FIXED = 0,  /* strain control: the step's displacement was imposed, walls stay */
+    GB_WALLS_STRESS,     /* each axis moves to reach target stresses s1 (vertical), s2 (horizontal) */
+    GB_WALLS_MEAN        /* an isotropic strain moves the walls to reach the mean stress */
+} gb_wall_mode;
+
+typedef struct gb_wall_control_s {
+    gb_wall_mode mode;
+    double s1, s2;  /* GB_WALLS_STRESS targets */
+    double mean;    /* GB_WALLS_MEAN target */
+} gb_wall_control;
+
+/* The global solver's time and counts (seconds, cumulative over the process). */
+typedef struct {
+    double assemble, analyse, factorise, solve;
+    long analyses, factorisations, regularised;
+    long corrections; /* iterations solved twice: sliding contacts that the first solution unloads */
+    long moves;       /* calls of gb_global_moves: iterations plus moves retried with more damping */
+    long pcg_solves;  /* systems solved by conjugate gradients on an earlier factor (CHOLMOD, PETSc direct) */
+    long pcg_steps;   /* their conjugate-gradient steps */
+    long ksp_iterations; /* PETSc: the KSP's iterations (1 per solve for a direct solver) */
+    /* The last system factorised: its unknowns and stored entries (CHOLMOD: the lower triangle);
+     * CHOLMOD's factor entries and flops of its last analysis (0 with another solver). */
+    int unknowns;
+    long entries;
+    double factor_entries, factor_flops;
+} gb_global_stats;
+
+/* A solver for sim by the settings `set` (which must outlive it); it replaces (and frees) the one
+ * sim had. With the reference method it holds no system. The damping starts from the scene's
+ * solver_state when it has one (a restart continues the run it continues). */
+gb_status gb_solver_create(gb_sim *sim, const gb_solver_settings *set, gb_error *err);
+
+/* Relaxes sim to equilibrium under the wall control, at most `cap` iterations, adding the
+ * iterations done to *iterations; the largest fixing force and the walls' residual at the end.
+ * The accuracy is the load step's (outside gb_sim_run: as for a first step). GB_ENOCONV at the
+ * cap. */
+gb_status gb_solver_relax(gb_sim *sim, const gb_wall_control *wc, long cap, long *iterations, double *max_force,
+                          double *wall_residual, gb_error *err);
+
+/* The solver's work since the start of the process (all zero for the reference iteration). */
+gb_solver_work gb_solver_work_done(const gb_sim *sim);
+/* The global system's statistics, or NULL for the reference iteration. */
+const gb_global_stats *gb_solver_statistics(const gb_sim *sim);
+/* Seconds spent on contact detection (the pair list's staleness tests and rebuilds) so far. */
+double gb_sim_detect_seconds(const gb_sim *sim);
+
+#endif
