@@ -35,37 +35,37 @@ void gb_gem_add_contact(gb_sim *sim, const gb_pair *p, double sign)
      * r w its stiffness is kr / r^2, kept at the cap as kt is (K 8). */
     double mr = sign * p->mr, kr = sign * mat->kr;
     int rolling = mat->kr > 0; /* without, no divisions: they are a good part of a contact's cost */
-    double ri = sim->g[i].r, *F = &sim->F[3 * i], *S = &sim->S[6 * i];
+    double ri = sim->g[i].r, *F = &sim->scratch.F[3 * i], *S = &sim->scratch.S[6 * i];
     F[0] += fx, F[1] += fy, F[2] += rolling ? pt - mr / ri : pt;
     S[0] += s00, S[1] += s01, S[2] += -kt * s, S[3] += s11, S[4] += kt * c;
     S[5] += rolling ? kt + kr / (ri * ri) : kt;
-    sim->nc[i] += count;
+    sim->scratch.nc[i] += count;
     if (sign > 0) {
-        double *one = &sim->one[GB_ONE * i];
+        double *one = &sim->scratch.one[GB_ONE * i];
         one[0] = c, one[1] = s, one[2] = mat->kn, one[3] = mat->kr;
     }
     if (p->j >= 0) {
         /* B's block T' = [[-c, -s, 0], [s, -c, 1]] (K 25): same moment, opposite force. */
         int j = p->j;
         double rj = sim->g[j].r;
-        F = &sim->F[3 * j], S = &sim->S[6 * j];
+        F = &sim->scratch.F[3 * j], S = &sim->scratch.S[6 * j];
         F[0] -= fx, F[1] -= fy, F[2] += rolling ? pt + mr / rj : pt;
         S[0] += s00, S[1] += s01, S[2] += kt * s, S[3] += s11, S[4] += -kt * c;
         S[5] += rolling ? kt + kr / (rj * rj) : kt;
-        sim->nc[j] += count;
+        sim->scratch.nc[j] += count;
         if (sign > 0) {
-            double *one = &sim->one[GB_ONE * j];
+            double *one = &sim->scratch.one[GB_ONE * j];
             one[0] = -c, one[1] = -s, one[2] = mat->kn, one[3] = mat->kr;
         }
     } else if (GB_IS_PARTICLE(p->j)) {
         /* A boundary particle: the translational part of T' (K 25). */
         int e = GB_PARTICLE_OF(p->j);
-        sim->bp_F[2 * e] -= fx, sim->bp_F[2 * e + 1] -= fy;
-        sim->bp_S[3 * e] += s00, sim->bp_S[3 * e + 1] += s01, sim->bp_S[3 * e + 2] += s11;
+        sim->scratch.bp_F[2 * e] -= fx, sim->scratch.bp_F[2 * e + 1] -= fy;
+        sim->scratch.bp_S[3 * e] += s00, sim->scratch.bp_S[3 * e + 1] += s01, sim->scratch.bp_S[3 * e + 2] += s11;
     } else {
         int w = -1 - p->j;
         sim->wall_force[w] += pn;
-        sim->wall_k[w] += kn;
+        sim->scratch.wall_k[w] += kn;
     }
 }
 
@@ -74,17 +74,17 @@ void gb_gem_add_contact(gb_sim *sim, const gb_pair *p, double sign)
 static void reset_forces(gb_sim *sim)
 {
     int n = sim->n;
-    memset(sim->S, 0, (size_t)n * 6 * sizeof(double));
-    memset(sim->nc, 0, (size_t)n * sizeof(int));
-    for (int w = 0; w < GB_N_WALLS; w++) sim->wall_force[w] = sim->wall_k[w] = 0;
+    memset(sim->scratch.S, 0, (size_t)n * 6 * sizeof(double));
+    memset(sim->scratch.nc, 0, (size_t)n * sizeof(int));
+    for (int w = 0; w < GB_N_WALLS; w++) sim->wall_force[w] = sim->scratch.wall_k[w] = 0;
     if (sim->host) {
-        memcpy(sim->bp_F, sim->host->force, (size_t)sim->host->m * sizeof(double));
-        memset(sim->bp_S, 0, 3 * (size_t)sim->bp.n * sizeof(double));
+        memcpy(sim->scratch.bp_F, sim->host->force, (size_t)sim->host->m * sizeof(double));
+        memset(sim->scratch.bp_S, 0, 3 * (size_t)sim->bp.n * sizeof(double));
     }
     for (int i = 0; i < n; i++) {
-        sim->F[3 * i] = -sim->body[2 * i];
-        sim->F[3 * i + 1] = -sim->body[2 * i + 1];
-        sim->F[3 * i + 2] = 0;
+        sim->scratch.F[3 * i] = -sim->body[2 * i];
+        sim->scratch.F[3 * i + 1] = -sim->body[2 * i + 1];
+        sim->scratch.F[3 * i + 2] = 0;
     }
 }
 
@@ -108,9 +108,9 @@ static int solve2(double a, double b, double c, const double f[2], double x[2])
 void gb_gem_grain_move(const gb_sim *sim, int i, double dX[3])
 {
     const gb_solver_settings *sv = &sim->scene->solver;
-    const double *F = &sim->F[3 * i], *S = &sim->S[6 * i], *B = &sim->body[2 * i];
+    const double *F = &sim->scratch.F[3 * i], *S = &sim->scratch.S[6 * i], *B = &sim->body[2 * i];
     double kn = sim->scene->grain_grain.kn;
-    int nc = sim->nc[i];
+    int nc = sim->scratch.nc[i];
     dX[0] = dX[1] = dX[2] = 0;
     if (nc == 0) {
         /* b) no contact: drift along the body force (K 10). */
@@ -122,11 +122,11 @@ void gb_gem_grain_move(const gb_sim *sim, int i, double dX[3])
      * directions (kn, kt and kr: S is regular) and can hold it against its weight, as a block on a
      * slope: case a). Rolling it over by case c) would keep the tangential force that its lost
      * neighbours left, which nothing else relaxes. */
-    if (nc == 1 && !(sim->one[GB_ONE * i + 3] > 0)) {
+    if (nc == 1 && !(sim->scratch.one[GB_ONE * i + 3] > 0)) {
         /* c) one contact (K 11): normal move by the normal stiffness; tangentially the grain rolls
          * over its neighbour under the body force. Rolling means du_t = 0, i.e. r dw = -(dx.t): the
          * printed third row (0, 1) of (K 11) contradicts the paper's own du_t = 0, we keep du_t = 0. */
-        const double *one = &sim->one[GB_ONE * i];
+        const double *one = &sim->scratch.one[GB_ONE * i];
         double c = one[0], s = one[1], knc = one[2];
         double a = -sv->alpha1 * (F[0] * c + F[1] * s) / knc;
         double b = sv->beta1 * (-B[0] * s + B[1] * c) / knc;
@@ -174,18 +174,18 @@ void gb_gem_grain_move(const gb_sim *sim, int i, double dX[3])
 double gb_gem_fixing_work(const gb_sim *sim)
 {
     double w = 0;
-    for (int k = 0; k < 3 * sim->n; k++) w += sim->F[k] * sim->dX[k];
+    for (int k = 0; k < 3 * sim->n; k++) w += sim->scratch.F[k] * sim->scratch.dX[k];
     return w;
 }
 
 /* Wall moves of this iteration; returns the walls' residual force (0 for fixed walls). */
 double gb_gem_wall_moves(gb_sim *sim, const gb_wall_control *wc)
 {
-    memset(sim->wall_dx, 0, sizeof sim->wall_dx);
+    memset(sim->scratch.wall_dx, 0, sizeof sim->scratch.wall_dx);
     if (wc->mode == GB_WALLS_FIXED) return 0;
     const gb_box *b = &sim->box;
     double W = b->right - b->left, H = b->top - b->bottom;
-    const double *f = sim->wall_force, *k = sim->wall_k;
+    const double *f = sim->wall_force, *k = sim->scratch.wall_k;
     /* A wall that touches nothing moves as if it had one grain-wall contact. */
     double kmin = sim->scene->grain_wall.kn;
     double dy, dx, residual;
@@ -211,10 +211,10 @@ double gb_gem_wall_moves(gb_sim *sim, const gb_wall_control *wc)
         dx = 0.5 * de * sim->ref_width;
         residual = fabs(err) * 0.5 * (W + H);
     }
-    sim->wall_dx[GB_WALL_BOTTOM][1] = dy;
-    sim->wall_dx[GB_WALL_TOP][1] = -dy;
-    sim->wall_dx[GB_WALL_LEFT][0] = dx;
-    sim->wall_dx[GB_WALL_RIGHT][0] = -dx;
+    sim->scratch.wall_dx[GB_WALL_BOTTOM][1] = dy;
+    sim->scratch.wall_dx[GB_WALL_TOP][1] = -dy;
+    sim->scratch.wall_dx[GB_WALL_LEFT][0] = dx;
+    sim->scratch.wall_dx[GB_WALL_RIGHT][0] = -dx;
     return residual;
 }
 
@@ -224,7 +224,7 @@ static gb_status move_bodies(gb_sim *sim, gb_error *err)
 {
     for (int i = 0; i < sim->n; i++) {
         gb_grain *g = &sim->g[i];
-        const double *d = &sim->dX[3 * i];
+        const double *d = &sim->scratch.dX[3 * i];
         g->x += d[0];
         g->y += d[1];
         g->rot += d[2] / g->r;
@@ -237,10 +237,10 @@ static gb_status move_bodies(gb_sim *sim, gb_error *err)
     }
     if (sim->host) gb_host_update_force(sim->host);
     gb_box *b = &sim->box;
-    b->left += sim->wall_dx[GB_WALL_LEFT][0];
-    b->right += sim->wall_dx[GB_WALL_RIGHT][0];
-    b->bottom += sim->wall_dx[GB_WALL_BOTTOM][1];
-    b->top += sim->wall_dx[GB_WALL_TOP][1];
+    b->left += sim->scratch.wall_dx[GB_WALL_LEFT][0];
+    b->right += sim->scratch.wall_dx[GB_WALL_RIGHT][0];
+    b->bottom += sim->scratch.wall_dx[GB_WALL_BOTTOM][1];
+    b->top += sim->scratch.wall_dx[GB_WALL_TOP][1];
     if (!(b->right > b->left) || !(b->top > b->bottom))
         return gb_fail(err, GB_ENUMERIC, "the box turned inside out (width %g, height %g): the load step is too "
                        "large for these springs", b->right - b->left, b->top - b->bottom);
@@ -254,29 +254,29 @@ static gb_status move_bodies(gb_sim *sim, gb_error *err)
  * force (before: `before`, after: `after`) times inward displacement. */
 static void account_move(gb_sim *sim, double diss, const double before[GB_N_WALLS], const double after[GB_N_WALLS])
 {
-    double inward[GB_N_WALLS] = {sim->wall_dx[GB_WALL_LEFT][0], -sim->wall_dx[GB_WALL_RIGHT][0],
-                                 sim->wall_dx[GB_WALL_BOTTOM][1], -sim->wall_dx[GB_WALL_TOP][1]};
-    for (int w = 0; w < GB_N_WALLS; w++) sim->work_walls_iter += 0.5 * (before[w] + after[w]) * inward[w];
-    sim->dissipation += diss;
-    sim->dissipation_step += diss;
+    double inward[GB_N_WALLS] = {sim->scratch.wall_dx[GB_WALL_LEFT][0], -sim->scratch.wall_dx[GB_WALL_RIGHT][0],
+                                 sim->scratch.wall_dx[GB_WALL_BOTTOM][1], -sim->scratch.wall_dx[GB_WALL_TOP][1]};
+    for (int w = 0; w < GB_N_WALLS; w++) sim->acc.work_walls_iter += 0.5 * (before[w] + after[w]) * inward[w];
+    sim->acc.dissipation += diss;
+    sim->acc.dissipation_step += diss;
 }
 
 /* Updates every pair to the moved bodies (K 6, 13, 25), the energy each dissipated into
- * sim->pair_diss. The pairs are independent (each reads the bodies and writes itself), so the
+ * sim->scratch.pair_diss. The pairs are independent (each reads the bodies and writes itself), so the
  * update runs on solver.threads OpenMP threads; what is summed over pairs is summed afterwards in
  * the pairs' order, so that every result is the same bits whatever the thread count. The update
  * is about half of a smoother step's time (src/solver/inertial.c). */
 static gb_status update_pairs(gb_sim *sim, gb_error *err)
 {
     int n = sim->pairs.n;
-    if (n > sim->pair_diss_cap) {
-        double *d = realloc(sim->pair_diss, (size_t)sim->pairs.cap * sizeof(double));
+    if (n > sim->scratch.pair_diss_cap) {
+        double *d = realloc(sim->scratch.pair_diss, (size_t)sim->pairs.cap * sizeof(double));
         if (!d) return gb_fail(err, GB_ENOMEM, "out of memory for %d pairs", sim->pairs.cap);
-        sim->pair_diss = d, sim->pair_diss_cap = sim->pairs.cap;
+        sim->scratch.pair_diss = d, sim->scratch.pair_diss_cap = sim->pairs.cap;
     }
     gb_pair *P = sim->pairs.p;
-    double *diss = sim->pair_diss;
-    const double *dX = sim->dX, *wall_dx = &sim->wall_dx[0][0];
+    double *diss = sim->scratch.pair_diss;
+    const double *dX = sim->scratch.dX, *wall_dx = &sim->scratch.wall_dx[0][0];
     const gb_world *w = &sim->world;
     int threads = sim->scene->solver.threads;
 #pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1 && n >= GB_PARALLEL_PAIRS)
@@ -293,7 +293,7 @@ gb_status gb_gem_apply_moves(gb_sim *sim, gb_error *err)
     double diss = 0, wall_after[GB_N_WALLS] = {0, 0, 0, 0};
     for (int k = 0; k < sim->pairs.n; k++) {
         const gb_pair *p = &sim->pairs.p[k];
-        diss += sim->pair_diss[k];
+        diss += sim->scratch.pair_diss[k];
         if (p->j < 0 && !GB_IS_PARTICLE(p->j)) wall_after[-1 - p->j] += p->pn;
     }
     account_move(sim, diss, sim->wall_force, wall_after);
@@ -311,7 +311,7 @@ gb_status gb_gem_move_and_forces(gb_sim *sim, gb_error *err)
     double diss = 0;
     for (int k = 0; k < sim->pairs.n; k++) {
         const gb_pair *p = &sim->pairs.p[k];
-        diss += sim->pair_diss[k];
+        diss += sim->scratch.pair_diss[k];
         if (p->d > 0) gb_gem_add_contact(sim, p, 1);
     }
     account_move(sim, diss, wall_before, sim->wall_force);
@@ -326,13 +326,13 @@ double gb_gem_merit(const gb_sim *sim, const unsigned char *in_system, double wa
     double m = wall_residual * wall_residual;
     for (int i = 0; i < sim->n; i++)
         if (in_system[i])
-            for (int k = 3 * i; k < 3 * i + 3; k++) m += sim->F[k] * sim->F[k];
+            for (int k = 3 * i; k < 3 * i + 3; k++) m += sim->scratch.F[k] * sim->scratch.F[k];
     return gb_gem_particle_merit(sim, m);
 }
 
 double gb_gem_particle_merit(const gb_sim *sim, double m)
 {
-    for (int k = 0; k < 2 * sim->bp.n && !sim->scene->host.rigid; k++) m += sim->bp_F[k] * sim->bp_F[k];
+    for (int k = 0; k < 2 * sim->bp.n && !sim->scene->host.rigid; k++) m += sim->scratch.bp_F[k] * sim->scratch.bp_F[k];
     return m;
 }
 
@@ -350,7 +350,7 @@ double gb_gem_largest_particle_force2(const gb_sim *sim)
 {
     double max2 = 0;
     for (int k = 0; k < sim->bp.n && !sim->scene->host.rigid; k++)
-        max2 = nan_max(sim->bp_F[2 * k] * sim->bp_F[2 * k] + sim->bp_F[2 * k + 1] * sim->bp_F[2 * k + 1], max2);
+        max2 = nan_max(sim->scratch.bp_F[2 * k] * sim->scratch.bp_F[2 * k] + sim->scratch.bp_F[2 * k + 1] * sim->scratch.bp_F[2 * k + 1], max2);
     return max2;
 }
 
@@ -364,8 +364,8 @@ int gb_gem_balance(gb_sim *sim, const gb_wall_control *wc, double *max_force, do
     /* Energy absorbed by the fixing forces (the "hand" that holds each grain) over a move, by the
      * trapezoid rule: the springs' energy changes by sum (F + B).dX + walls' work - dissipation,
      * so -sum F.dX is what the quasi-static iteration loses where a dynamic system would damp. */
-    if (sim->half_pending) sim->relaxation -= 0.5 * gb_gem_fixing_work(sim);
-    sim->half_pending = 0;
+    if (sim->acc.half_pending) sim->acc.relaxation -= 0.5 * gb_gem_fixing_work(sim);
+    sim->acc.half_pending = 0;
     *wall_residual = gb_gem_wall_moves(sim, wc);
     if (!isfinite(*max_force) || !isfinite(*wall_residual)) {
         *st = gb_fail(err, GB_ENUMERIC, "a fixing force became non-finite");
@@ -373,7 +373,7 @@ int gb_gem_balance(gb_sim *sim, const gb_wall_control *wc, double *max_force, do
     }
     double a = sim->accuracy; /* the load step's (src/gem/accuracy.c) */
     if (*max_force <= a && *wall_residual <= a) { /* (K 14) */
-        memset(sim->wall_dx, 0, sizeof sim->wall_dx);
+        memset(sim->scratch.wall_dx, 0, sizeof sim->scratch.wall_dx);
         return 1;
     }
     return 0;
@@ -383,8 +383,8 @@ gb_status gb_gem_reference_move(gb_sim *sim, gb_error *err)
 {
     int n = sim->n, threads = sim->scene->solver.threads;
 #pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1 && n >= GB_PARALLEL_GRAINS)
-    for (int i = 0; i < n; i++) gb_gem_grain_move(sim, i, &sim->dX[3 * i]);
-    sim->relaxation -= 0.5 * gb_gem_fixing_work(sim);
-    sim->half_pending = 1;
+    for (int i = 0; i < n; i++) gb_gem_grain_move(sim, i, &sim->scratch.dX[3 * i]);
+    sim->acc.relaxation -= 0.5 * gb_gem_fixing_work(sim);
+    sim->acc.half_pending = 1;
     return gb_gem_apply_moves(sim, err);
 }

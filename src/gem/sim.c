@@ -17,18 +17,18 @@ void gb_gem_problem_free(gb_sim *sim)
     if (!sim) return;
     free(sim->g);
     free(sim->body);
-    free(sim->F);
-    free(sim->S);
-    free(sim->dX);
-    free(sim->nc);
-    free(sim->one);
+    free(sim->scratch.F);
+    free(sim->scratch.S);
+    free(sim->scratch.dX);
+    free(sim->scratch.nc);
+    free(sim->scratch.one);
     gb_sim_state_free(&sim->saved);
     gb_sim_state_free(&sim->substep);
     gb_pairs_free(&sim->pairs);
     gb_host_free(sim->host);
     gb_particles_free(&sim->bp);
-    free(sim->bp_F), free(sim->bp_S);
-    free(sim->pair_diss);
+    free(sim->scratch.bp_F), free(sim->scratch.bp_S);
+    free(sim->scratch.pair_diss);
     free(sim);
 }
 
@@ -58,9 +58,9 @@ static gb_status add_host(gb_sim *sim, gb_error *err)
     int m = h->m / 2;
     gb_particles *bp = &sim->bp;
     if ((st = gb_particles_create(bp, &h->mesh, h->K.elem, m, err))) return st;
-    sim->bp_F = calloc(2 * (size_t)m, sizeof(double));
-    sim->bp_S = calloc(3 * (size_t)m, sizeof(double));
-    if (!sim->bp_F || !sim->bp_S) return gb_fail(err, GB_ENOMEM, "out of memory for %d boundary particles", m);
+    sim->scratch.bp_F = calloc(2 * (size_t)m, sizeof(double));
+    sim->scratch.bp_S = calloc(3 * (size_t)m, sizeof(double));
+    if (!sim->scratch.bp_F || !sim->scratch.bp_S) return gb_fail(err, GB_ENOMEM, "out of memory for %d boundary particles", m);
     /* A restart: the host where the earlier run left it. Created as that run's host was (f0's base
      * and unit responses for the scene's values), then its values, cavity displacements and
      * particles set, so that f0 and the force are the ones the run had. */
@@ -116,12 +116,12 @@ gb_status gb_gem_problem_create(const gb_scene *scene, gb_sim **out, gb_error *e
     sim->n = n;
     sim->g = malloc(nn * sizeof *sim->g);
     sim->body = malloc(nn * 2 * sizeof(double));
-    sim->F = calloc(nn * 3, sizeof(double));
-    sim->S = calloc(nn * 6, sizeof(double));
-    sim->dX = calloc(nn * 3, sizeof(double));
-    sim->nc = calloc(nn, sizeof(int));
-    sim->one = calloc(nn * GB_ONE, sizeof(double));
-    if (!sim->g || !sim->body || !sim->F || !sim->S || !sim->dX || !sim->nc || !sim->one) {
+    sim->scratch.F = calloc(nn * 3, sizeof(double));
+    sim->scratch.S = calloc(nn * 6, sizeof(double));
+    sim->scratch.dX = calloc(nn * 3, sizeof(double));
+    sim->scratch.nc = calloc(nn, sizeof(int));
+    sim->scratch.one = calloc(nn * GB_ONE, sizeof(double));
+    if (!sim->g || !sim->body || !sim->scratch.F || !sim->scratch.S || !sim->scratch.dX || !sim->scratch.nc || !sim->scratch.one) {
         gb_gem_problem_free(sim);
         return gb_fail(err, GB_ENOMEM, "out of memory for %d grains", n);
     }
@@ -228,7 +228,7 @@ gb_contact *gb_sim_contacts_copy(const gb_sim *sim, int *n, gb_error *err)
 
 void gb_sim_fixing_force(const gb_sim *sim, int i, double F[3])
 {
-    memcpy(F, &sim->F[3 * i], 3 * sizeof(double));
+    memcpy(F, &sim->scratch.F[3 * i], 3 * sizeof(double));
 }
 
 void gb_sim_stress(gb_sim *sim, double *s1, double *s2)
@@ -246,7 +246,7 @@ void gb_sim_host_cavity(const gb_sim *sim, double *u, double *force, double *fix
     size_t m = (size_t)gb_sim_host_dofs(sim) * sizeof(double);
     if (u && m) memcpy(u, sim->host->u, m);
     if (force && m) memcpy(force, sim->host->force, m);
-    if (fixing && m) memcpy(fixing, sim->bp_F, m);
+    if (fixing && m) memcpy(fixing, sim->scratch.bp_F, m);
 }
 
 gb_status gb_sim_host_group_force(const gb_sim *sim, const char *group, double force[2], double disp[2],

@@ -9,7 +9,34 @@
 #include "gembem/solver.h"
 #include "hybrid/host.h"
 
-/* A copy of everything an iteration changes: grains, contacts, walls and energy accounts. */
+/* The energy accounts that iterations change (absolute since the run's start, force x length);
+ * saved and restored with the state. */
+typedef struct {
+    double work_walls_iter;   /* done by the walls as the iterations move them */
+    double relaxation;        /* absorbed by the fixing forces: -sum F.dX over the iterations */
+    double dissipation;       /* (K 28) summed over contacts and iterations */
+    double dissipation_step;  /* of the current load step */
+    int half_pending;         /* the second half of the last move's relaxation is still due */
+} gb_iteration_accounts;
+
+/* What an iteration computes from the state and leaves for the next one's start: nothing here
+ * outlives a converged step (checkpoints recompute it: gb_gem_forces). */
+typedef struct {
+    double *F;          /* fixing force per grain (K 5): fx, fy, m/r */
+    double *S;          /* contact stiffness per grain (K 8): s00 s01 s02 s11 s12 s22 */
+    double *dX;         /* move of the iteration: dx, dy, r dw */
+    int *nc;            /* contacts per grain */
+    double *one;        /* per grain, GB_ONE values of its last contact: normal towards the other side, kn, kr */
+#define GB_ONE 4
+    double *pair_diss;  /* a move's contact update: the energy each pair dissipated */
+    int pair_diss_cap;
+    double wall_k[GB_N_WALLS];     /* wall contact stiffness: sum of kn of its contacts */
+    double wall_dx[GB_N_WALLS][2]; /* wall translation of the current iteration */
+    double *bp_F;       /* fixing force of each boundary particle: host force K u + f0 minus contacts */
+    double *bp_S;       /* its contact stiffness: s00 s01 s11 */
+} gb_sim_scratch;
+
+/* A copy of everything an iteration changes: grains, contacts, walls, accounts and the host. */
 typedef struct {
     gb_grain *g;
     gb_pair *p;
@@ -18,8 +45,7 @@ typedef struct {
     gb_box box, box0;
     long rebuilds, generation;
     double wall_force[GB_N_WALLS];
-    double work_walls_iter, dissipation, dissipation_step, relaxation;
-    int half_pending;
+    gb_iteration_accounts acc;
     double *bp_xy;       /* boundary particles' centres, 2 per particle */
     double *px0;         /* and at the pair list's rebuild */
     double *host_u;      /* the host's cavity displacements */
@@ -71,25 +97,14 @@ struct gb_sim {
     int n;
     gb_grain *g;
     double *body;       /* B per grain: bx, by */
-    double *F;          /* fixing force per grain (K 5): fx, fy, m/r */
-    double *S;          /* contact stiffness per grain (K 8): s00 s01 s02 s11 s12 s22 */
-    double *dX;         /* move of the iteration: dx, dy, r dw */
-    int *nc;            /* contacts per grain */
-    double *one;        /* per grain, GB_ONE values of its last contact: normal towards the other side, kn, kr */
-#define GB_ONE 4
     gb_pair_list pairs;
-    double *pair_diss;  /* scratch of a move's contact update: the energy each pair dissipated */
-    int pair_diss_cap;
     gb_world world;     /* what the grains touch: themselves, the box's walls, boundary particles */
     gb_particles bp;    /* boundary particles (none without a host) */
     gb_host *host;      /* the elastic host of a hybrid scene, or NULL */
-    double *bp_F;       /* fixing force of each boundary particle: host force K u + f0 minus contacts */
-    double *bp_S;       /* its contact stiffness: s00 s01 s11 */
+    gb_sim_scratch scratch; /* an iteration's forces, stiffnesses and moves */
     struct gb_solver *solver; /* how it is solved (src/solver: the only code that looks inside) */
     gb_box box;
     double wall_force[GB_N_WALLS]; /* normal force of the grains on each wall (compression +) */
-    double wall_k[GB_N_WALLS];     /* wall contact stiffness: sum of kn of its contacts */
-    double wall_dx[GB_N_WALLS][2]; /* wall translation of the current iteration */
     double ref_width, ref_height;  /* strain reference */
     double tan_phi_gg, tan_phi_gw, tan_phi_gb;
     /* The last converged state (the start of the current step), restored when a step fails. */
@@ -105,13 +120,9 @@ struct gb_sim {
     double accuracy;          /* a of the load step in progress: every test against the accuracy uses it */
     /* Energy accounts since the start of the run (absolute, force x length). */
     double work_walls;        /* done by the walls: quasi-static, from converged steps' forces */
-    double work_walls_iter;   /* done by the walls as the iterations move them */
-    double relaxation;        /* absorbed by the fixing forces: -sum F.dX over the iterations */
-    int half_pending;         /* the second half of the last move's relaxation is still due */
     double work_body;         /* done by the body forces */
-    double dissipation;       /* (K 28) summed over contacts and iterations */
-    double dissipation_step;  /* of the current load step */
     double energy0;           /* elastic energy of the initial state */
+    gb_iteration_accounts acc; /* those that iterations change */
     gb_sim_position pos;
     gb_sim_step cur;          /* the load step in progress */
     gb_run_profile profile;   /* the loop's phases (src/run/program.c) */
@@ -145,7 +156,7 @@ double gb_gem_largest_grain_force2(const gb_sim *sim);
 double gb_gem_largest_particle_force2(const gb_sim *sim);
 
 /* The start of an iteration (K section 2.5, Fig. 1): F and S of every grain, the largest fixing
- * force and the walls' moves (sim->wall_dx) and residual. Returns 1 when converged (every |F| <= a
+ * force and the walls' moves (sim->scratch.wall_dx) and residual. Returns 1 when converged (every |F| <= a
  * and the walls at their targets: K 14), 0 otherwise (and sets *st if a force is not finite). */
 int gb_gem_balance(gb_sim *sim, const gb_wall_control *wc, double *max_force, double *wall_residual, gb_error *err,
                    gb_status *st);
@@ -162,12 +173,12 @@ void gb_gem_forces(gb_sim *sim);
 /* The squared fixing force of grain i, and the fixing forces' work F.dX of its current move. */
 static inline double gb_gem_force2(const gb_sim *sim, int i)
 {
-    const double *F = &sim->F[3 * i];
+    const double *F = &sim->scratch.F[3 * i];
     return F[0] * F[0] + F[1] * F[1] + F[2] * F[2];
 }
 static inline double gb_gem_grain_work(const gb_sim *sim, int i)
 {
-    const double *F = &sim->F[3 * i], *d = &sim->dX[3 * i];
+    const double *F = &sim->scratch.F[3 * i], *d = &sim->scratch.dX[3 * i];
     return F[0] * d[0] + F[1] * d[1] + F[2] * d[2];
 }
 
@@ -207,7 +218,7 @@ void gb_gem_grain_move(const gb_sim *sim, int i, double dX[3]);
 
 /* sum over grains of F.dX with the current F and dX: the fixing forces' work of a move */
 double gb_gem_fixing_work(const gb_sim *sim);
-/* The walls' moves of an iteration (sim->wall_dx); returns their residual (0 for fixed walls). */
+/* The walls' moves of an iteration (sim->scratch.wall_dx); returns their residual (0 for fixed walls). */
 double gb_gem_wall_moves(gb_sim *sim, const gb_wall_control *wc);
 /* The global solver's merit (src/solver): squared fixing forces of the grains in the system, of the
  * boundary particles, and the walls' residual squared. */

@@ -52,11 +52,7 @@ gb_status gb_sim_state_save(const gb_sim *sim, gb_sim_state *st, gb_error *err)
     st->rebuilds = sim->pairs.rebuilds;
     st->generation = sim->pairs.generation;
     memcpy(st->wall_force, sim->wall_force, sizeof st->wall_force);
-    st->work_walls_iter = sim->work_walls_iter;
-    st->dissipation = sim->dissipation;
-    st->dissipation_step = sim->dissipation_step;
-    st->relaxation = sim->relaxation;
-    st->half_pending = sim->half_pending;
+    st->acc = sim->acc;
     return GB_OK;
 }
 
@@ -90,9 +86,5 @@ void gb_sim_state_restore(gb_sim *sim, const gb_sim_state *st)
     sim->pairs.rebuilds = st->rebuilds;
     sim->pairs.generation = st->generation;
     memcpy(sim->wall_force, st->wall_force, sizeof st->wall_force);
-    sim->work_walls_iter = st->work_walls_iter;
-    sim->dissipation = st->dissipation;
-    sim->dissipation_step = st->dissipation_step;
-    sim->relaxation = st->relaxation;
-    sim->half_pending = st->half_pending;
+    sim->acc = st->acc;
 }

@@ -11,7 +11,7 @@ void gb_sim_step_error(gb_sim *sim, gb_step_report *r)
     long contacts = 0;
     for (int i = 0; i < sim->n; i++)
         /* a rattler (fewer than two contacts) carries no load of the packing's */
-        if (sim->nc[i] >= 2) carrying++, contacts += sim->nc[i];
+        if (sim->scratch.nc[i] >= 2) carrying++, contacts += sim->scratch.nc[i];
     r->max_fixing_force = sqrt(gb_gem_largest_grain_force2(sim));
     r->rattlers = sim->n - carrying;
     r->coordination = carrying ? (double)contacts / carrying : 0;

@@ -80,13 +80,13 @@ static void put(FILE *f, const char *label, const double *v, int n)
 static void put_state(FILE *f, const char *name, const gb_sim *sim, const gb_sim_state *st, const unsigned char *un)
 {
     int np = sim->bp.n, hm = sim->host ? sim->host->m : 0;
-    fprintf(f, "state %s %d %ld %ld %d\n", name, st->n_pairs, st->generation, st->rebuilds, st->half_pending);
+    fprintf(f, "state %s %d %ld %ld %d\n", name, st->n_pairs, st->generation, st->rebuilds, st->acc.half_pending);
     double box[4] = {st->box.left, st->box.right, st->box.bottom, st->box.top};
     double box0[4] = {st->box0.left, st->box0.right, st->box0.bottom, st->box0.top};
     put(f, "box", box, 4);
     put(f, "box0", box0, 4);
     put(f, "wall_force", st->wall_force, GB_N_WALLS);
-    double e[4] = {st->work_walls_iter, st->dissipation, st->dissipation_step, st->relaxation};
+    double e[4] = {st->acc.work_walls_iter, st->acc.dissipation, st->acc.dissipation_step, st->acc.relaxation};
     put(f, "energies", e, 4);
     if (hm) {
         double v[2 * GB_BEM_MAX_GROUPS + 3];
@@ -127,7 +127,7 @@ static void put_step(FILE *f, const gb_sim *sim)
     const gb_solver_damping *d = gb_solver_damping_of(sim);
     fprintf(f, "stall %ld %a\n", d->since, d->best); /* "inf" before the solver's first move */
     fprintf(f, "moves\n");
-    for (int i = 0; i < sim->n; i++) fprintf(f, "%a %a %a\n", sim->dX[3 * i], sim->dX[3 * i + 1], sim->dX[3 * i + 2]);
+    for (int i = 0; i < sim->n; i++) fprintf(f, "%a %a %a\n", sim->scratch.dX[3 * i], sim->scratch.dX[3 * i + 1], sim->scratch.dX[3 * i + 2]);
     put_state(f, "step_start", sim, &sim->saved, NULL);
     if (c->cuts > 0) put_state(f, "substep", sim, &sim->substep, NULL);
 }
@@ -396,7 +396,7 @@ static void get_state(cursor *c, const gb_sim *sim, const char *name, gb_sim_sta
     st->n_pairs = (int)integer(c, 0, 1 << 30);
     *gen = (long)integer(c, 0, (long long)1 << 62);
     st->rebuilds = (long)integer(c, 0, (long long)1 << 62);
-    st->half_pending = (int)integer(c, 0, 1);
+    st->acc.half_pending = (int)integer(c, 0, 1);
     st->g = alloc(c, (size_t)n, sizeof *st->g), st->x0 = alloc(c, 2 * (size_t)n, sizeof(double));
     st->p = alloc(c, (size_t)st->n_pairs, sizeof *st->p), st->cap = st->n_pairs;
     if (hm) {
@@ -410,7 +410,7 @@ static void get_state(cursor *c, const gb_sim *sim, const char *name, gb_sim_sta
     st->box = b, st->box0 = b0;
     nums(c, "wall_force", st->wall_force, GB_N_WALLS);
     nums(c, "energies", e, 4);
-    st->work_walls_iter = e[0], st->dissipation = e[1], st->dissipation_step = e[2], st->relaxation = e[3];
+    st->acc.work_walls_iter = e[0], st->acc.dissipation = e[1], st->acc.dissipation_step = e[2], st->acc.relaxation = e[3];
     if (hm) {
         double v[2 * GB_BEM_MAX_GROUPS + 3];
         nums(c, "host_values", v, 2 * GB_BEM_MAX_GROUPS + 3);
@@ -562,7 +562,7 @@ gb_status gb_checkpoint_read(const char *dir, gb_sim *sim, uint64_t scene_hash, 
         if (x.cur.active) {
             gb_sim_state_free(&sim->saved), sim->saved = x.start, memset(&x.start, 0, sizeof x.start);
             if (x.cur.cuts > 0) gb_sim_state_free(&sim->substep), sim->substep = x.sub, memset(&x.sub, 0, sizeof x.sub);
-            memcpy(sim->dX, x.dX, 3 * (size_t)sim->n * sizeof(double));
+            memcpy(sim->scratch.dX, x.dX, 3 * (size_t)sim->n * sizeof(double));
             x.cur.work0 = gb_solver_work_minus(gb_solver_work_done(sim), x.work);
             sim->cur = x.cur;
             sim->attempt = x.attempt, d->since = x.damping.since, d->best = x.damping.best;

@@ -23,7 +23,7 @@ static gb_status write_particles(const char *path, const gb_sim *sim, gb_error *
     for (int k = 0; k < sim->bp.n; k++) {
         int e = h->K.elem[k];
         /* bp_F = (K u + f0) - (force of the grains on the particle) */
-        double gx = h->force[2 * k] - sim->bp_F[2 * k], gy = h->force[2 * k + 1] - sim->bp_F[2 * k + 1];
+        double gx = h->force[2 * k] - sim->scratch.bp_F[2 * k], gy = h->force[2 * k + 1] - sim->scratch.bp_F[2 * k + 1];
         fprintf(a.f, "%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", e, h->mesh.mid[2 * e],
                 h->mesh.mid[2 * e + 1], sim->bp.r[k], sim->bp.nx[k], sim->bp.ny[k], h->u[2 * k], h->u[2 * k + 1],
                 h->force[2 * k], h->force[2 * k + 1], gx, gy);

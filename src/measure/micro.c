@@ -81,14 +81,14 @@ void gb_micro_measure(const gb_sim *sim, gb_micro *m)
     m->work_walls = sim->work_walls;
     m->work_body = sim->work_body;
     m->work = sim->work_walls + sim->work_body;
-    m->dissipation = sim->dissipation;
-    m->dissipation_step = sim->dissipation_step;
-    m->p_max = sim->dissipation_step > 0 ? max_diss / sim->dissipation_step : 0;
+    m->dissipation = sim->acc.dissipation;
+    m->dissipation_step = sim->acc.dissipation_step;
+    m->p_max = sim->acc.dissipation_step > 0 ? max_diss / sim->acc.dissipation_step : 0;
     m->dissipation_step_k28 = NAN; /* of a step: gb_step_measure, from its start */
     m->balance = m->work - m->dissipation - (m->elastic_energy - sim->energy0);
-    m->work_walls_iter = sim->work_walls_iter;
-    m->relaxation = sim->relaxation;
-    m->balance_iter = sim->work_walls_iter + sim->work_body - m->dissipation - sim->relaxation -
+    m->work_walls_iter = sim->acc.work_walls_iter;
+    m->relaxation = sim->acc.relaxation;
+    m->balance_iter = sim->acc.work_walls_iter + sim->work_body - m->dissipation - sim->acc.relaxation -
                       (m->elastic_energy - sim->energy0);
 }
 

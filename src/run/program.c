@@ -42,15 +42,15 @@ static void restore_state(gb_sim *sim, const gb_sim_state *state)
 static gb_status impose_strain(gb_sim *sim, double de1, double de2, gb_error *err)
 {
     gb_gem_forces(sim); /* the walls' forces before the move, for their work */
-    sim->half_pending = 0;
-    memset(sim->dX, 0, (size_t)sim->n * 3 * sizeof(double));
+    sim->acc.half_pending = 0;
+    memset(sim->scratch.dX, 0, (size_t)sim->n * 3 * sizeof(double));
     if (sim->bp.n) memset(sim->bp.dx, 0, 2 * (size_t)sim->bp.n * sizeof(double));
-    memset(sim->wall_dx, 0, sizeof sim->wall_dx);
+    memset(sim->scratch.wall_dx, 0, sizeof sim->scratch.wall_dx);
     double dy = 0.5 * de1 * sim->ref_height, dx = 0.5 * de2 * sim->ref_width;
-    sim->wall_dx[GB_WALL_BOTTOM][1] = dy;
-    sim->wall_dx[GB_WALL_TOP][1] = -dy;
-    sim->wall_dx[GB_WALL_LEFT][0] = dx;
-    sim->wall_dx[GB_WALL_RIGHT][0] = -dx;
+    sim->scratch.wall_dx[GB_WALL_BOTTOM][1] = dy;
+    sim->scratch.wall_dx[GB_WALL_TOP][1] = -dy;
+    sim->scratch.wall_dx[GB_WALL_LEFT][0] = dx;
+    sim->scratch.wall_dx[GB_WALL_RIGHT][0] = -dx;
     if (gb_solver_predicts_strain(sim)) {
         /* The grains follow the box affinely, the prediction of a homogeneous strain: Newton
          * starts with the increment spread over the packing instead of concentrated at the walls
@@ -60,12 +60,12 @@ static gb_status impose_strain(gb_sim *sim, double de1, double de2, gb_error *er
         double xc = 0.5 * (b->left + b->right), yc = 0.5 * (b->bottom + b->top);
         double sx = 2 * dx / (b->right - b->left), sy = 2 * dy / (b->top - b->bottom);
         for (int i = 0; i < sim->n; i++) {
-            sim->dX[3 * i] = -sx * (sim->g[i].x - xc);
-            sim->dX[3 * i + 1] = -sy * (sim->g[i].y - yc);
+            sim->scratch.dX[3 * i] = -sx * (sim->g[i].x - xc);
+            sim->scratch.dX[3 * i + 1] = -sy * (sim->g[i].y - yc);
         }
         /* a move of the grains like an iteration's: the fixing forces' work, by the trapezoid rule */
-        sim->relaxation -= 0.5 * gb_gem_fixing_work(sim);
-        sim->half_pending = 1;
+        sim->acc.relaxation -= 0.5 * gb_gem_fixing_work(sim);
+        sim->acc.half_pending = 1;
     }
     return gb_gem_apply_moves(sim, err);
 }
@@ -104,7 +104,7 @@ static int stress_controlled(gb_stage_kind k)
 static gb_status apply_loads(gb_sim *sim, const gb_stage *sg, double h, gb_error *err)
 {
     gb_status st = GB_OK;
-    sim->dissipation_step = 0;
+    sim->acc.dissipation_step = 0;
     for (int q = 0; q < sim->pairs.n; q++) sim->pairs.p[q].diss = 0;
     switch (sg->kind) {
     case GB_STAGE_HOST_DISPLACEMENT:

@@ -413,14 +413,14 @@ static gb_status solve_system(gb_global *gl, const gb_sim *sim, const unsigned c
         gl->held[3 * i] = gl->held[3 * i + 1] = (unsigned char)out;
         gl->held[3 * i + 2] = (unsigned char)(out || in_system[i] == GB_IN_SYSTEM_NO_ROTATION ||
                                               !(gl->S[6 * i + 5] > 0)); /* no rotational stiffness */
-        for (int a = 0; a < 3; a++) gl->rhs[3 * i + a] = gl->held[3 * i + a] ? 0 : -sim->F[3 * i + a];
+        for (int a = 0; a < 3; a++) gl->rhs[3 * i + a] = gl->held[3 * i + a] ? 0 : -sim->scratch.F[3 * i + a];
     }
     int rigid = sim->scene->host.rigid; /* a rigid cavity: its particles are held */
     for (int e = 0; e < np; e++)
         for (int a = 0; a < 2; a++) {
             int d = gl->dof0[n + e] + a;
             gl->held[d] = (unsigned char)rigid;
-            gl->rhs[d] = rigid ? 0 : -sim->bp_F[2 * e + a];
+            gl->rhs[d] = rigid ? 0 : -sim->scratch.bp_F[2 * e + a];
         }
     wall_residuals(gl, sim, wc);
     double shift = fmax(mu, REGULARISE), cap = fmax(1e3 * shift, 1e-3);
@@ -557,7 +557,7 @@ gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const unsigned char *in_sy
     }
     double a = sv->global_alpha, scale = worst * a > sv->max_move ? sv->max_move / worst : a;
     for (int i = 0; i < n; i++) {
-        double *d = &sim->dX[3 * i];
+        double *d = &sim->scratch.dX[3 * i];
         if (!in_system[i]) {
             gb_gem_grain_move(sim, i, d);
             continue;
@@ -566,17 +566,17 @@ gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const unsigned char *in_sy
     }
     for (int e = 0; e < np; e++)
         for (int q = 0; q < 2; q++) sim->bp.dx[2 * e + q] = scale * gl->x[gl->dof0[n + e] + q];
-    memset(sim->wall_dx, 0, sizeof sim->wall_dx);
+    memset(sim->scratch.wall_dx, 0, sizeof sim->scratch.wall_dx);
     int d = gl->dof0[wall_node(gl, 0)];
     for (int w = 0; w < NW; w++) {
         if (gl->held[d + w]) continue;
         double v = scale * gl->x[d + w];
         for (int wall = 0; wall < GB_N_WALLS; wall++) {
             double in = v * gb_global_wall_lever(sim, w, wall);
-            if (wall == GB_WALL_LEFT) sim->wall_dx[wall][0] += in;
-            if (wall == GB_WALL_RIGHT) sim->wall_dx[wall][0] -= in;
-            if (wall == GB_WALL_BOTTOM) sim->wall_dx[wall][1] += in;
-            if (wall == GB_WALL_TOP) sim->wall_dx[wall][1] -= in;
+            if (wall == GB_WALL_LEFT) sim->scratch.wall_dx[wall][0] += in;
+            if (wall == GB_WALL_RIGHT) sim->scratch.wall_dx[wall][0] -= in;
+            if (wall == GB_WALL_BOTTOM) sim->scratch.wall_dx[wall][1] += in;
+            if (wall == GB_WALL_TOP) sim->scratch.wall_dx[wall][1] -= in;
         }
     }
     return GB_OK;

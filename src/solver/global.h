@@ -19,14 +19,14 @@ gb_status gb_global_create(const gb_solver_settings *set, int n_grains, int n_pa
                            gb_error *err);
 void gb_global_free(gb_global *gl);
 
-/* Fills sim->dX for every grain. Grains outside the system (in_system[i] 0: fewer than two
+/* Fills sim->scratch.dX for every grain. Grains outside the system (in_system[i] 0: fewer than two
  * contacts, src/solver/damped.c) move as in the reference iteration (cases b, c) and are held in the system; a rotation
  * without stiffness (kt = 0) or marked GB_IN_SYSTEM_NO_ROTATION is held;
  * the rest solve K dX = -F together, with the walls under stress control as DOFs of the same system
  * (their residual: force minus target). The diagonal is scaled by 1 + mu (Levenberg-Marquardt:
  * mu -> 0 is Newton's step, a large mu a short step along each DOF's own stiffness, like the
  * reference iteration). A move larger than `max_move` scales the whole step down.
- * Fills sim->wall_dx too. */
+ * Fills sim->scratch.wall_dx too. */
 struct gb_wall_control_s;
 gb_status gb_global_moves(gb_global *gl, struct gb_sim *sim, const unsigned char *in_system,
                           const struct gb_wall_control_s *wc, double mu, gb_error *err);

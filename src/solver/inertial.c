@@ -31,7 +31,7 @@ static const double F_INC = 1.1, F_DEC = 0.5, ALPHA_START = 0.1, F_ALPHA = 0.99,
  * its contacts' (bp_S); the global system's diagonal block for it (assemble.c). */
 static void particle_move(const gb_sim *sim, int e, double d[2])
 {
-    const double *K = sim->host->K.K, *Sp = &sim->bp_S[3 * e], *F = &sim->bp_F[2 * e];
+    const double *K = sim->host->K.K, *Sp = &sim->scratch.bp_S[3 * e], *F = &sim->scratch.bp_F[2 * e];
     size_t m = (size_t)sim->host->m, r = 2 * (size_t)e;
     double k00 = K[r + r * m] + Sp[0], k11 = K[r + 1 + (r + 1) * m] + Sp[2];
     double k01 = 0.5 * (K[r + 1 + r * m] + K[r + (r + 1) * m]) + Sp[1], det = k00 * k11 - k01 * k01;
@@ -63,7 +63,7 @@ gb_status gb_solver_inertial(gb_solver *s, gb_sim *sim, const gb_wall_control *w
     int n = sim->n, np = sim->host && !sim->scene->host.rigid ? sim->bp.n : 0, dofs = 3 * n + 2 * np;
     double *v = s->velocity, *acc = s->acceleration, inv_alpha = 1 / s->set->alpha;
     memset(v, 0, (size_t)dofs * sizeof(double));
-    memset(sim->dX, 0, 3 * (size_t)n * sizeof(double));
+    memset(sim->scratch.dX, 0, 3 * (size_t)n * sizeof(double));
     if (sim->bp.n) memset(sim->bp.dx, 0, 2 * (size_t)sim->bp.n * sizeof(double));
     double dt = DT_START, mixing = ALPHA_START;
     int since_uphill = 0;
@@ -84,19 +84,19 @@ gb_status gb_solver_inertial(gb_solver *s, gb_sim *sim, const gb_wall_control *w
 #pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1 && n >= GB_PARALLEL_GRAINS)
         for (int i = 0; i < n; i++) gb_gem_grain_move(sim, i, &acc[3 * i]);
         for (int i = 0; i < n; i++) {
-            const double *F = &sim->F[3 * i];
+            const double *F = &sim->scratch.F[3 * i];
             if (s->in_system[i]) merit += F[0] * F[0], merit += F[1] * F[1], merit += F[2] * F[2];
             balanced &= gb_gem_force2(sim, i) <= a2;
             for (int q = 3 * i; q < 3 * i + 3; q++) {
-                work += sim->F[q] * sim->dX[q];
+                work += sim->scratch.F[q] * sim->scratch.dX[q];
                 acc[q] *= inv_alpha;
-                power -= sim->F[q] * v[q];
+                power -= sim->scratch.F[q] * v[q];
                 vv += v[q] * v[q], aa += acc[q] * acc[q];
             }
         }
-        sim->relaxation -= 0.5 * work;
+        sim->acc.relaxation -= 0.5 * work;
         for (int e = 0; e < np; e++) {
-            const double *F = &sim->bp_F[2 * e];
+            const double *F = &sim->scratch.bp_F[2 * e];
             balanced &= F[0] * F[0] + F[1] * F[1] <= a2;
             particle_move(sim, e, &acc[3 * n + 2 * e]);
             for (int q = 3 * n + 2 * e, k = 0; k < 2; q++, k++) {
@@ -116,10 +116,10 @@ gb_status gb_solver_inertial(gb_solver *s, gb_sim *sim, const gb_wall_control *w
         }
         work = 0;
         for (int i = 0; i < n; i++) { /* semi-implicit Euler */
-            double *vi = &v[3 * i], *d = &sim->dX[3 * i];
+            double *vi = &v[3 * i], *d = &sim->scratch.dX[3 * i];
             for (int k = 0; k < 3; k++) vi[k] += dt * acc[3 * i + k];
             advance(vi, d, 3, dt, max_move * sim->g[i].r);
-            for (int k = 0; k < 3; k++) work += sim->F[3 * i + k] * d[k];
+            for (int k = 0; k < 3; k++) work += sim->scratch.F[3 * i + k] * d[k];
         }
         for (int e = 0; e < np; e++) {
             double *vp = &v[3 * n + 2 * e];
@@ -127,13 +127,13 @@ gb_status gb_solver_inertial(gb_solver *s, gb_sim *sim, const gb_wall_control *w
             advance(vp, &sim->bp.dx[2 * e], 2, dt, max_move * sim->bp.r[e]);
         }
         s->work.sweeps++;
-        sim->relaxation -= 0.5 * work;
+        sim->acc.relaxation -= 0.5 * work;
         if ((st = gb_gem_move_and_forces(sim, err))) break;
     }
-    if (step == max_steps) sim->relaxation -= 0.5 * gb_gem_fixing_work(sim);
-    memset(sim->dX, 0, 3 * (size_t)n * sizeof(double));
+    if (step == max_steps) sim->acc.relaxation -= 0.5 * gb_gem_fixing_work(sim);
+    memset(sim->scratch.dX, 0, 3 * (size_t)n * sizeof(double));
     if (sim->bp.n) memset(sim->bp.dx, 0, 2 * (size_t)sim->bp.n * sizeof(double));
-    memset(sim->wall_dx, 0, sizeof sim->wall_dx);
-    sim->half_pending = 0;
+    memset(sim->scratch.wall_dx, 0, sizeof sim->scratch.wall_dx);
+    sim->acc.half_pending = 0;
     return st;
 }

@@ -36,17 +36,17 @@ static void set_move(const gb_solver *s, gb_sim *sim, const double *dir, double 
     int n = sim->n, np = sim->bp.n;
     for (int i = 0; i < n; i++) {
         double f = s->in_system[i] ? alpha : 1;
-        for (int q = 0; q < 3; q++) sim->dX[3 * i + q] = f * dir[3 * i + q];
+        for (int q = 0; q < 3; q++) sim->scratch.dX[3 * i + q] = f * dir[3 * i + q];
     }
     for (int k = 0; k < 2 * np; k++) sim->bp.dx[k] = alpha * dir[3 * n + k];
-    for (int k = 0; k < 2 * GB_N_WALLS; k++) (&sim->wall_dx[0][0])[k] = alpha * dir[3 * n + 2 * np + k];
+    for (int k = 0; k < 2 * GB_N_WALLS; k++) (&sim->scratch.wall_dx[0][0])[k] = alpha * dir[3 * n + 2 * np + k];
 }
 
-/* Applies the move in sim->dX, bp.dx and wall_dx, and evaluates the forces after it. */
+/* Applies the move in sim->scratch.dX, bp.dx and wall_dx, and evaluates the forces after it. */
 static gb_status take_move(gb_sim *sim, gb_error *err)
 {
-    sim->relaxation -= 0.5 * gb_gem_fixing_work(sim);
-    sim->half_pending = 1;
+    sim->acc.relaxation -= 0.5 * gb_gem_fixing_work(sim);
+    sim->acc.half_pending = 1;
     return gb_gem_move_and_forces(sim, err);
 }
 
@@ -81,9 +81,9 @@ gb_status gb_solver_line_search_move(gb_solver *s, gb_sim *sim, const gb_wall_co
     gb_status st = gb_global_moves(s->global, sim, s->in_system, wc, 0, err);
     if (st) return st;
     double *dir = s->direction;
-    memcpy(dir, sim->dX, 3 * (size_t)n * sizeof(double));
+    memcpy(dir, sim->scratch.dX, 3 * (size_t)n * sizeof(double));
     if (np) memcpy(dir + 3 * n, sim->bp.dx, 2 * (size_t)np * sizeof(double));
-    memcpy(dir + 3 * n + 2 * np, sim->wall_dx, sizeof sim->wall_dx);
+    memcpy(dir + 3 * n + 2 * np, sim->scratch.wall_dx, sizeof sim->scratch.wall_dx);
     /* Newton's whole step, alone if it converges (the merit falls tenfold: with Armijo's rule
      * alone, on the perturbed 1e4 protocol packing's friction relaxation, 33 whole steps each
      * lowered the merit by a few per cent and left the largest force at 2e6 dyn). */
@@ -118,8 +118,8 @@ gb_status gb_solver_line_search_move(gb_solver *s, gb_sim *sim, const gb_wall_co
     gb_sim_state_restore(sim, &s->smoothed);
     gb_gem_forces(sim);
     /* as the smoother leaves them: no move pending (its fixing work is accounted) */
-    memset(sim->dX, 0, 3 * (size_t)n * sizeof(double));
+    memset(sim->scratch.dX, 0, 3 * (size_t)n * sizeof(double));
     if (np) memset(sim->bp.dx, 0, 2 * (size_t)np * sizeof(double));
-    memset(sim->wall_dx, 0, sizeof sim->wall_dx);
+    memset(sim->scratch.wall_dx, 0, sizeof sim->scratch.wall_dx);
     return GB_OK;
 }

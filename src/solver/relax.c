@@ -70,7 +70,7 @@ static void report_iteration(gb_sim *sim, long it, double max_force, double wall
 {
     const gb_solver *s = sim->solver;
     double move = 0;
-    for (int i = 0; i < sim->n; i++) move = fmax(move, hypot(sim->dX[3 * i], sim->dX[3 * i + 1]) / sim->g[i].r);
+    for (int i = 0; i < sim->n; i++) move = fmax(move, hypot(sim->scratch.dX[3 * i], sim->scratch.dX[3 * i + 1]) / sim->g[i].r);
     int global = s->global != NULL, line_search = s->set->newton == GB_NEWTON_LINE_SEARCH;
     gb_iteration_report r = {sim->pos.step + 1, sim->attempt, it, max_force, wall_residual, move,
                              global && !line_search ? s->damping.mu : 0, global && line_search ? s->length : 0};

@@ -27,9 +27,9 @@ int main(void)
     gb_sim *sim;
     CHECK(gb_sim_create(&s, &sim, &err) == GB_OK);
     gb_gem_forces(sim);
-    CHECK(sim->nc[0] == 5);
-    double S[3][3] = {{sim->S[0], sim->S[1], sim->S[2]}, {sim->S[1], sim->S[3], sim->S[4]}, {sim->S[2], sim->S[4], sim->S[5]}};
-    double F0[3] = {sim->F[0], sim->F[1], sim->F[2]};
+    CHECK(sim->scratch.nc[0] == 5);
+    double S[3][3] = {{sim->scratch.S[0], sim->scratch.S[1], sim->scratch.S[2]}, {sim->scratch.S[1], sim->scratch.S[3], sim->scratch.S[4]}, {sim->scratch.S[2], sim->scratch.S[4], sim->scratch.S[5]}};
+    double F0[3] = {sim->scratch.F[0], sim->scratch.F[1], sim->scratch.F[2]};
     /* A move small against the 1e-9 overlaps, so that no contact opens; coordinates of order 1 carry
      * it to about 1e-5 relative, hence the tolerance. */
     double dh = 1e-11;
@@ -38,12 +38,12 @@ int main(void)
         gb_sim *t;
         gb_sim_create(&s, &t, &err);
         gb_gem_forces(t);
-        for (int k = 0; k < 3 * t->n; k++) t->dX[k] = 0;
-        t->dX[c] = dh;
+        for (int k = 0; k < 3 * t->n; k++) t->scratch.dX[k] = 0;
+        t->scratch.dX[c] = dh;
         CHECK(gb_gem_apply_moves(t, &err) == GB_OK);
         gb_gem_forces(t);
         for (int r = 0; r < 3; r++) {
-            double fd = (t->F[r] - F0[r]) / dh;
+            double fd = (t->scratch.F[r] - F0[r]) / dh;
             CHECK_NEAR(fd, S[r][c], 1e-3 * 1e8);
         }
         gb_sim_free(t);

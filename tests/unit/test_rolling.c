@@ -34,8 +34,8 @@ static gb_pair *pair_of(gb_sim *sim, int i, int j)
 static void move(gb_sim *sim, int g, const double d[3])
 {
     gb_error err;
-    memset(sim->dX, 0, 3 * (size_t)sim->n * sizeof(double));
-    memcpy(&sim->dX[3 * g], d, 3 * sizeof(double));
+    memset(sim->scratch.dX, 0, 3 * (size_t)sim->n * sizeof(double));
+    memcpy(&sim->scratch.dX[3 * g], d, 3 * sizeof(double));
     CHECK(gb_gem_apply_moves(sim, &err) == GB_OK);
     gb_gem_forces(sim);
 }
@@ -68,10 +68,10 @@ static void law(void)
     move(sim, 1, c);
     CHECK_NEAR(p->mr, -kr * 2e-3, 1e-9 * limit);
     /* The fixing forces' third rows (moment / r, K 5): -mr / r_i on 0, +mr / r_j on 1; no force. */
-    CHECK_NEAR(sim->F[2], -p->mr / ri, 1e-9 * limit);
-    CHECK_NEAR(sim->F[5], p->mr / rj, 1e-9 * limit);
-    CHECK_NEAR(sim->F[0] + sim->F[3], 0, 1e-9 * pn);
-    CHECK_NEAR(sim->F[1], 0, 0);
+    CHECK_NEAR(sim->scratch.F[2], -p->mr / ri, 1e-9 * limit);
+    CHECK_NEAR(sim->scratch.F[5], p->mr / rj, 1e-9 * limit);
+    CHECK_NEAR(sim->scratch.F[0] + sim->scratch.F[3], 0, 1e-9 * pn);
+    CHECK_NEAR(sim->scratch.F[1], 0, 0);
     /* grain 0 turns by -1e-2: theta_r = -8e-3, elastic mr would be 1.6e4 > limit: capped */
     double e[3] = {0, 0, -ri * 1e-2};
     move(sim, 0, e);
@@ -88,8 +88,8 @@ static void law(void)
     /* the spring's energy mr^2 / (2 kr) counts in the elastic energy (K 22 with rolling) */
     CHECK_NEAR(gb_sim_elastic_energy(sim), 0.5 * pn * pn / KN + 0.5 * p->mr * p->mr / kr, 1e-9 * pn * pn / KN);
     /* The reference iteration's S: kr / r^2 on each grain's rotational diagonal (here kt = 0). */
-    CHECK_NEAR(sim->S[5], kr / (ri * ri), 1e-9 * kr);
-    CHECK_NEAR(sim->S[6 + 5], kr / (rj * rj), 1e-9 * kr);
+    CHECK_NEAR(sim->scratch.S[5], kr / (ri * ri), 1e-9 * kr);
+    CHECK_NEAR(sim->scratch.S[6 + 5], kr / (rj * rj), 1e-9 * kr);
     /* opening drops the moment */
     double o[3] = {-2 * d, 0, 0};
     move(sim, 0, o);
@@ -131,7 +131,7 @@ static void tangent(int newton)
     gb_contact_init ci[3] = {{0, 1, 3e3, 0.5 * lim01}, {2, 0, -2e3, -1.5 * lim02}, {1, 2, 1e3, 0}};
     gb_scene s;
     gb_sim *sim = triangle(&s, g, ci, newton);
-    CHECK(sim->nc[0] == 2 && sim->nc[1] == 2 && sim->nc[2] == 2);
+    CHECK(sim->scratch.nc[0] == 2 && sim->scratch.nc[1] == 2 && sim->scratch.nc[2] == 2);
     CHECK(pair_of(sim, 0, 2)->mr == 1.5 * lim02); /* seen from grain 0: the sign turns */
     gb_error err;
     gb_wall_control wc = {GB_WALLS_FIXED, 0, 0, 0};
@@ -153,7 +153,7 @@ static void tangent(int newton)
                 double d[3] = {0, 0, 0};
                 d[b] = sg ? -h : h;
                 move(q, v, d);
-                memcpy(sg ? Fm : Fp, q->F, sizeof Fp);
+                memcpy(sg ? Fm : Fp, q->scratch.F, sizeof Fp);
                 gb_sim_free(q);
             }
             for (int u = 0; u < 3; u++)
@@ -191,9 +191,9 @@ static void sheared_disc(int solver, double kr, double eta, double tol_w)
     gb_sim *sim;
     CHECK(gb_sim_create(&s, &sim, &err) == GB_OK);
     /* the top wall moves sideways by s: its contact's tangential spring and nothing else sees it */
-    memset(sim->dX, 0, 3 * sizeof(double));
-    memset(sim->wall_dx, 0, sizeof sim->wall_dx);
-    sim->wall_dx[GB_WALL_TOP][0] = shear;
+    memset(sim->scratch.dX, 0, 3 * sizeof(double));
+    memset(sim->scratch.wall_dx, 0, sizeof sim->scratch.wall_dx);
+    sim->scratch.wall_dx[GB_WALL_TOP][0] = shear;
     CHECK(gb_gem_apply_moves(sim, &err) == GB_OK);
     gb_wall_control wc = {GB_WALLS_FIXED, 0, 0, 0};
     long it = 0;
