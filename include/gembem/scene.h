@@ -154,6 +154,17 @@ typedef struct {
     int next;
 } gb_solver_state;
 
+/* Where a scene's run starts when it continues an earlier run, apart from the scene's definition
+ * (a scene without it starts from rest): the contacts' tangential forces (and rolling moments) of
+ * `grains.contacts` or `initial_state:`, and from a state the host and the solver as that run left
+ * them. */
+typedef struct {
+    int n_contacts;
+    gb_contact_init *contacts;
+    gb_host_state host;
+    gb_solver_state solver;
+} gb_restart;
+
 /* Grains may overlap each other and a wall or the cavity's boundary by at most this share of the
  * (smaller) radius unless the scene's grains.max_overlap says otherwise (src/scene/admit.c). */
 #define GB_MAX_OVERLAP_DEFAULT 0.5
@@ -178,8 +189,7 @@ typedef struct {
     gb_material grain_grain, grain_wall;
     gb_material grain_boundary;  /* grains against boundary particles: kt = 0 unless given */
     gb_host_def host;            /* instead of a box */
-    gb_host_state host_state;    /* from initial_state: the host where the earlier run left it */
-    gb_solver_state solver_state; /* from initial_state */
+    gb_restart restart;          /* what an earlier run left (initial_state:, grains.contacts) */
     int n_grains;
     gb_grain *grains;
     char grains_file[1024];  /* where the grains were read: the scene, its CSV or a state's CSV */
@@ -187,8 +197,6 @@ typedef struct {
     double max_overlap;      /* grains.max_overlap: the admission's tolerance */
     gb_overlaps overlaps;    /* what the admission accepted */
     char warning[2048];      /* "" or what the command should say before running (also in run_info.yaml) */
-    int n_contacts;
-    gb_contact_init *contacts;
     gb_box box;
     double body_force_per_area[2]; /* force per unit disc area; B_i = this * pi r_i^2 */
     gb_solver_settings solver;

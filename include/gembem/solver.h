@@ -37,7 +37,7 @@ typedef struct {
 
 /* A solver for sim by the settings `set` (which must outlive it); it replaces (and frees) the one
  * sim had. With the reference method it holds no system. The damping starts from the scene's
- * solver_state when it has one (a restart continues the run it continues). */
+ * restart state (scene->restart.solver) when it has one: a restart continues the run it continues. */
 gb_status gb_solver_create(gb_sim *sim, const gb_solver_settings *set, gb_error *err);
 
 /* Relaxes sim to equilibrium under the wall control, at most `cap` iterations, adding the

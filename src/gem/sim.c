@@ -64,7 +64,7 @@ static gb_status add_host(gb_sim *sim, gb_error *err)
     /* A restart: the host where the earlier run left it. Created as that run's host was (f0's base
      * and unit responses for the scene's values), then its values, cavity displacements and
      * particles set, so that f0 and the force are the ones the run had. */
-    const gb_host_state *hs = &sim->scene->host_state;
+    const gb_host_state *hs = &sim->scene->restart.host;
     if (hs->present) {
         gb_host *hw = sim->host;
         if (hs->n_cavity != m)
@@ -158,8 +158,8 @@ gb_status gb_gem_problem_create(const gb_scene *scene, gb_sim **out, gb_error *e
         p->pn = p->d > 0 ? gb_sim_material(sim, p->j)->kn * p->d : 0;
         p->pt = p->mr = 0;
     }
-    for (int c = 0; c < scene->n_contacts; c++) {
-        const gb_contact_init *ci = &scene->contacts[c];
+    for (int c = 0; c < scene->restart.n_contacts; c++) {
+        const gb_contact_init *ci = &scene->restart.contacts[c];
         int i = ci->i, j = ci->j;
         if (j >= 0 && j < i) i = ci->j, j = ci->i;
         gb_pair *p = find_pair(&sim->pairs, i, j);

@@ -146,18 +146,18 @@ static gb_status admit_host(gb_scene *s, const gb_bem_mesh *mesh, unsigned char 
     gb_status st = GB_OK;
     for (int i = 0; !st && i < s->n_grains; i++) {
         double p[2];
-        gb_host_state_at_rest(&s->host_state, s->grains[i].x, s->grains[i].y, p);
+        gb_host_state_at_rest(&s->restart.host, s->grains[i].x, s->grains[i].y, p);
         if ((st = too_large(s, i, box[1] - box[0], box[3] - box[2], "the host's cavity", err))) return st;
         if (!gb_bem_mesh_in_cavity(mesh, cavity, p[0], p[1])) {
             int n = 0;
             for (int k = 0; k < s->n_grains; k++) {
                 double q[2];
-                gb_host_state_at_rest(&s->host_state, s->grains[k].x, s->grains[k].y, q);
+                gb_host_state_at_rest(&s->restart.host, s->grains[k].x, s->grains[k].y, q);
                 n += !gb_bem_mesh_in_cavity(mesh, cavity, q[0], q[1]);
             }
             char what[GB_BEM_NAME_MAX + 160], fix[160];
             snprintf(what, sizeof what, "the host's cavity '%s'%s", s->host.cavity,
-                     s->host_state.present ? " (moved back as the state's cavity moved)" : "");
+                     s->restart.host.present ? " (moved back as the state's cavity moved)" : "");
             snprintf(fix, sizeof fix, "move it into the cavity (its bounding box: [%g, %g] x [%g, %g])", box[0], box[1],
                      box[2], box[3]);
             return outside(s, i, n, what, fix, err);

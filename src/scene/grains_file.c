@@ -161,16 +161,16 @@ static gb_status read_contacts_csv(const char *path, gb_scene *s, gb_error *err)
                          path, csv.column[k], csv.header[k]);
     }
     int cap = 1024;
-    if (!st && !(s->contacts = malloc((size_t)cap * sizeof *s->contacts))) st = gb_fail(err, GB_ENOMEM, "out of memory");
+    if (!st && !(s->restart.contacts = malloc((size_t)cap * sizeof *s->restart.contacts))) st = gb_fail(err, GB_ENOMEM, "out of memory");
     for (int has = 1; !st;) {
         if ((st = gb_csv_next(&csv, &has, err)) || !has) break;
-        if (s->n_contacts == cap) {
-            gb_contact_init *c = realloc(s->contacts, (size_t)(cap *= 2) * sizeof *c);
+        if (s->restart.n_contacts == cap) {
+            gb_contact_init *c = realloc(s->restart.contacts, (size_t)(cap *= 2) * sizeof *c);
             if (!c) {
                 st = gb_fail(err, GB_ENOMEM, "out of memory");
                 break;
             }
-            s->contacts = c;
+            s->restart.contacts = c;
         }
         double i, j = 0, pt, mr = 0;
         if ((st = gb_csv_number(&csv, ci, &i, err)) || (st = gb_csv_number(&csv, cp, &pt, err)) ||
@@ -205,7 +205,7 @@ static gb_status read_contacts_csv(const char *path, gb_scene *s, gb_error *err)
             break;
         }
         gb_contact_init c = {(int)i, wall >= 0 ? -1 - wall : particle >= 0 ? -1 - GB_N_WALLS - particle : (int)j, pt, mr};
-        s->contacts[s->n_contacts++] = c;
+        s->restart.contacts[s->restart.n_contacts++] = c;
     }
     gb_csv_close(&csv);
     return st;
@@ -278,8 +278,8 @@ static double overlap(const gb_scene *s, const gb_contact_init *c)
 
 gb_status gb_grains_check(const gb_scene *s, const char *where, gb_error *err)
 {
-    for (int k = 0; k < s->n_contacts; k++) {
-        const gb_contact_init *c = &s->contacts[k];
+    for (int k = 0; k < s->restart.n_contacts; k++) {
+        const gb_contact_init *c = &s->restart.contacts[k];
         if (!(overlap(s, c) > 0))
             return gb_fail(err, GB_EINPUT, "%s: initial contact %d (grain %d with %s %d) does not overlap; "
                            "expected a contact force only where grains overlap",

@@ -5,7 +5,7 @@
 #include "gembem/scene.h"
 #include "scene/yaml_read.h"
 
-/* Reads a `grains:` section (list / file / contacts) into s->grains and s->contacts. */
+/* Reads a `grains:` section (list / file / contacts) into s->grains and s->restart.contacts. */
 gb_status gb_grains_section_read(gb_ymap *m, gb_scene *s, gb_error *err);
 /* Reads a `box:` section. */
 gb_status gb_box_read(gb_ymap *parent, gb_box *box, gb_error *err);

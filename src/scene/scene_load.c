@@ -20,11 +20,11 @@ void gb_scene_free(gb_scene *s)
     free(s->grains);
     free(s->grain_line);
     free(s->grain_col);
-    free(s->contacts);
+    free(s->restart.contacts);
     free(s->stages);
     free(s->snapshot_steps);
-    free(s->host_state.u);
-    free(s->host_state.xy);
+    free(s->restart.host.u);
+    free(s->restart.host.xy);
     memset(s, 0, sizeof *s);
 }
 
@@ -500,7 +500,7 @@ static gb_status load(const gb_yaml_doc *doc, gb_scene *s, gb_bem_mesh *mesh, gb
                 s->box.left = fmin(s->box.left, q->x - q->r), s->box.right = fmax(s->box.right, q->x + q->r);
                 s->box.bottom = fmin(s->box.bottom, q->y - q->r), s->box.top = fmax(s->box.top, q->y + q->r);
             }
-            if (s->n_contacts)
+            if (s->restart.n_contacts)
                 return gb_yaml_fail(doc, host, err, "host: initial contact forces are not supported with a host yet");
         } else if ((st = gb_box_read(&top, &s->box, err)) || (st = gb_grains_check(s, doc->path, err))) {
             return st;

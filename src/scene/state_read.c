@@ -73,7 +73,7 @@ static gb_status read_particles(const char *path, const gb_bem_mesh *mesh, int c
 
 static gb_status read_host(gb_ymap *m, gb_scene *s, const gb_bem_mesh *mesh, gb_error *err)
 {
-    gb_host_state *hs = &s->host_state;
+    gb_host_state *hs = &s->restart.host;
     const gb_host_def *def = &s->host;
     long ne = 0, nc = 0;
     struct fy_node *v;
@@ -148,12 +148,12 @@ gb_status gb_state_host_read(gb_ymap *top, gb_scene *s, gb_error *err)
     st = read_host(&m, s, &mesh, err);
     gb_bem_mesh_free(&mesh);
     /* a contact with a boundary particle the host does not have */
-    for (int c = 0; !st && c < s->n_contacts; c++) {
-        int j = s->contacts[c].j;
-        if (j < -GB_N_WALLS && -1 - GB_N_WALLS - j >= s->host_state.n_cavity)
+    for (int c = 0; !st && c < s->restart.n_contacts; c++) {
+        int j = s->restart.contacts[c].j;
+        if (j < -GB_N_WALLS && -1 - GB_N_WALLS - j >= s->restart.host.n_cavity)
             st = gb_fail(err, GB_EINPUT, "%s: initial contact %d (grain %d) names the boundary particle p%d; the "
-                         "host's cavity has %d elements", top->doc->path, c, s->contacts[c].i, -1 - GB_N_WALLS - j,
-                         s->host_state.n_cavity);
+                         "host's cavity has %d elements", top->doc->path, c, s->restart.contacts[c].i, -1 - GB_N_WALLS - j,
+                         s->restart.host.n_cavity);
     }
     return st;
 }
@@ -175,7 +175,7 @@ gb_status gb_state_solver_read(gb_ymap *top, gb_scene *s, gb_error *err)
     gb_ymap m;
     struct fy_node *v;
     gb_status st;
-    gb_solver_state *ss = &s->solver_state;
+    gb_solver_state *ss = &s->restart.solver;
     long next = 0;
     if ((st = gb_ymap_find(top, "solver_state", 0, &v, err))) return st;
     if (!v) return GB_OK;

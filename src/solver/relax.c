@@ -25,7 +25,7 @@ gb_status gb_solver_create(gb_sim *sim, const gb_solver_settings *set, gb_error 
     s->set = set;
     s->damping.mu = 1e-6;
     s->damping.best = INFINITY; /* reset at every relaxation: a restart needs no more */
-    const gb_solver_state *from = &sim->scene->solver_state;
+    const gb_solver_state *from = &sim->scene->restart.solver;
     if (from->present) { /* a restart continues the damping of the run it continues */
         s->damping.mu = from->mu;
         memcpy(s->damping.history, from->history, sizeof s->damping.history);

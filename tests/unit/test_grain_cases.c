@@ -13,8 +13,8 @@ static gb_sim *make(gb_grain *g, int n, gb_box box, double kt, double bx, double
     *s = fixture_scene(g, n, box, KN, kt, 60);
     s->body_force_per_area[0] = bx / (3.14159265358979323846 * g[0].r * g[0].r);
     s->body_force_per_area[1] = by / (3.14159265358979323846 * g[0].r * g[0].r);
-    s->contacts = ci;
-    s->n_contacts = nci;
+    s->restart.contacts = ci;
+    s->restart.n_contacts = nci;
     gb_error err;
     gb_sim *sim = NULL;
     if (gb_sim_create(s, &sim, &err)) fprintf(stderr, "%s\n", err.msg);

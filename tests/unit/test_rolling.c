@@ -109,7 +109,7 @@ static gb_sim *triangle(gb_scene *s, gb_grain *g, gb_contact_init *ci, int newto
     gb_box box = {-10, 10, -10, 10};
     *s = fixture_scene(g, 3, box, KN, KT, 30);
     s->grain_grain.kr = 0.5 * KT * 0.25, s->grain_grain.eta = 0.2;
-    s->contacts = ci, s->n_contacts = 3;
+    s->restart.contacts = ci, s->restart.n_contacts = 3;
     s->solver.method = GB_METHOD_GLOBAL;
     s->solver.linear = GB_LINEAR_UMFPACK;
     s->solver.newton = newton;
@@ -225,7 +225,7 @@ static void single_contact(int solver)
     s.grain_wall.kr = kr, s.grain_wall.eta = 0.1;
     s.body_force_per_area[1] = -W / (3.14159265358979323846 * r * r);
     gb_contact_init ci[1] = {{0, -1 - GB_WALL_BOTTOM, 0, m0}};
-    s.contacts = ci, s.n_contacts = 1;
+    s.restart.contacts = ci, s.restart.n_contacts = 1;
     s.solver.accuracy = 1e-3;
     s.solver.method = solver ? GB_METHOD_GLOBAL : GB_METHOD_REFERENCE;
     s.solver.linear = GB_LINEAR_UMFPACK;
