@@ -223,6 +223,16 @@ static inline int gb_scene_rolling(const gb_scene *s) { return s->grain_grain.kr
 #define GB_MEASURES_DEFAULT_GRAINS 5000
 #define GB_MEASURES_DEFAULT_EVERY 1
 
+/* The checkpoints' defaults (output.checkpoint_every, output.checkpoint_minutes). */
+#define GB_CHECKPOINT_EVERY_DEFAULT 1
+#define GB_CHECKPOINT_MINUTES_DEFAULT 10.0
+
+/* A scene with every setting at its default and nothing else (no grains, box, materials, stages):
+ * where a scene built in code starts, and where gb_scene_load starts before it reads a file. The
+ * solver's accuracy is 0 (the code sets it; a file without one gets GB_ACCURACY_RELATIVE_DEFAULT);
+ * measures_every is the default of a scene below GB_MEASURES_DEFAULT_GRAINS grains. */
+gb_scene gb_scene_default(void);
+
 /* Reads and validates a scene; on any error *out is left empty and err says file:line:column. */
 gb_status gb_scene_load(const char *path, gb_scene *out, gb_error *err);
 void gb_scene_free(gb_scene *s);

@@ -311,15 +311,15 @@ static gb_status read_output(gb_ymap *top, gb_scene *s, gb_error *err)
     /* fields/ of the per-step measures: every step for small scenes, off for large ones (about 600
      * bytes per grain and step) unless the scene says */
     struct fy_node *me;
-    long measures_every = s->n_grains < GB_MEASURES_DEFAULT_GRAINS ? GB_MEASURES_DEFAULT_EVERY : 0;
+    long measures_every = s->n_grains < GB_MEASURES_DEFAULT_GRAINS ? s->measures_every : 0;
     if ((st = gb_ymap_find(&m, "measures_every", 0, &me, err)) ||
         (st = gb_ymap_int(&m, "measures_every", 0, 0, 100000000L, &measures_every, err)))
         return st;
     s->measures_every = (int)measures_every;
     s->measures_every_given = me != NULL;
     /* checkpoints (src/io/checkpoint.c): after every step unless the scene says otherwise */
-    long ck_every = 1;
-    double ck_minutes = 10;
+    long ck_every = s->checkpoint_every;
+    double ck_minutes = s->checkpoint_minutes;
     if ((st = gb_ymap_int(&m, "checkpoint_every", 0, 0, 100000000L, &ck_every, err)) ||
         (st = gb_ymap_number(&m, "checkpoint_minutes", GB_Y_POSITIVE, &ck_minutes, err)))
         return st;
@@ -530,9 +530,21 @@ static gb_status load(const gb_yaml_doc *doc, gb_scene *s, gb_bem_mesh *mesh, gb
     return check_force_scale(doc, &top, s, err);
 }
 
+gb_scene gb_scene_default(void)
+{
+    gb_scene s;
+    memset(&s, 0, sizeof s);
+    s.solver = gb_solver_defaults();
+    s.max_overlap = GB_MAX_OVERLAP_DEFAULT;
+    s.measures_every = GB_MEASURES_DEFAULT_EVERY;
+    s.checkpoint_every = GB_CHECKPOINT_EVERY_DEFAULT;
+    s.checkpoint_minutes = GB_CHECKPOINT_MINUTES_DEFAULT;
+    return s;
+}
+
 gb_status gb_scene_load(const char *path, gb_scene *out, gb_error *err)
 {
-    memset(out, 0, sizeof *out);
+    *out = gb_scene_default();
     snprintf(out->path, sizeof out->path, "%s", path);
     gb_yaml_doc doc;
     gb_status st = gb_yaml_load(path, &doc, err);
@@ -549,10 +561,9 @@ gb_status gb_scene_load(const char *path, gb_scene *out, gb_error *err)
 gb_status gb_scene_load_pack(const char *path, gb_scene *out, gb_bem_mesh *mesh, gb_scene_section_fn read_pack,
                              void *user, gb_error *err)
 {
-    memset(out, 0, sizeof *out);
+    *out = gb_scene_default();
     memset(mesh, 0, sizeof *mesh);
     snprintf(out->path, sizeof out->path, "%s", path);
-    out->max_overlap = GB_MAX_OVERLAP_DEFAULT;
     gb_yaml_doc doc;
     gb_status st = gb_yaml_load(path, &doc, err);
     if (st) return st;

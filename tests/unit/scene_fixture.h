@@ -2,20 +2,16 @@
 #ifndef GB_TEST_SCENE_FIXTURE_H
 #define GB_TEST_SCENE_FIXTURE_H
 
-#include <string.h>
-
 #include "gembem/scene.h"
 
 static inline gb_scene fixture_scene(gb_grain *grains, int n, gb_box box, double kn, double kt, double phi_deg)
 {
-    gb_scene s;
-    memset(&s, 0, sizeof s);
+    gb_scene s = gb_scene_default();
     gb_material m = {kn, kt, phi_deg, 0, 0, 0};
     s.grain_grain = s.grain_wall = m;
     s.grains = grains;
     s.n_grains = n;
     s.box = box;
-    s.solver = gb_solver_defaults();
     s.solver.accuracy = 1e-6;
     return s;
 }
