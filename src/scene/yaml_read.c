@@ -217,6 +217,8 @@ int gb_yaml_closest(const char *written, size_t len, const char *const *names, i
     return -1;
 }
 
+enum { PATH_LEN = 256 }; /* a key's path in messages */
+
 static void key_path(const gb_ymap *m, const char *key, char *out, size_t n)
 {
     if (m->name[0]) snprintf(out, n, "%s.%s", m->name, key);
@@ -236,7 +238,7 @@ gb_status gb_ymap_find(gb_ymap *m, const char *key, int flags, struct fy_node **
         if (len == 0) *out = NULL; /* "key:" with no value counts as absent */
     }
     if (!*out && (flags & GB_Y_REQUIRED)) {
-        char path[256];
+        char path[PATH_LEN];
         key_path(m, key, path, sizeof path);
         /* a key of the mapping written for this one: named at its own line */
         void *it = NULL;
@@ -253,15 +255,38 @@ gb_status gb_ymap_find(gb_ymap *m, const char *key, int flags, struct fy_node **
     return GB_OK;
 }
 
+/* The value of a key (NULL when it is absent and may be) and its path for messages ("host.mesh"). */
+static gb_status find_value(gb_ymap *m, const char *key, int flags, struct fy_node **v, char *path, gb_error *err)
+{
+    key_path(m, key, path, PATH_LEN);
+    return gb_ymap_find(m, key, flags, v, err);
+}
+
+/* The same, and the value read as a number when it is there. */
+static gb_status find_number(gb_ymap *m, const char *key, int flags, struct fy_node **v, char *path, double *x,
+                             gb_error *err)
+{
+    gb_status st = find_value(m, key, flags, v, path, err);
+    return st || !*v ? st : gb_yaml_number(m->doc, *v, path, x, err);
+}
+
+/* The n items of a sequence, each a number. */
+static gb_status sequence_numbers(const gb_ymap *m, struct fy_node *v, const char *path, int n, double *out,
+                                  gb_error *err)
+{
+    gb_status st = GB_OK;
+    for (int i = 0; i < n && !st; i++)
+        st = gb_yaml_number(m->doc, fy_node_sequence_get_by_index(v, i), path, &out[i], err);
+    return st;
+}
+
 gb_status gb_ymap_number(gb_ymap *m, const char *key, int flags, double *out, gb_error *err)
 {
     struct fy_node *v;
-    gb_status st = gb_ymap_find(m, key, flags, &v, err);
-    if (st || !v) return st;
-    char path[256];
-    key_path(m, key, path, sizeof path);
+    char path[PATH_LEN];
     double x;
-    if ((st = gb_yaml_number(m->doc, v, path, &x, err))) return st;
+    gb_status st = find_number(m, key, flags, &v, path, &x, err);
+    if (st || !v) return st;
     if ((flags & GB_Y_POSITIVE) && !(x > 0))
         return gb_yaml_fail(m->doc, v, err, "%s: expected a positive number, found %g", path, x);
     if ((flags & GB_Y_NONNEG) && !(x >= 0))
@@ -273,12 +298,10 @@ gb_status gb_ymap_number(gb_ymap *m, const char *key, int flags, double *out, gb
 gb_status gb_ymap_int(gb_ymap *m, const char *key, int flags, long lo, long hi, long *out, gb_error *err)
 {
     struct fy_node *v;
-    gb_status st = gb_ymap_find(m, key, flags, &v, err);
-    if (st || !v) return st;
-    char path[256];
-    key_path(m, key, path, sizeof path);
+    char path[PATH_LEN];
     double x;
-    if ((st = gb_yaml_number(m->doc, v, path, &x, err))) return st;
+    gb_status st = find_number(m, key, flags, &v, path, &x, err);
+    if (st || !v) return st;
     if (x != floor(x) || x < (double)lo || x > (double)hi)
         return gb_yaml_fail(m->doc, v, err, "%s: expected a whole number from %ld to %ld, found %g", path, lo, hi, x);
     *out = (long)x;
@@ -288,10 +311,9 @@ gb_status gb_ymap_int(gb_ymap *m, const char *key, int flags, long lo, long hi, 
 gb_status gb_ymap_bool(gb_ymap *m, const char *key, int flags, int *out, gb_error *err)
 {
     struct fy_node *v;
-    gb_status st = gb_ymap_find(m, key, flags, &v, err);
+    char path[PATH_LEN];
+    gb_status st = find_value(m, key, flags, &v, path, err);
     if (st || !v) return st;
-    char path[256];
-    key_path(m, key, path, sizeof path);
     size_t len = 0;
     const char *s = fy_node_get_type(v) == FYNT_SCALAR ? fy_node_get_scalar(v, &len) : NULL;
     if (s && fy_node_get_style(v) == FYNS_PLAIN) {
@@ -304,10 +326,9 @@ gb_status gb_ymap_bool(gb_ymap *m, const char *key, int flags, int *out, gb_erro
 gb_status gb_ymap_string(gb_ymap *m, const char *key, int flags, char *buf, size_t n, gb_error *err)
 {
     struct fy_node *v;
-    gb_status st = gb_ymap_find(m, key, flags, &v, err);
+    char path[PATH_LEN];
+    gb_status st = find_value(m, key, flags, &v, path, err);
     if (st || !v) return st;
-    char path[256];
-    key_path(m, key, path, sizeof path);
     size_t len = 0;
     const char *s = fy_node_get_type(v) == FYNT_SCALAR ? fy_node_get_scalar(v, &len) : NULL;
     if (!s) return gb_yaml_fail(m->doc, v, err, "%s: expected a string", path);
@@ -321,41 +342,33 @@ gb_status gb_ymap_string(gb_ymap *m, const char *key, int flags, char *buf, size
 gb_status gb_ymap_map(gb_ymap *m, const char *key, int flags, gb_ymap *sub, gb_error *err)
 {
     struct fy_node *v;
-    gb_status st = gb_ymap_find(m, key, flags, &v, err);
-    if (st) return st;
-    char path[256];
-    key_path(m, key, path, sizeof path);
-    return gb_ymap_open(m->doc, v, path, sub, err);
+    char path[PATH_LEN];
+    gb_status st = find_value(m, key, flags, &v, path, err);
+    return st ? st : gb_ymap_open(m->doc, v, path, sub, err);
 }
 
 gb_status gb_ymap_vector(gb_ymap *m, const char *key, int flags, int n, double *out, gb_error *err)
 {
     struct fy_node *v;
-    gb_status st = gb_ymap_find(m, key, flags, &v, err);
+    char path[PATH_LEN];
+    gb_status st = find_value(m, key, flags, &v, path, err);
     if (st || !v) return st;
-    char path[256];
-    key_path(m, key, path, sizeof path);
     if (fy_node_get_type(v) != FYNT_SEQUENCE || fy_node_sequence_item_count(v) != n)
         return gb_yaml_fail(m->doc, v, err, "%s: expected a list of %d numbers", path, n);
-    for (int i = 0; i < n; i++)
-        if ((st = gb_yaml_number(m->doc, fy_node_sequence_get_by_index(v, i), path, &out[i], err))) return st;
-    return GB_OK;
+    return sequence_numbers(m, v, path, n, out, err);
 }
 
 gb_status gb_ymap_numbers(gb_ymap *m, const char *key, int flags, int max, double *out, int *n, gb_error *err)
 {
     struct fy_node *v;
-    gb_status st = gb_ymap_find(m, key, flags, &v, err);
+    char path[PATH_LEN];
+    gb_status st = find_value(m, key, flags, &v, path, err);
     if (st || !v) return st;
-    char path[256];
-    key_path(m, key, path, sizeof path);
     if (fy_node_get_type(v) != FYNT_SEQUENCE || fy_node_sequence_item_count(v) < 1 ||
         fy_node_sequence_item_count(v) > max)
         return gb_yaml_fail(m->doc, v, err, "%s: expected a list of 1 to %d numbers", path, max);
     *n = fy_node_sequence_item_count(v);
-    for (int i = 0; i < *n; i++)
-        if ((st = gb_yaml_number(m->doc, fy_node_sequence_get_by_index(v, i), path, &out[i], err))) return st;
-    return GB_OK;
+    return sequence_numbers(m, v, path, *n, out, err);
 }
 
 gb_status gb_ymap_close(gb_ymap *m, gb_error *err)
