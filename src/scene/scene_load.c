@@ -425,18 +425,14 @@ static gb_status check_springs(const gb_yaml_doc *doc, gb_scene *s, gb_error *er
 static gb_status load(const gb_yaml_doc *doc, gb_scene *s, gb_bem_mesh *mesh, gb_scene_section_fn read_pack,
                       void *user, gb_error *err)
 {
-    gb_ymap top, units;
+    gb_ymap top;
     gb_status st;
     double version = 0;
     if ((st = gb_ymap_open(doc, fy_document_root(doc->fyd), "", &top, err)) ||
         (st = gb_ymap_number(&top, "gembem", GB_Y_REQUIRED, &version, err)))
         return st;
     if (version != 1) return gb_yaml_fail(doc, top.node, err, "gembem: expected scene format version 1");
-    if ((st = gb_ymap_map(&top, "units", GB_Y_REQUIRED, &units, err)) ||
-        (st = gb_ymap_string(&units, "length", GB_Y_REQUIRED, s->length_unit, sizeof s->length_unit, err)) ||
-        (st = gb_ymap_string(&units, "force", GB_Y_REQUIRED, s->force_unit, sizeof s->force_unit, err)) ||
-        (st = gb_ymap_close(&units, err)))
-        return st;
+    if ((st = gb_ymap_units(&top, s->length_unit, s->force_unit, sizeof s->length_unit, err))) return st;
     gb_ymap mats;
     if ((st = gb_ymap_map(&top, "materials", GB_Y_REQUIRED, &mats, err)) ||
         (st = read_material(&mats, "grain_grain", &s->grain_grain, err)) ||
@@ -518,29 +514,14 @@ static gb_status load(const gb_yaml_doc *doc, gb_scene *s, gb_bem_mesh *mesh, gb
     return check_force_scale(doc, &top, s, err);
 }
 
-gb_status gb_scene_load(const char *path, gb_scene *out, gb_error *err)
-{
-    memset(out, 0, sizeof *out);
-    snprintf(out->path, sizeof out->path, "%s", path);
-    gb_yaml_doc doc;
-    gb_status st = gb_yaml_load(path, &doc, err);
-    if (st) return st;
-    gb_bem_mesh mesh;
-    memset(&mesh, 0, sizeof mesh);
-    st = load(&doc, out, &mesh, NULL, NULL, err);
-    gb_bem_mesh_free(&mesh);
-    gb_yaml_free(&doc);
-    if (st) gb_scene_free(out);
-    return st;
-}
-
-gb_status gb_scene_load_pack(const char *path, gb_scene *out, gb_bem_mesh *mesh, gb_scene_section_fn read_pack,
-                             void *user, gb_error *err)
+/* A scene file into out (zeroed first) and its host's mesh into *mesh; on failure both are freed. */
+static gb_status load_file(const char *path, gb_scene *out, gb_bem_mesh *mesh, gb_scene_section_fn read_pack,
+                           void *user, gb_error *err)
 {
     memset(out, 0, sizeof *out);
     memset(mesh, 0, sizeof *mesh);
     snprintf(out->path, sizeof out->path, "%s", path);
-    out->max_overlap = GB_MAX_OVERLAP_DEFAULT;
+    if (read_pack) out->max_overlap = GB_MAX_OVERLAP_DEFAULT; /* a pack scene has no grains section to set it */
     gb_yaml_doc doc;
     gb_status st = gb_yaml_load(path, &doc, err);
     if (st) return st;
@@ -551,4 +532,18 @@ gb_status gb_scene_load_pack(const char *path, gb_scene *out, gb_bem_mesh *mesh,
         gb_scene_free(out);
     }
     return st;
+}
+
+gb_status gb_scene_load(const char *path, gb_scene *out, gb_error *err)
+{
+    gb_bem_mesh mesh;
+    gb_status st = load_file(path, out, &mesh, NULL, NULL, err);
+    if (!st) gb_bem_mesh_free(&mesh);
+    return st;
+}
+
+gb_status gb_scene_load_pack(const char *path, gb_scene *out, gb_bem_mesh *mesh, gb_scene_section_fn read_pack,
+                             void *user, gb_error *err)
+{
+    return load_file(path, out, mesh, read_pack, user, err);
 }
