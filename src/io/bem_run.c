@@ -4,7 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "bem/output.h"
+#include "io/bem_output.h"
 #include "gembem/output.h"
 #include "io/file_util.h"
 

@@ -6,7 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "bem/output.h"
+#include "io/bem_output.h"
 #include "gem/sim.h"
 #include "io/host_output.h"
 #include "io/file_util.h"
