@@ -13,6 +13,7 @@
 set -u
 gembem=$1 jammed=$(cd "$2" && pwd)
 root=$(cd "$(dirname "$0")/../.." && pwd)
+source "$root/tools/lib.sh"
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 fail=0
@@ -21,9 +22,8 @@ bad() { echo "FAIL $1"; fail=1; }
 box=$(sed -n 's/^box: //p' "$jammed/scene.yaml")
 scene() { # scene GRAINS ACCURACY BOX STAGE...
   local grains=$1 accuracy=$2 box=$3; shift 3
-  printf 'gembem: 1\nunits: {length: cm, force: dyn}\nmaterials:\n'
-  printf '  grain_grain: {kn: 1.0e8, kt: 7.0e7, friction_deg: 25}\n  grain_wall: {kn: 1.0e8, kt: 7.0e7, friction_deg: 0}\n'
-  printf 'grains: {file: %s}\nbox: %s\nsolver: {method: global, accuracy: %s}\nloading:\n' "$grains" "$box" "$accuracy"
+  table3_scene_head "$grains"
+  printf 'box: %s\nsolver: {method: global, accuracy: %s}\nloading:\n' "$box" "$accuracy"
   for stage in "$@"; do printf '  - %s\n' "$stage"; done
   printf 'output: {measures_every: 0}\n'
 }

@@ -5,9 +5,8 @@
 set -u
 gembem=$1; root=$(cd "$(dirname "$0")/../.." && pwd)
 scene=$root/tests/bem/scenes/good_base.yaml
-out=$(mktemp -d); fail=0; passed=0
-ok() { passed=$((passed + 1)); echo "ok   $1"; }
-bad() { fail=$((fail + 1)); echo "FAIL $1"; }
+source "$root/tools/lib.sh"
+gb_test_begin
 
 "$gembem" bem "$scene" -o "$out/new" >/dev/null && [ -f "$out/new/run_info.yaml" ] && ok "a new directory is written" \
   || bad "a new directory: not written"
