@@ -14,11 +14,7 @@ set -u
 gembem=$1 jammed=$(cd "$2" && pwd)
 root=$(cd "$(dirname "$0")/../.." && pwd)
 source "$root/tools/lib.sh"
-out=$(mktemp -d)
-trap 'rm -rf "$out"' EXIT
-fail=0
-ok() { echo "ok   $1"; }
-bad() { echo "FAIL $1"; fail=1; }
+gb_test_begin
 box=$(sed -n 's/^box: //p' "$jammed/scene.yaml")
 scene() { # scene GRAINS ACCURACY BOX STAGE...
   local grains=$1 accuracy=$2 box=$3; shift 3
@@ -62,4 +58,4 @@ expect loose "the accuracy is not small against the contact forces" "the packing
 expect host "max_concentration is undefined"
 grep -q "^1,.*,none,nan$" "$out/host/localisation.csv" && ok "host: max_concentration nan at step 1" ||
   bad "host: localisation.csv's step 1 is not undefined"
-exit $fail
+gb_test_end
