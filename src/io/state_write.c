@@ -8,16 +8,18 @@
 
 #include <stdlib.h>
 
+static void write_grains(FILE *f, const void *data)
+{
+    const gb_sim *sim = data;
+    const gb_grain *g = gb_sim_grains(sim);
+    fprintf(f, "x,y,r,rotation\n");
+    for (int i = 0; i < gb_sim_n_grains(sim); i++)
+        fprintf(f, "%.17g,%.17g,%.17g,%.17g\n", g[i].x, g[i].y, g[i].r, g[i].rot);
+}
+
 gb_status gb_grains_csv_write(const char *path, const gb_sim *sim, gb_error *err)
 {
-    gb_atomic_file a;
-    gb_status st = gb_atomic_open(&a, path, err);
-    if (st) return st;
-    const gb_grain *g = gb_sim_grains(sim);
-    fprintf(a.f, "x,y,r,rotation\n");
-    for (int i = 0; i < gb_sim_n_grains(sim); i++)
-        fprintf(a.f, "%.17g,%.17g,%.17g,%.17g\n", g[i].x, g[i].y, g[i].r, g[i].rot);
-    return gb_atomic_commit(&a, err);
+    return gb_atomic_write(path, write_grains, sim, err);
 }
 
 gb_status gb_contacts_csv_write(const char *path, const gb_sim *sim, gb_error *err)
@@ -72,17 +74,14 @@ static void write_bc(FILE *f, const gb_bem_bc *bc)
 
 /* state_host.csv: per cavity element, in the host's order, its boundary particle's centre now and
  * its displacement (the particle moves with it: centre = midpoint + displacement, to rounding). */
-static gb_status write_host_csv(const char *path, const gb_sim *sim, gb_error *err)
+static void write_host_csv(FILE *f, const void *data)
 {
+    const gb_sim *sim = data;
     const gb_host *h = sim->host;
-    gb_atomic_file a;
-    gb_status st = gb_atomic_open(&a, path, err);
-    if (st) return st;
-    fprintf(a.f, "element,x,y,ux,uy\n");
+    fprintf(f, "element,x,y,ux,uy\n");
     for (int k = 0; k < h->m / 2; k++)
-        fprintf(a.f, "%d,%.17g,%.17g,%.17g,%.17g\n", h->K.elem[k], sim->bp.x[k], sim->bp.y[k], h->u[2 * k],
+        fprintf(f, "%d,%.17g,%.17g,%.17g,%.17g\n", h->K.elem[k], sim->bp.x[k], sim->bp.y[k], h->u[2 * k],
                 h->u[2 * k + 1]);
-    return gb_atomic_commit(&a, err);
 }
 
 static void write_host_yaml(FILE *f, const gb_sim *sim)
@@ -111,7 +110,7 @@ gb_status gb_state_write(const char *dir, const gb_sim *sim, gb_error *err)
     snprintf(path, sizeof path, "%s/state_contacts.csv", dir);
     if ((st = gb_contacts_csv_write(path, sim, err))) return st;
     snprintf(path, sizeof path, "%s/state_host.csv", dir);
-    if (sim->host && (st = write_host_csv(path, sim, err))) return st;
+    if (sim->host && (st = gb_atomic_write(path, write_host_csv, sim, err))) return st;
     snprintf(path, sizeof path, "%s/state.yaml", dir);
     gb_atomic_file a;
     if ((st = gb_atomic_open(&a, path, err))) return st;
