@@ -11,6 +11,19 @@ gb_test_end() {
   [ $fail -eq 0 ]
 }
 
+# A scene refused before any computation: `$gembem SUBCOMMAND SCENE -o $out/NAME` exits with 2, a
+# message holding EXPECT, and no directory NAME; adds to the counts n and fail, prints a line.
+#   expect_refused SUBCOMMAND SCENE EXPECT
+expect_refused() {
+  local name msg code
+  name=$(basename "$2" .yaml); n=$((n + 1))
+  msg=$("$gembem" "$1" "$2" -o "$out/$name" 2>&1 >/dev/null); code=$?
+  if [ $code -ne 2 ]; then echo "FAIL $name: exit status $code, expected 2 ($msg)"; fail=$((fail + 1)); return; fi
+  case "$msg" in *"$3"*) ;; *) echo "FAIL $name: message '$msg' lacks '$3'"; fail=$((fail + 1)); return;; esac
+  if [ -e "$out/$name" ]; then echo "FAIL $name: the directory was created"; fail=$((fail + 1)); return; fi
+  echo "ok   $name: $msg"
+}
+
 # The materials of Kishino (1989) Table 3: kn, kt = 1e8, 7e7 dyn/cm, grain-grain friction $1 deg
 # (default 25), frictionless walls.
 table3_materials() {
