@@ -41,11 +41,13 @@ table3_scene_head() {
   printf 'grains: {file: %s}\n' "$1"
 }
 
-# The benchmark scripts' arguments, [BUILD_DIR] [N ...]: $root, $build (default build), $sizes
-# (default 1000 10000 100000), $steps ($STEPS, default 4) and $out (runs/bench_gem).
+# The benchmark scripts' arguments, [BUILD_DIR] [N ...]: $root, $build (default build, relative to
+# the repository's root unless absolute), $sizes (default 1000 10000 100000), $steps ($STEPS,
+# default 4) and $out (runs/bench_gem).
 bench_args() {
   root=$(cd "$(dirname "$0")/.." && pwd)
-  build=$root/${1:-build}
+  build=${1:-build}
+  case $build in /*) ;; *) build=$root/$build;; esac
   shift || true
   sizes=${*:-1000 10000 100000}
   steps=${STEPS:-4}
