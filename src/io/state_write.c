@@ -2,6 +2,7 @@
 #include <stdio.h>
 
 #include "gembem/output.h"
+#include "io/contacts_file.h"
 #include "io/file_util.h"
 #include "scene/grains_file.h"
 #include "solver/solver.h"
@@ -22,37 +23,30 @@ gb_status gb_grains_csv_write(const char *path, const gb_sim *sim, gb_error *err
     return gb_atomic_write(path, write_grains, sim, err);
 }
 
+/* (xi, yi) - (xj, yj): grain i's centre to the contact's far end, for drawing force chains. */
+static void write_contacts(FILE *f, const gb_sim *sim, const gb_contact *c, int m)
+{
+    int rolling = gb_scene_rolling(sim->scene); /* the column only where there is rolling resistance */
+    fprintf(f, "i,j,pn,pt,nx,ny,overlap,energy,dissipation,xi,yi,xj,yj%s\n", rolling ? ",mr" : "");
+    const gb_grain *g = gb_sim_grains(sim);
+    for (int k = 0; k < m; k++) {
+        const gb_material *mat = gb_sim_material(sim, c[k].j);
+        double e = gb_spring_energy(c[k].pn, c[k].pt, c[k].mr, mat);
+        const gb_grain *gi = &g[c[k].i];
+        double xj, yj;
+        gb_contact_far_end(g, &c[k], &xj, &yj);
+        char side[32];
+        gb_side_name(c[k].j, side, sizeof side);
+        fprintf(f, "%d,%s,%.17g,%.17g,%.17g,%.17g,%.17g,%.10e,%.10e,%.17g,%.17g,%.17g,%.17g", c[k].i, side, c[k].pn,
+                c[k].pt, c[k].nx, c[k].ny, c[k].overlap, e, c[k].diss, gi->x, gi->y, xj, yj);
+        if (rolling) fprintf(f, ",%.17g", c[k].mr);
+        fprintf(f, "\n");
+    }
+}
+
 gb_status gb_contacts_csv_write(const char *path, const gb_sim *sim, gb_error *err)
 {
-    int m;
-    gb_contact *c = gb_sim_contacts_copy(sim, &m, err);
-    if (!c) return err->code;
-    gb_atomic_file a;
-    gb_status st = gb_atomic_open(&a, path, err);
-    if (!st) {
-        /* (xi, yi) - (xj, yj): grain i's centre to grain j's, or to the contact point on a wall or a
-         * boundary particle, for drawing force chains. */
-        int rolling = gb_scene_rolling(sim->scene); /* the column only where there is rolling resistance */
-        fprintf(a.f, "i,j,pn,pt,nx,ny,overlap,energy,dissipation,xi,yi,xj,yj%s\n", rolling ? ",mr" : "");
-        const gb_grain *g = gb_sim_grains(sim);
-        for (int k = 0; k < m; k++) {
-            const gb_material *mat = gb_sim_material(sim, c[k].j);
-            double e = gb_spring_energy(c[k].pn, c[k].pt, c[k].mr, mat);
-            const gb_grain *gi = &g[c[k].i];
-            double xj, yj;
-            if (c[k].j >= 0) xj = g[c[k].j].x, yj = g[c[k].j].y;
-            else xj = gi->x + c[k].nx * (gi->r - c[k].overlap), yj = gi->y + c[k].ny * (gi->r - c[k].overlap);
-            char side[32];
-            gb_side_name(c[k].j, side, sizeof side);
-            fprintf(a.f, "%d,%s,%.17g,%.17g,%.17g,%.17g,%.17g,%.10e,%.10e,%.17g,%.17g,%.17g,%.17g", c[k].i, side,
-                    c[k].pn, c[k].pt, c[k].nx, c[k].ny, c[k].overlap, e, c[k].diss, gi->x, gi->y, xj, yj);
-            if (rolling) fprintf(a.f, ",%.17g", c[k].mr);
-            fprintf(a.f, "\n");
-        }
-        st = gb_atomic_commit(&a, err);
-    }
-    free(c);
-    return st;
+    return gb_contacts_file_write(path, sim, write_contacts, err);
 }
 
 /* A group's condition in the scene's syntax (host.boundary), with its current values. */

@@ -3,17 +3,16 @@
 #include <stdlib.h>
 
 #include "gembem/output.h"
+#include "io/contacts_file.h"
 #include "io/file_util.h"
 #include "io/vtk.h"
 
-gb_status gb_vtk_write_grains(const char *path, const gb_sim *sim, gb_error *err)
+/* The grains as points with their radius, rotation, |fixing force| and number. */
+static void write_grains(FILE *f, const void *data)
 {
-    gb_atomic_file a;
-    gb_status st = gb_atomic_open(&a, path, err);
-    if (st) return st;
+    const gb_sim *sim = data;
     int n = gb_sim_n_grains(sim);
     const gb_grain *g = gb_sim_grains(sim);
-    FILE *f = a.f;
     gb_vtk_begin(f, GB_VTK_POLYDATA, n, "NumberOfVerts", n);
     for (int i = 0; i < n; i++) fprintf(f, "%.17g %.17g 0\n", g[i].x, g[i].y);
     gb_vtk_end_points(f);
@@ -44,38 +43,24 @@ gb_status gb_vtk_write_grains(const char *path, const gb_sim *sim, gb_error *err
     gb_vtk_array_end(f);
     gb_vtk_close(f, "Verts");
     gb_vtk_end(f, GB_VTK_POLYDATA);
-    return gb_atomic_commit(&a, err);
 }
 
-/* Contact points on the walls, for drawing grain-wall contacts as lines. */
-static void wall_point(const gb_grain *a, const gb_contact *c, double *x, double *y)
+gb_status gb_vtk_write_grains(const char *path, const gb_sim *sim, gb_error *err)
 {
-    *x = a->x + c->nx * (a->r - c->overlap);
-    *y = a->y + c->ny * (a->r - c->overlap);
+    return gb_atomic_write(path, write_grains, sim, err);
 }
 
-gb_status gb_vtk_write_contacts(const char *path, const gb_sim *sim, gb_error *err)
+/* The contacts as lines from grain i's centre to the contact's far end, and the box's four sides. */
+static void write_contacts(FILE *f, const gb_sim *sim, const gb_contact *c, int m)
 {
-    int m;
-    gb_contact *c = gb_sim_contacts_copy(sim, &m, err);
-    if (!c) return err->code;
-    gb_atomic_file a;
-    gb_status st = gb_atomic_open(&a, path, err);
-    if (st) {
-        free(c);
-        return st;
-    }
     const gb_grain *g = gb_sim_grains(sim);
     gb_box b = gb_sim_box(sim);
-    FILE *f = a.f;
     int lines = m + 4, points = 2 * m + 4;
     gb_vtk_begin(f, GB_VTK_POLYDATA, points, "NumberOfLines", lines);
     for (int k = 0; k < m; k++) {
-        const gb_grain *p = &g[c[k].i];
         double x, y;
-        if (c[k].j >= 0) x = g[c[k].j].x, y = g[c[k].j].y;
-        else wall_point(p, &c[k], &x, &y);
-        fprintf(f, "%.17g %.17g 0\n%.17g %.17g 0\n", p->x, p->y, x, y);
+        gb_contact_far_end(g, &c[k], &x, &y);
+        fprintf(f, "%.17g %.17g 0\n%.17g %.17g 0\n", g[c[k].i].x, g[c[k].i].y, x, y);
     }
     fprintf(f, "%.17g %.17g 0\n%.17g %.17g 0\n%.17g %.17g 0\n%.17g %.17g 0\n", b.left, b.bottom, b.right, b.bottom,
             b.right, b.top, b.left, b.top);
@@ -106,6 +91,9 @@ gb_status gb_vtk_write_contacts(const char *path, const gb_sim *sim, gb_error *e
     gb_vtk_array_end(f);
     gb_vtk_close(f, "Lines");
     gb_vtk_end(f, GB_VTK_POLYDATA);
-    free(c);
-    return gb_atomic_commit(&a, err);
+}
+
+gb_status gb_vtk_write_contacts(const char *path, const gb_sim *sim, gb_error *err)
+{
+    return gb_contacts_file_write(path, sim, write_contacts, err);
 }
