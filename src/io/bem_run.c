@@ -98,7 +98,8 @@ static gb_status write_info(const char *path, const char *command, const bem_run
         fprintf(f, "  stiffness:   # the condensed stiffness K on the group\n    group: %s\n"
                    "    size: %d   # K is size x size\n    asymmetry: %.6e   # ||K - K^t||_F / ||K||_F\n    rcond: %.6e\n    length_scale: %.6g\n",
                 sc->stiffness_group, r->k.m, r->k.asymmetry, r->k.rcond, r->k.scale);
-    fprintf(f, "time:   # seconds of this process\n  total: %.3f\nstatus: completed\n", gb_clock_seconds() - started);
+    fprintf(f, "time:   # seconds: reading, solving and writing\n  total: %.3f\nstatus: completed\n",
+            gb_clock_seconds() - started);
     return gb_atomic_commit(&a, err);
 }
 
