@@ -5,6 +5,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 static int gb_test_failures = 0;
 
@@ -26,6 +27,20 @@ static int gb_test_failures = 0;
             gb_test_failures++;                                                                      \
         }                                                                                            \
     } while (0)
+
+/* Writes text to /tmp/gb_test_<name> and returns that path (until the next call): an input file
+ * made by the test itself. */
+static inline const char *gb_test_file(const char *name, const char *text)
+{
+    static char path[256];
+    snprintf(path, sizeof path, "/tmp/gb_test_%s", name);
+    FILE *f = fopen(path, "w");
+    if (f) {
+        fputs(text, f);
+        fclose(f);
+    }
+    return path;
+}
 
 #define TEST_END()                                                                                   \
     do {                                                                                             \

@@ -8,11 +8,8 @@
 #   [SOLVERS="reference cholmod umfpack"] [STEPS=4] tools/bench_gem.sh [BUILD_DIR] [N ...]
 #   (default: build, 1000 10000 100000)
 set -euo pipefail
-root=$(cd "$(dirname "$0")/.." && pwd)
-build=$root/${1:-build}; shift || true
-sizes=${*:-1000 10000 100000}
-steps=${STEPS:-4}
-out=$root/runs/bench_gem
+source "$(dirname "$0")/lib.sh"
+bench_args "$@"
 export OPENBLAS_NUM_THREADS=${OPENBLAS_NUM_THREADS:-1} OMP_NUM_THREADS=${OMP_NUM_THREADS:-1}
 mkdir -p "$out"
 echo "machine: $(nproc --all) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); $(date -u +%Y-%m-%d)"

@@ -7,11 +7,8 @@
 # step, seconds per iteration, and nanoseconds per contact and iteration.
 #   [SOLVER=reference|cholmod|umfpack] tools/bench_gem_loose.sh [BUILD_DIR] [N ...]   (default: build, 1000 10000 100000)
 set -euo pipefail
-root=$(cd "$(dirname "$0")/.." && pwd)
-build=$root/${1:-build}; shift || true
-sizes=${*:-1000 10000 100000}
-steps=${STEPS:-4}
-out=$root/runs/bench_gem
+source "$(dirname "$0")/lib.sh"
+bench_args "$@"
 mkdir -p "$out"
 echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); $(date -u +%Y-%m-%d)"
 echo "threads: OMP_NUM_THREADS=${OMP_NUM_THREADS:-unset} (the reference iteration is single-threaded)"
@@ -20,12 +17,7 @@ for n in $sizes; do
   d=$out/n$n; mkdir -p "$d"
   "$build/gb_packgen" --n "$n" --diameters 0.6,0.9,1.2 --seed 1 --out "$d/grains.csv" >/dev/null
   cat > "$d/scene.yaml" <<YAML
-gembem: 1
-units: {length: cm, force: dyn}
-materials:
-  grain_grain: {kn: 1.0e8, kt: 7.0e7, friction_deg: 25}
-  grain_wall:  {kn: 1.0e8, kt: 7.0e7, friction_deg: 0}
-grains: {file: grains.csv}
+$(table3_scene_head grains.csv)
 $(grep '^box:' "$d/grains.csv.box.yaml" 2>/dev/null || grep '^box:' "$d/grains.box.yaml")
 solver: {accuracy: 100, max_iterations: 1000000}
 loading:  # not used by bench_gem, which drives the stress itself

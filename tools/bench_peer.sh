@@ -61,11 +61,9 @@
 # wall stresses s1 (vertical), s2 (horizontal), by the checker: the codes reach different
 # equilibria (friction makes the end state depend on the path), and these show how different.
 set -uo pipefail
-root=$(cd "$(dirname "$0")/.." && pwd)
+source "$(dirname "$0")/lib.sh"
+bench_args "$@"
 usage() { echo "usage: [LAMMPS_DT=..] [LAMMPS_ZETA=..] [LAMMPS_TDAMP=0|1] [LAMMPS_VISCOUS=..] [RUNS=\"lammps line_search damped reference\"] [SWEEP=1] tools/bench_peer.sh [BUILD_DIR] [N ...]" >&2; exit 2; }
-build=${1:-build}; shift || true
-case $build in /*) ;; *) build=$root/$build;; esac
-sizes=${*:-1000 10000 100000}
 for n in $sizes; do
   [[ $n =~ ^[1-9][0-9]*$ ]] || { echo "bench_peer.sh: N must be a positive integer, got '$n'" >&2; usage; }
 done

@@ -28,11 +28,9 @@
 # the increments of the vertical and lateral stresses s1, s2 (steps.csv, compression positive,
 # dyn/cm) from its start to 0.5 % and 1 % of vertical strain.
 set -uo pipefail
-root=$(cd "$(dirname "$0")/.." && pwd)
+source "$(dirname "$0")/lib.sh"
+bench_args "$@"
 usage() { echo "usage: [SOLVER=global|reference] [LINEAR=cholmod|umfpack] [NEWTON=damped|line_search] [PERTURB=f] tools/bench_solver.sh [BUILD_DIR] [N ...]" >&2; exit 2; }
-build=${1:-build}; shift || true
-case $build in /*) ;; *) build=$root/$build;; esac
-sizes=${*:-1000 10000 100000}
 export SOLVER=${SOLVER:-global} LINEAR=${LINEAR:-cholmod} NEWTON=${NEWTON:-damped}
 case $SOLVER in global|reference) ;; *) echo "bench_solver.sh: SOLVER must be global or reference" >&2; usage;; esac
 case $LINEAR in cholmod|umfpack) ;; *) echo "bench_solver.sh: LINEAR must be cholmod or umfpack" >&2; usage;; esac

@@ -8,6 +8,7 @@
 #   [KEEP=1] tools/settle_packing.sh BUILD_DIR OUT_DIR N SEED
 # Writes OUT_DIR/deposit.csv (+ .box.yaml), settle.csv and scene.yaml; KEEP=1 reuses settle.csv.
 set -euo pipefail
+source "$(dirname "$0")/lib.sh"
 build=$1 out=$2 n=$3 seed=$4
 mkdir -p "$out"
 if [ "${KEEP:-0}" != 1 ] || [ ! -s "$out/settle.csv" ]; then
@@ -17,12 +18,7 @@ if [ "${KEEP:-0}" != 1 ] || [ ! -s "$out/settle.csv" ]; then
   mv "$out/settle.csv.part" "$out/settle.csv"
 fi
 cat > "$out/scene.yaml" <<YAML
-gembem: 1
-units: {length: cm, force: dyn}
-materials:
-  grain_grain: {kn: 1.0e8, kt: 7.0e7, friction_deg: 25}
-  grain_wall:  {kn: 1.0e8, kt: 7.0e7, friction_deg: 0}
-grains: {file: settle.csv}
+$(table3_scene_head settle.csv)
 $(grep '^box:' "$out/deposit.box.yaml")
 body_force: {gravity: [0, -981], density: 2.65}
 solver: {accuracy: 100, max_iterations: 2000000}

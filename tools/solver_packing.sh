@@ -27,6 +27,7 @@
 # step of the path (before its cut-backs), REF_MAX_ITERATIONS the reference relaxation (it
 # needs thousands of iterations where the global solver needs tens).
 set -euo pipefail
+source "$(dirname "$0")/lib.sh"
 [ $# -ge 4 ] && [ $# -le 5 ] || {
   echo "usage: tools/solver_packing.sh BUILD_DIR OUT_DIR N SEED [STATE_RUN_DIR]" >&2; exit 2; }
 build=$1 out=$2 n=$3 seed=$4 state=${5:-${STATE:-}}
@@ -76,14 +77,6 @@ solver_line() {
     echo "solver: {method: reference, accuracy: 100, max_iterations: $2}"
   fi
 }
-# materials: grain-grain friction in degrees; the walls are frictionless
-materials() {
-  cat <<YAML
-materials:                    # Kishino (1989) Table 3
-  grain_grain: {kn: 1.0e8, kt: 7.0e7, friction_deg: $1}
-  grain_wall:  {kn: 1.0e8, kt: 7.0e7, friction_deg: 0}
-YAML
-}
 # A relaxation scene: friction, method, cap, file
 relax_scene() {
   cat > "$4" <<YAML
@@ -91,7 +84,7 @@ relax_scene() {
 # packing of $n discs, seed $seed${PERTURB:+, centres perturbed by $PERTURB r}.
 gembem: 1
 units: {length: cm, force: dyn}
-$(materials "$1")
+$(table3_materials "$1")
 grains: {file: $grains}
 $box
 $(solver_line "$2" "$3")
@@ -109,7 +102,7 @@ cat > "$out/path.yaml" <<YAML
 # fixed) of 1 % in 20 steps from the final state of a friction relaxation.
 gembem: 1
 units: {length: cm, force: dyn}
-$(materials 25)
+$(table3_materials 25)
 initial_state: $state/state.yaml
 $(solver_line "$solver" "${PATH_MAX_ITERATIONS:-500}")
 loading:

@@ -57,6 +57,12 @@ SOLVERS = {"reference": {"method": "reference"}, "global CHOLMOD": {"method": "g
            "global UMFPACK": {"method": "global", "linear": "umfpack"}}
 
 
+def save_figure(fig, name):
+    """Writes a figure of the page to validation/NAME."""
+    fig.tight_layout()
+    fig.savefig(os.path.join(ROOT, "validation", name), dpi=110)
+
+
 def run_scene(name, scene, repeat=3, fast=0.1, fast_repeat=7, timeout=None):
     """Writes `scene` (a gembem.Scene) to runs/speed_vs_error/NAME/scene.yaml and runs it `repeat` times (`fast_repeat`
     times if the first run's solver took less than `fast` seconds): the machine is shared, so the
@@ -121,8 +127,7 @@ def bem_section():
     ax.set_ylabel("relative error")
     ax.set_title("Boundary elements: error against cost, 16 to 1024 elements per circle")
     ax.legend()
-    fig.tight_layout()
-    fig.savefig(os.path.join(ROOT, "validation", "speed_vs_error_bem.png"), dpi=110)
+    save_figure(fig, "speed_vs_error_bem.png")
     out = ["## Boundary elements: Lame and Kirsch", "", f"Measured {datetime.date.today()}.", "",
            "Lame's annulus 1 < r < 2 (inner pressure, outer fixed, plane strain, nu = 0.3): the largest",
            "relative error of u_r on the cavity; Kirsch (a hole of radius 1 in an infinite plane under",
@@ -158,8 +163,7 @@ def three_discs_section():
     ax.set_ylabel("largest |stress ratio - exact| at 1..5 %")
     ax.set_title("Three discs: error against cost (kn 1e8..1e12, a = 100 and 1)")
     ax.legend()
-    fig.tight_layout()
-    fig.savefig(os.path.join(ROOT, "validation", "speed_vs_error_three_discs.png"), dpi=110)
+    save_figure(fig, "speed_vs_error_three_discs.png")
 
     out = [
         "## Three discs (Kishino 1989, section 3)",
@@ -330,8 +334,7 @@ def cavity_section():
     fig.suptitle(f"Cavity packing (27 grains, 24 cavity elements): error against cost, a = 1e-1..1e-8 kgf "
                  f"(labels); errors against UMFPACK at a = {CAVITY_TIGHT:g}; below {FLOOR:g} drawn at {FLOOR:g}",
                  fontsize=10)
-    fig.tight_layout()
-    fig.savefig(os.path.join(ROOT, "validation", "speed_vs_error_cavity.png"), dpi=110)
+    save_figure(fig, "speed_vs_error_cavity.png")
 
     ue, ce = tight["global UMFPACK"], tight["global CHOLMOD"]
     out = [
@@ -501,8 +504,7 @@ def jammed1e4_section():
         ax.legend(fontsize=8)
     fig.suptitle(f"10 000 jammed discs, one isotropic stress step to {stress:.4g} dyn/cm: error against cost, "
                  f"a [dyn] on the labels; against UMFPACK at a = {JAM_TIGHT:g}", fontsize=10)
-    fig.tight_layout()
-    fig.savefig(os.path.join(ROOT, "validation", "speed_vs_error_jammed1e4.png"), dpi=110)
+    save_figure(fig, "speed_vs_error_jammed1e4.png")
 
     out = [
         "## 10 000 jammed discs, isotropic compression",

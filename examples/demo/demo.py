@@ -65,6 +65,19 @@ def loading_steps(run):
     return s["step"][s["stage"] == 2]
 
 
+def _panels(figsize, rows, cols):
+    """A figure of rows x cols panels, laid out to fit; returns it and its axes."""
+    f = Figure(figsize=figsize, layout="constrained")
+    return f, f.subplots(rows, cols)
+
+
+def _save(f, out, name, dpi):
+    """Writes the figure to OUT/name; returns that path."""
+    path = os.path.join(out, name)
+    f.savefig(path, dpi=dpi)
+    return path
+
+
 def draw(settled, compressed, out):
     """The figures; yields (path, what it shows)."""
     os.makedirs(out, exist_ok=True)
@@ -75,8 +88,7 @@ def draw(settled, compressed, out):
     height = 10.0
 
     # 1. the host's stress and the force chains, start and end
-    f = Figure(figsize=(12, 5.6), layout="constrained")
-    a, b = f.subplots(1, 2)
+    f, (a, b) = _panels((12, 5.6), 1, 2)
     u_start = np.abs(settled.host_particles["ux"]).max()
     fig.host_stress(settled, ax=a, title="start: the packed grains press on the elastic body\n"
                     f"(largest cavity displacement {u_start:.2g} cm)")
@@ -84,14 +96,12 @@ def draw(settled, compressed, out):
                     f"(top down {travel:.2f} cm; sides at 100 kgf/cm^2)")
     f.suptitle("Grains in the cavity of an elastic body: the host's in-plane von Mises stress (own scale per panel) "
                "and the force chains (line width proportional to the normal force)", fontsize=10)
-    path = os.path.join(out, "start_end.png")
-    f.savefig(path, dpi=110)
+    path = _save(f, out, "start_end.png", 110)
     yield path, ("the host's stress around the cavity and the grains' force chains, at the start (packed grains "
                  "pressing on the body) and at the end of the compression")
 
     # 2. load-displacement, and the stresses in the granular zone
-    f = Figure(figsize=(12, 4.8), layout="constrained")
-    a, b = f.subplots(1, 2)
+    f, (a, b) = _panels((12, 4.8), 1, 2)
     fig.load_displacement(compressed, "top", "y", ax=a)
     a.set_xlabel("top displacement, downwards [cm]")
     a.set_ylabel("force on the top, downwards [kgf per cm of thickness]")
@@ -110,28 +120,24 @@ def draw(settled, compressed, out):
                 "against the body's nominal stresses", fontsize=10)
     b.grid(alpha=0.3)
     b.legend(fontsize=8)
-    path = os.path.join(out, "load_displacement.png")
-    f.savefig(path, dpi=110)
+    path = _save(f, out, "load_displacement.png", 110)
     yield path, ("the body's load-displacement curve (force on the top against its displacement), and the "
                  "granular zone's mean stresses against the body's")
 
     # 3. hoop stress along the cavity wall, with the grains and empty
-    f = Figure(figsize=(12, 4.6), layout="constrained")
-    a, b = f.subplots(1, 2)
+    f, (a, b) = _panels((12, 4.6), 1, 2)
     fig.cavity_wall(compressed, [0], ax=a, labels=["start"])
     fig.cavity_wall(compressed, [last], ax=b, labels=["end"])
     a.set_title("start: the grains alone load the cavity", fontsize=10)
     b.set_title(f"end: top down {travel:.2f} cm", fontsize=10)
     f.suptitle("The host's hoop stress along the cavity wall, with the grains (solid) and for an empty cavity under the "
                "same loads (dashed)", fontsize=10)
-    path = os.path.join(out, "cavity_wall.png")
-    f.savefig(path, dpi=110)
+    path = _save(f, out, "cavity_wall.png", 110)
     yield path, ("the host's hoop stress along the cavity wall at the start and the end, with the grains against "
                  "an empty cavity")
 
     # 4. strain maps and the localisation index
-    f = Figure(figsize=(11, 9.5), layout="constrained")
-    axes = f.subplots(2, 2)
+    f, axes = _panels((11, 9.5), 2, 2)
     fig.strain_map(compressed, first, ax=axes[0, 0],
                    title=f"start: shear strain of the first step of the top (step {first})\n"
                          f"localisation index {_index(compressed, first):.2f} (0.1: uniform)")
@@ -147,8 +153,7 @@ def draw(settled, compressed, out):
     axes[1, 1].set_title("localisation index of each step's strain increment", fontsize=10)
     f.suptitle("The granular zone's strain (on the triangles of the grain centres; grains outlined, "
                "the cavity's boundary in grey) and its localisation index", fontsize=10)
-    path = os.path.join(out, "strain_maps.png")
-    f.savefig(path, dpi=100)
+    path = _save(f, out, "strain_maps.png", 100)
     yield path, ("the granular zone's shear strain in the first and last steps of the compression and over "
                  "all of it, with the localisation index of each step")
 

@@ -49,6 +49,7 @@ typedef enum {
     GB_STAGE_HOST_DISPLACEMENT = 5, /* the host's 'displacement' groups moved by increments per step */
     GB_STAGE_HOST_LOAD = 6          /* the host's condition values and remote stress grown per step */
 } gb_stage_kind;
+#define GB_STAGE_KINDS 7 /* the number of kinds above, numbered from 0 */
 
 #define GB_HOST_MAX_BCS 16
 

@@ -18,7 +18,8 @@ static void usage(FILE *to)
                 "  interior.vtu   displacement and stress at the scene's interior points (ParaView)\n"
                 "  interior.csv   the same as a table\n"
                 "  stiffness.csv  the condensed stiffness, when the scene asks for it\n"
-                "  scene.yaml, version.txt, summary.txt\n");
+                "  scene.yaml     a copy of the scene\n"
+                "  run_info.yaml  how it was made; rcond, the length scale used, K's asymmetry\n");
 }
 
 int gb_cli_bem(int argc, char **argv)
@@ -47,8 +48,9 @@ int gb_cli_bem(int argc, char **argv)
         return 2;
     }
     gb_error err = {0};
-    char summary[4096];
-    gb_status st = gb_bem_run(scene, out, overwrite, summary, sizeof summary, &err);
+    char summary[4096], command[1024];
+    gb_cli_command_line(argc, argv, command, sizeof command);
+    gb_status st = gb_bem_run(scene, out, overwrite, command, summary, sizeof summary, &err);
     if (st) return gb_cli_report(&err);
     fputs(summary, stdout);
     return 0;

@@ -4,9 +4,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "bem/output.h"
+#include "core/clock.h"
 #include "gembem/output.h"
+#include "io/bem_output.h"
 #include "io/file_util.h"
+#include "io/run_record.h"
 
 typedef struct {
     gb_bem_scene sc;
@@ -52,24 +54,61 @@ static gb_status compute(const char *scene, bem_run *r, gb_error *err)
     return GB_OK;
 }
 
-static gb_status write_text(const char *path, const char *text, gb_error *err)
+/* What `gembem bem` prints: the solve's numbers in a few lines. */
+static void summary_text(const bem_run *r, char *text, size_t cap)
 {
+    const gb_bem_scene *sc = &r->sc;
+    int used = snprintf(text, cap,
+                        "gembem %s\nscene: %s\nmesh: %s (%d elements, %d loop(s), %s)\nunits: length %s, force %s\n"
+                        "system rcond: %.6e (at the scene's own lengths: %.6e), length scale used: %.6g\n",
+                        gb_version(), sc->path, sc->mesh_path, sc->mesh.n, sc->mesh.n_loops,
+                        sc->mesh.unbounded ? "unbounded" : "bounded", sc->length_unit, sc->force_unit, r->sol.rcond,
+                        r->sol.rcond_first, r->sol.scale);
+    if (r->has_k && used > 0 && (size_t)used < cap)
+        snprintf(text + used, cap - (size_t)used,
+                 "stiffness on '%s': %d x %d, ||K - K^t||_F / ||K||_F = %.6e, rcond %.6e, length scale %.6g\n",
+                 sc->stiffness_group, r->k.m, r->k.m, r->k.asymmetry, r->k.rcond, r->k.scale);
+}
+
+/* run_info.yaml: how the directory was made (the keys of a run's, io/run_record.h), the settings
+ * the solve used and, as keys, the numbers it measured (docs/run-directory.md). */
+static gb_status write_info(const char *path, const char *command, const bem_run *r, double started, gb_error *err)
+{
+    const gb_bem_scene *sc = &r->sc;
+    const gb_bem_material *mat = &sc->material;
     gb_atomic_file a;
     gb_status st = gb_atomic_open(&a, path, err);
     if (st) return st;
-    fputs(text, a.f);
+    FILE *f = a.f;
+    fprintf(f, "# How this run directory was made.\n");
+    gb_run_record_origin(f, command, sc->path, "started");
+    fprintf(f, "settings:   # as the solve used them\n  units: {length: %s, force: %s}\n", sc->length_unit,
+            sc->force_unit);
+    fprintf(f, "  material: {shear_modulus: %.17g, poisson: %.17g, plane: %s}\n", mat->shear_modulus, mat->poisson,
+            mat->plane == GB_BEM_PLANE_STRESS ? "stress" : "strain");
+    fprintf(f, "  mesh: {file: \"%s\", elements: %d, loops: %d, unbounded: %s}\n", sc->mesh_path, sc->mesh.n,
+            sc->mesh.n_loops, sc->mesh.unbounded ? "true" : "false");
+    gb_run_record_machine(f);
+    fprintf(f, "solve:   # what the boundary element solve measured\n"
+               "  system_rcond: %.6e   # the system's reciprocal condition number, at the length scale used\n"
+               "  system_rcond_scene_lengths: %.6e   # the same at the scene's own lengths\n"
+               "  length_scale: %.6g\n",
+            r->sol.rcond, r->sol.rcond_first, r->sol.scale);
+    if (r->has_k)
+        fprintf(f, "  stiffness:   # the condensed stiffness K on the group\n    group: %s\n"
+                   "    size: %d   # K is size x size\n    asymmetry: %.6e   # ||K - K^t||_F / ||K||_F\n    rcond: %.6e\n    length_scale: %.6g\n",
+                sc->stiffness_group, r->k.m, r->k.asymmetry, r->k.rcond, r->k.scale);
+    fprintf(f, "time:   # seconds: reading, solving and writing\n  total: %.3f\nstatus: completed\n",
+            gb_clock_seconds() - started);
     return gb_atomic_commit(&a, err);
 }
 
-static gb_status write_all(const char *dir, bem_run *r, char *summary, size_t cap, gb_error *err)
+static gb_status write_all(const char *dir, const char *command, const bem_run *r, double started, gb_error *err)
 {
     char path[1200];
     gb_status st = GB_OK;
 #define OUT(name) (snprintf(path, sizeof path, "%s/%s", dir, name), path)
     if (!st) st = gb_copy_file(r->sc.path, OUT("scene.yaml"), err);
-    char text[4096];
-    snprintf(text, sizeof text, "gembem %s\n", gb_version());
-    if (!st) st = write_text(OUT("version.txt"), text, err);
     if (!st && r->sc.write_boundary_csv)
         st = gb_bem_write_boundary_csv(OUT("boundary.csv"), &r->sc.mesh, &r->sol, r->bs, err);
     if (!st && r->sc.write_boundary_vtp) st = gb_bem_write_boundary_vtp(OUT("boundary.vtp"), &r->sc.mesh, &r->sol, err);
@@ -77,31 +116,23 @@ static gb_status write_all(const char *dir, bem_run *r, char *summary, size_t ca
     if (!st && r->sc.write_interior_csv) st = gb_bem_write_interior_csv(OUT("interior.csv"), &r->sc, r->u, r->s, err);
     if (!st && r->has_k && r->sc.stiffness_write)
         st = gb_bem_write_stiffness_csv(OUT("stiffness.csv"), &r->sc.mesh, &r->k, err);
-    int used = snprintf(text, sizeof text,
-                        "gembem %s\nscene: %s\nmesh: %s (%d elements, %d loop(s), %s)\nunits: length %s, force %s\n"
-                        "system rcond: %.6e (at the scene's own lengths: %.6e), length scale used: %.6g\n",
-                        gb_version(), r->sc.path, r->sc.mesh_path, r->sc.mesh.n, r->sc.mesh.n_loops,
-                        r->sc.mesh.unbounded ? "unbounded" : "bounded", r->sc.length_unit, r->sc.force_unit,
-                        r->sol.rcond, r->sol.rcond_first, r->sol.scale);
-    if (r->has_k && used > 0 && used < (int)sizeof text)
-        snprintf(text + used, sizeof text - (size_t)used,
-                 "stiffness on '%s': %d x %d, ||K - K^t||_F / ||K||_F = %.6e, rcond %.6e, length scale %.6g\n",
-                 r->sc.stiffness_group, r->k.m, r->k.m, r->k.asymmetry, r->k.rcond, r->k.scale);
-    if (!st) st = write_text(OUT("summary.txt"), text, err);
-    if (!st && summary) snprintf(summary, cap, "%s", text);
+    if (!st) st = write_info(OUT("run_info.yaml"), command, r, started, err);
 #undef OUT
     return st;
 }
 
-gb_status gb_bem_run(const char *scene, const char *dir, int overwrite, char *summary, size_t cap, gb_error *err)
+gb_status gb_bem_run(const char *scene, const char *dir, int overwrite, const char *command, char *summary, size_t cap,
+                     gb_error *err)
 {
+    double started = gb_clock_seconds();
     bem_run r;
     memset(&r, 0, sizeof r);
     /* the directory first: a refusal costs no solve */
     gb_status st = gb_output_dir_check(dir, overwrite, "output directory", err);
     if (!st) st = compute(scene, &r, err);
     if (!st) st = gb_make_dirs(dir, err);
-    if (!st) st = write_all(dir, &r, summary, cap, err);
+    if (!st) st = write_all(dir, command, &r, started, err);
+    if (!st && summary) summary_text(&r, summary, cap);
     bem_run_free(&r);
     return st;
 }

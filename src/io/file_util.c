@@ -59,6 +59,15 @@ gb_status gb_atomic_commit(gb_atomic_file *a, gb_error *err)
     return GB_OK;
 }
 
+gb_status gb_atomic_write(const char *path, void (*write)(FILE *f, const void *data), const void *data, gb_error *err)
+{
+    gb_atomic_file a;
+    gb_status st = gb_atomic_open(&a, path, err);
+    if (st) return st;
+    write(a.f, data);
+    return gb_atomic_commit(&a, err);
+}
+
 void gb_atomic_abort(gb_atomic_file *a)
 {
     if (a->f) fclose(a->f);

@@ -18,6 +18,8 @@ gb_status gb_atomic_commit(gb_atomic_file *a, gb_error *err);
  * survives a power cut whole (checkpoints). */
 gb_status gb_atomic_commit_durable(gb_atomic_file *a, gb_error *err);
 void gb_atomic_abort(gb_atomic_file *a);
+/* The whole of it: open, the content printed by write(f, data), commit. */
+gb_status gb_atomic_write(const char *path, void (*write)(FILE *f, const void *data), const void *data, gb_error *err);
 
 /* mkdir -p */
 gb_status gb_make_dirs(const char *path, gb_error *err);

@@ -6,42 +6,36 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "bem/output.h"
+#include "io/bem_output.h"
 #include "gem/sim.h"
 #include "io/host_output.h"
 #include "io/file_util.h"
 
 /* Cavity elements: the particle's centre at rest, its displacement, the force the host asks for
  * (K u + f0) and the force the grains put on it. */
-static gb_status write_particles(const char *path, const gb_sim *sim, gb_error *err)
+static void write_particles(FILE *f, const void *data)
 {
+    const gb_sim *sim = data;
     const gb_host *h = sim->host;
-    gb_atomic_file a;
-    gb_status st = gb_atomic_open(&a, path, err);
-    if (st) return st;
-    fprintf(a.f, "element,x,y,r,nx,ny,ux,uy,host_fx,host_fy,grain_fx,grain_fy\n");
+    fprintf(f, "element,x,y,r,nx,ny,ux,uy,host_fx,host_fy,grain_fx,grain_fy\n");
     for (int k = 0; k < sim->bp.n; k++) {
         int e = h->K.elem[k];
         /* bp_F = (K u + f0) - (force of the grains on the particle) */
         double gx = h->force[2 * k] - sim->scratch.bp_F[2 * k], gy = h->force[2 * k + 1] - sim->scratch.bp_F[2 * k + 1];
-        fprintf(a.f, "%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", e, h->mesh.mid[2 * e],
+        fprintf(f, "%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", e, h->mesh.mid[2 * e],
                 h->mesh.mid[2 * e + 1], sim->bp.r[k], sim->bp.nx[k], sim->bp.ny[k], h->u[2 * k], h->u[2 * k + 1],
                 h->force[2 * k], h->force[2 * k + 1], gx, gy);
     }
-    return gb_atomic_commit(&a, err);
 }
 
 /* What the condensation measured: the asymmetry of K that a symmetric solver neglects. */
-static gb_status write_info(const char *path, const gb_host *h, gb_error *err)
+static void write_info(FILE *f, const void *data)
 {
-    gb_atomic_file a;
-    gb_status st = gb_atomic_open(&a, path, err);
-    if (st) return st;
-    fprintf(a.f, "# The host's condensed cavity stiffness K = L G^-1 H (H 7).\n"
+    const gb_host *h = data;
+    fprintf(f, "# The host's condensed cavity stiffness K = L G^-1 H (H 7).\n"
                  "elements: %d\ncavity_elements: %d\nasymmetry: %.6e   # ||K - K^t||_F / ||K||_F\n"
                  "rcond: %.6e\nlength_scale: %.6g   # 1 unless the degenerate scale was avoided\n",
             h->mesh.n, h->m / 2, h->K.asymmetry, h->K.rcond, h->K.scale);
-    return gb_atomic_commit(&a, err);
 }
 
 gb_status gb_host_write_outputs(const char *dir, const gb_sim *sim, gb_error *err)
@@ -50,9 +44,9 @@ gb_status gb_host_write_outputs(const char *dir, const gb_sim *sim, gb_error *er
     char path[1024];
     gb_status st;
     snprintf(path, sizeof path, "%s/host_info.yaml", dir);
-    if ((st = write_info(path, h, err))) return st;
+    if ((st = gb_atomic_write(path, write_info, h, err))) return st;
     snprintf(path, sizeof path, "%s/host_particles.csv", dir);
-    if ((st = write_particles(path, sim, err))) return st;
+    if ((st = gb_atomic_write(path, write_particles, sim, err))) return st;
     gb_bem_solution sol;
     memset(&sol, 0, sizeof sol);
     if ((st = gb_bem_solve_group_displacement(&h->mesh, &h->sys, &h->prob, h->cavity, h->u, NULL, &sol, err)))

@@ -13,6 +13,7 @@
 
 #include "io/file_util.h"
 #include "io/measure_output.h"
+#include "io/vtk.h"
 
 static gb_status write_grains(const char *path, const gb_zone_measures *z, gb_error *err)
 {
@@ -33,9 +34,9 @@ static gb_status write_grains(const char *path, const gb_zone_measures *z, gb_er
 
 static void vtu_cell_array(FILE *f, const char *name, const gb_zone_measures *z, size_t offset)
 {
-    fprintf(f, "<DataArray type=\"Float64\" Name=\"%s\" format=\"ascii\">\n", name);
+    gb_vtk_array(f, "Float64", name, 1);
     for (int k = 0; k < z->t.n; k++) fprintf(f, "%.10e\n", *(const double *)((const char *)&z->tri[k] + offset));
-    fprintf(f, "</DataArray>\n");
+    gb_vtk_array_end(f);
 }
 
 /* The triangles on the grains' centres at the step's end, their strain as cell data. */
@@ -45,17 +46,21 @@ static gb_status write_triangles(const char *path, const gb_zone_measures *z, gb
     gb_status st = gb_atomic_open(&a, path, err);
     if (st) return st;
     FILE *f = a.f;
-    fprintf(f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-               "<UnstructuredGrid>\n<Piece NumberOfPoints=\"%d\" NumberOfCells=\"%d\">\n<Points>\n"
-               "<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n", z->n, z->t.n);
+    gb_vtk_begin(f, GB_VTK_UNSTRUCTURED_GRID, z->n, "NumberOfCells", z->t.n);
     for (int i = 0; i < z->n; i++) fprintf(f, "%.17g %.17g 0\n", z->x1[2 * i], z->x1[2 * i + 1]);
-    fprintf(f, "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">\n");
+    gb_vtk_end_points(f);
+    gb_vtk_open(f, "Cells", NULL);
+    gb_vtk_array(f, "Int32", "connectivity", 1);
     for (int k = 0; k < z->t.n; k++) fprintf(f, "%d %d %d\n", z->t.v[3 * k], z->t.v[3 * k + 1], z->t.v[3 * k + 2]);
-    fprintf(f, "</DataArray>\n<DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">\n");
+    gb_vtk_array_end(f);
+    gb_vtk_array(f, "Int32", "offsets", 1);
     for (int k = 0; k < z->t.n; k++) fprintf(f, "%d\n", 3 * (k + 1));
-    fprintf(f, "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n");
+    gb_vtk_array_end(f);
+    gb_vtk_array(f, "UInt8", "types", 1);
     for (int k = 0; k < z->t.n; k++) fprintf(f, "5\n"); /* VTK_TRIANGLE */
-    fprintf(f, "</DataArray>\n</Cells>\n<CellData Scalars=\"gamma\">\n");
+    gb_vtk_array_end(f);
+    gb_vtk_close(f, "Cells");
+    gb_vtk_open(f, "CellData", "Scalars=\"gamma\"");
     vtu_cell_array(f, "gamma", z, offsetof(gb_strain, gamma));
     vtu_cell_array(f, "ev", z, offsetof(gb_strain, ev));
     vtu_cell_array(f, "exx", z, offsetof(gb_strain, exx));
@@ -63,13 +68,17 @@ static gb_status write_triangles(const char *path, const gb_zone_measures *z, gb
     vtu_cell_array(f, "exy", z, offsetof(gb_strain, exy));
     vtu_cell_array(f, "rotation", z, offsetof(gb_strain, rotation));
     vtu_cell_array(f, "area", z, offsetof(gb_strain, area));
-    fprintf(f, "</CellData>\n<PointData Vectors=\"displacement\">\n"
-               "<DataArray type=\"Float64\" Name=\"displacement\" NumberOfComponents=\"3\" format=\"ascii\">\n");
+    gb_vtk_close(f, "CellData");
+    gb_vtk_open(f, "PointData", "Vectors=\"displacement\"");
+    gb_vtk_array(f, "Float64", "displacement", 3);
     for (int i = 0; i < z->n; i++)
         fprintf(f, "%.10e %.10e 0\n", z->x1[2 * i] - z->x0[2 * i], z->x1[2 * i + 1] - z->x0[2 * i + 1]);
-    fprintf(f, "</DataArray>\n<DataArray type=\"Float64\" Name=\"d2min\" format=\"ascii\">\n");
+    gb_vtk_array_end(f);
+    gb_vtk_array(f, "Float64", "d2min", 1);
     for (int i = 0; i < z->n; i++) fprintf(f, "%.10e\n", z->d2[i].d2min);
-    fprintf(f, "</DataArray>\n</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
+    gb_vtk_array_end(f);
+    gb_vtk_close(f, "PointData");
+    gb_vtk_end(f, GB_VTK_UNSTRUCTURED_GRID);
     return gb_atomic_commit(&a, err);
 }
 
@@ -77,8 +86,8 @@ static gb_status write_triangles(const char *path, const gb_zone_measures *z, gb
  * entry goes in before the closing tags (a seek back over them: constant time per step). */
 static gb_status add_to_pvd(const char *dir, int step, gb_error *err)
 {
-    static const char close_tags[] = "</Collection>\n</VTKFile>\n";
-    char path[1200];
+    static const char close_tags[] = GB_VTK_PVD_TAIL;
+    char path[1200], file[32];
     snprintf(path, sizeof path, "%s/fields/triangles.pvd", dir);
     FILE *f = fopen(path, step == 0 ? "w" : "r+");
     if (!f && step > 0) f = fopen(path, "w"); /* no triangulation until now */
@@ -86,8 +95,10 @@ static gb_status add_to_pvd(const char *dir, int step, gb_error *err)
     fseek(f, 0, SEEK_END);
     long end = ftell(f), tail = (long)strlen(close_tags);
     if (end >= tail) fseek(f, -tail, SEEK_END), gb_test_kill_point(f);
-    else fprintf(f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n");
-    fprintf(f, "<DataSet timestep=\"%d\" file=\"triangles_%06d.vtu\"/>\n%s", step, step, close_tags);
+    else gb_vtk_pvd_head(f);
+    snprintf(file, sizeof file, "triangles_%06d.vtu", step);
+    gb_vtk_pvd_dataset(f, step, file);
+    fputs(close_tags, f);
     if (ferror(f) | fclose(f)) return gb_fail(err, GB_EIO, "%s: write failed", path);
     return GB_OK;
 }

@@ -1,11 +1,11 @@
 /* The directory of `gembem pack`: the scene's copy, the state a run scene starts from
  * (initial_state:) and pack_info.yaml (docs/packing.md, "Outputs"). */
 #include <stdio.h>
-#include <time.h>
 
 #include "gembem/output.h"
 #include "gembem/pack.h"
 #include "io/file_util.h"
+#include "io/run_record.h"
 
 static const char *sizes_name(const gb_pack_sizes *z)
 {
@@ -16,13 +16,10 @@ static const char *sizes_name(const gb_pack_sizes *z)
 
 static void write_info(FILE *f, const char *command, const gb_scene *s, const gb_pack_def *d, const gb_pack_result *r)
 {
-    char now[64];
-    time_t t = time(NULL);
-    strftime(now, sizeof now, "%Y-%m-%dT%H:%M:%SZ", gmtime(&t));
     fprintf(f, "# How this packing was made (docs/packing.md). A run scene starts from it with\n"
                "#   initial_state: <this directory>/state.yaml%s\n",
             s->host.present ? "\n# and the same host: section (the same mesh)" : "");
-    fprintf(f, "gembem_version: %s\ncommand: \"%s\"\nscene: \"%s\"\nmade: %s\n", gb_version(), command, s->path, now);
+    gb_run_record_origin(f, command, s->path, "made");
     fprintf(f, "protocol: %s\nseed: %llu\nsizes: %s\n", d->protocol == GB_PACK_GROWTH ? "growth" : "deposition",
             (unsigned long long)d->seed, sizes_name(&d->sizes));
     if (d->protocol == GB_PACK_GROWTH)

@@ -21,6 +21,7 @@
 #include "io/run_record.h"
 #include "io/run_verdict.h"
 #include "io/steps_csv.h"
+#include "io/vtk.h"
 
 #define GB_STR_(x) #x
 #define GB_STR(x) GB_STR_(x)
@@ -354,11 +355,13 @@ static gb_status write_pvd(const gb_run_output *o, const char *what, gb_error *e
     gb_atomic_file a;
     gb_status st = gb_atomic_open(&a, path, err);
     if (st) return st;
-    fprintf(a.f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n");
-    for (int k = 0; k < o->n_snaps; k++)
-        fprintf(a.f, "<DataSet timestep=\"%d\" file=\"snapshots/%s_%06d.vtp\"/>\n", o->snap_steps[k], what,
-                o->snap_steps[k]);
-    fprintf(a.f, "</Collection>\n</VTKFile>\n");
+    gb_vtk_pvd_head(a.f);
+    for (int k = 0; k < o->n_snaps; k++) {
+        char file[96];
+        snprintf(file, sizeof file, "snapshots/%s_%06d.vtp", what, o->snap_steps[k]);
+        gb_vtk_pvd_dataset(a.f, o->snap_steps[k], file);
+    }
+    fputs(GB_VTK_PVD_TAIL, a.f);
     return gb_atomic_commit(&a, err);
 }
 

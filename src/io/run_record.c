@@ -5,6 +5,7 @@
 
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "core/clock.h"
@@ -13,6 +14,15 @@
 #include "gembem/run.h"
 #include "io/scene_report.h"
 #include "solver/solver.h"
+
+void gb_run_record_origin(FILE *f, const char *command, const char *scene, const char *when_key)
+{
+    char now[64];
+    time_t t = time(NULL);
+    strftime(now, sizeof now, "%Y-%m-%dT%H:%M:%SZ", gmtime(&t));
+    fprintf(f, "gembem_version: %s\ncommand: \"%s\"\nscene: \"%s\"\n%s: %s\n", gb_version(), command, scene,
+            when_key, now);
+}
 
 static void material(FILE *f, const char *name, const gb_material *m)
 {

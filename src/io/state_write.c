@@ -2,55 +2,51 @@
 #include <stdio.h>
 
 #include "gembem/output.h"
+#include "io/contacts_file.h"
 #include "io/file_util.h"
 #include "scene/grains_file.h"
 #include "solver/solver.h"
 
 #include <stdlib.h>
 
+static void write_grains(FILE *f, const void *data)
+{
+    const gb_sim *sim = data;
+    const gb_grain *g = gb_sim_grains(sim);
+    fprintf(f, "x,y,r,rotation\n");
+    for (int i = 0; i < gb_sim_n_grains(sim); i++)
+        fprintf(f, "%.17g,%.17g,%.17g,%.17g\n", g[i].x, g[i].y, g[i].r, g[i].rot);
+}
+
 gb_status gb_grains_csv_write(const char *path, const gb_sim *sim, gb_error *err)
 {
-    gb_atomic_file a;
-    gb_status st = gb_atomic_open(&a, path, err);
-    if (st) return st;
+    return gb_atomic_write(path, write_grains, sim, err);
+}
+
+/* (xi, yi) - (xj, yj): grain i's centre to the contact's far end, for drawing force chains. */
+static void write_contacts(FILE *f, const gb_sim *sim, const gb_contact *c, int m)
+{
+    int rolling = gb_scene_rolling(sim->scene); /* the column only where there is rolling resistance */
+    fprintf(f, "i,j,pn,pt,nx,ny,overlap,energy,dissipation,xi,yi,xj,yj%s\n", rolling ? ",mr" : "");
     const gb_grain *g = gb_sim_grains(sim);
-    fprintf(a.f, "x,y,r,rotation\n");
-    for (int i = 0; i < gb_sim_n_grains(sim); i++)
-        fprintf(a.f, "%.17g,%.17g,%.17g,%.17g\n", g[i].x, g[i].y, g[i].r, g[i].rot);
-    return gb_atomic_commit(&a, err);
+    for (int k = 0; k < m; k++) {
+        const gb_material *mat = gb_sim_material(sim, c[k].j);
+        double e = gb_spring_energy(c[k].pn, c[k].pt, c[k].mr, mat);
+        const gb_grain *gi = &g[c[k].i];
+        double xj, yj;
+        gb_contact_far_end(g, &c[k], &xj, &yj);
+        char side[32];
+        gb_side_name(c[k].j, side, sizeof side);
+        fprintf(f, "%d,%s,%.17g,%.17g,%.17g,%.17g,%.17g,%.10e,%.10e,%.17g,%.17g,%.17g,%.17g", c[k].i, side, c[k].pn,
+                c[k].pt, c[k].nx, c[k].ny, c[k].overlap, e, c[k].diss, gi->x, gi->y, xj, yj);
+        if (rolling) fprintf(f, ",%.17g", c[k].mr);
+        fprintf(f, "\n");
+    }
 }
 
 gb_status gb_contacts_csv_write(const char *path, const gb_sim *sim, gb_error *err)
 {
-    int m;
-    gb_contact *c = gb_sim_contacts_copy(sim, &m, err);
-    if (!c) return err->code;
-    gb_atomic_file a;
-    gb_status st = gb_atomic_open(&a, path, err);
-    if (!st) {
-        /* (xi, yi) - (xj, yj): grain i's centre to grain j's, or to the contact point on a wall or a
-         * boundary particle, for drawing force chains. */
-        int rolling = gb_scene_rolling(sim->scene); /* the column only where there is rolling resistance */
-        fprintf(a.f, "i,j,pn,pt,nx,ny,overlap,energy,dissipation,xi,yi,xj,yj%s\n", rolling ? ",mr" : "");
-        const gb_grain *g = gb_sim_grains(sim);
-        for (int k = 0; k < m; k++) {
-            const gb_material *mat = gb_sim_material(sim, c[k].j);
-            double e = gb_spring_energy(c[k].pn, c[k].pt, c[k].mr, mat);
-            const gb_grain *gi = &g[c[k].i];
-            double xj, yj;
-            if (c[k].j >= 0) xj = g[c[k].j].x, yj = g[c[k].j].y;
-            else xj = gi->x + c[k].nx * (gi->r - c[k].overlap), yj = gi->y + c[k].ny * (gi->r - c[k].overlap);
-            char side[32];
-            gb_side_name(c[k].j, side, sizeof side);
-            fprintf(a.f, "%d,%s,%.17g,%.17g,%.17g,%.17g,%.17g,%.10e,%.10e,%.17g,%.17g,%.17g,%.17g", c[k].i, side,
-                    c[k].pn, c[k].pt, c[k].nx, c[k].ny, c[k].overlap, e, c[k].diss, gi->x, gi->y, xj, yj);
-            if (rolling) fprintf(a.f, ",%.17g", c[k].mr);
-            fprintf(a.f, "\n");
-        }
-        st = gb_atomic_commit(&a, err);
-    }
-    free(c);
-    return st;
+    return gb_contacts_file_write(path, sim, write_contacts, err);
 }
 
 /* A group's condition in the scene's syntax (host.boundary), with its current values. */
@@ -72,17 +68,14 @@ static void write_bc(FILE *f, const gb_bem_bc *bc)
 
 /* state_host.csv: per cavity element, in the host's order, its boundary particle's centre now and
  * its displacement (the particle moves with it: centre = midpoint + displacement, to rounding). */
-static gb_status write_host_csv(const char *path, const gb_sim *sim, gb_error *err)
+static void write_host_csv(FILE *f, const void *data)
 {
+    const gb_sim *sim = data;
     const gb_host *h = sim->host;
-    gb_atomic_file a;
-    gb_status st = gb_atomic_open(&a, path, err);
-    if (st) return st;
-    fprintf(a.f, "element,x,y,ux,uy\n");
+    fprintf(f, "element,x,y,ux,uy\n");
     for (int k = 0; k < h->m / 2; k++)
-        fprintf(a.f, "%d,%.17g,%.17g,%.17g,%.17g\n", h->K.elem[k], sim->bp.x[k], sim->bp.y[k], h->u[2 * k],
+        fprintf(f, "%d,%.17g,%.17g,%.17g,%.17g\n", h->K.elem[k], sim->bp.x[k], sim->bp.y[k], h->u[2 * k],
                 h->u[2 * k + 1]);
-    return gb_atomic_commit(&a, err);
 }
 
 static void write_host_yaml(FILE *f, const gb_sim *sim)
@@ -111,7 +104,7 @@ gb_status gb_state_write(const char *dir, const gb_sim *sim, gb_error *err)
     snprintf(path, sizeof path, "%s/state_contacts.csv", dir);
     if ((st = gb_contacts_csv_write(path, sim, err))) return st;
     snprintf(path, sizeof path, "%s/state_host.csv", dir);
-    if (sim->host && (st = write_host_csv(path, sim, err))) return st;
+    if (sim->host && (st = gb_atomic_write(path, write_host_csv, sim, err))) return st;
     snprintf(path, sizeof path, "%s/state.yaml", dir);
     gb_atomic_file a;
     if ((st = gb_atomic_open(&a, path, err))) return st;

@@ -333,12 +333,9 @@ gb_status gb_bem_scene_load(const char *path, gb_bem_scene *s, gb_error *err)
     gb_yaml_doc doc;
     gb_status st = gb_yaml_load(path, &doc, err);
     if (st) return st;
-    gb_ymap root, units, stiff;
+    gb_ymap root, stiff;
     if (!st) st = gb_ymap_open(&doc, fy_document_root(doc.fyd), "", &root, err);
-    if (!st) st = gb_ymap_map(&root, "units", GB_Y_REQUIRED, &units, err);
-    if (!st) st = gb_ymap_string(&units, "length", GB_Y_REQUIRED, s->length_unit, sizeof s->length_unit, err);
-    if (!st) st = gb_ymap_string(&units, "force", GB_Y_REQUIRED, s->force_unit, sizeof s->force_unit, err);
-    if (!st) st = gb_ymap_close(&units, err);
+    if (!st) st = gb_ymap_units(&root, s->length_unit, s->force_unit, sizeof s->length_unit, err);
     if (!st) st = gb_bem_host_read(&doc, &root, s, err);
     if (!st) st = read_interior(&doc, &root, s, err);
     if (!st) st = gb_ymap_map(&root, "stiffness", 0, &stiff, err);

@@ -211,13 +211,14 @@ static gb_status read_stage(const gb_yaml_doc *doc, struct fy_node *item, int k,
     struct fy_node_pair *p = fy_node_mapping_iterate(item, &it);
     size_t len = 0;
     const char *kind = fy_node_get_scalar(fy_node_pair_key(p), &len);
-    static const char *const kinds[] = {"isotropic", "strain", "shear_mean_stress", "biaxial_stress", "relax",
-                                        "host_displacement", "host_load"};
+    const char *kinds[GB_STAGE_KINDS];
     int kk = -1;
-    for (int q = 0; q < 7; q++)
+    for (int q = 0; q < GB_STAGE_KINDS; q++) {
+        kinds[q] = gb_stage_name((gb_stage_kind)q);
         if (kind && strlen(kinds[q]) == len && !strncmp(kinds[q], kind, len)) kk = q;
+    }
     if (kk < 0) {
-        int near = gb_yaml_closest(kind, len, kinds, 7);
+        int near = gb_yaml_closest(kind, len, kinds, GB_STAGE_KINDS);
         char hint[64] = "";
         if (near >= 0) snprintf(hint, sizeof hint, " did you mean '%s'?", kinds[near]);
         return gb_yaml_fail(doc, fy_node_pair_key(p), err,
@@ -236,36 +237,23 @@ static gb_status read_stage(const gb_yaml_doc *doc, struct fy_node *item, int k,
         (st = gb_ymap_bool(&m, "reset_strain", 0, &sg->reset_strain, err)))
         return st;
     sg->steps = (int)steps;
-    switch (kk) {
-    case 0:
-        sg->kind = GB_STAGE_ISOTROPIC;
-        st = read_stress(&m, "stress", &sg->stress, err);
-        break;
-    case 1:
-        sg->kind = GB_STAGE_STRAIN;
+    sg->kind = (gb_stage_kind)kk;
+    switch (sg->kind) {
+    case GB_STAGE_ISOTROPIC: st = read_stress(&m, "stress", &sg->stress, err); break;
+    case GB_STAGE_STRAIN:
         if (!(st = gb_ymap_number(&m, "de1", GB_Y_REQUIRED, &sg->de1, err)))
             st = gb_ymap_number(&m, "de2", GB_Y_REQUIRED, &sg->de2, err);
         break;
-    case 2:
-        sg->kind = GB_STAGE_SHEAR_MEAN;
+    case GB_STAGE_SHEAR_MEAN:
         if (!(st = gb_ymap_number(&m, "d_e1_minus_e2", GB_Y_REQUIRED, &sg->d_shear, err)))
             st = read_stress(&m, "mean_stress", &sg->mean_stress, err);
         break;
-    case 4:
-        sg->kind = GB_STAGE_RELAX;
-        break;
-    case 5:
-        sg->kind = GB_STAGE_HOST_DISPLACEMENT;
-        st = read_host_increments(&m, sub, host, sg, err);
-        break;
-    case 6:
-        sg->kind = GB_STAGE_HOST_LOAD;
-        st = read_host_increments(&m, sub, host, sg, err);
-        break;
-    default:
-        sg->kind = GB_STAGE_BIAXIAL_STRESS;
+    case GB_STAGE_BIAXIAL_STRESS:
         if (!(st = read_stress(&m, "s1", &sg->s1, err))) st = read_stress(&m, "s2", &sg->s2, err);
         break;
+    case GB_STAGE_HOST_DISPLACEMENT:
+    case GB_STAGE_HOST_LOAD: st = read_host_increments(&m, sub, host, sg, err); break;
+    case GB_STAGE_RELAX: break;
     }
     if (st) return st;
     if ((sg->kind == GB_STAGE_HOST_DISPLACEMENT || sg->kind == GB_STAGE_HOST_LOAD) && !host->present)
@@ -437,18 +425,14 @@ static gb_status check_springs(const gb_yaml_doc *doc, gb_scene *s, gb_error *er
 static gb_status load(const gb_yaml_doc *doc, gb_scene *s, gb_bem_mesh *mesh, gb_scene_section_fn read_pack,
                       void *user, gb_error *err)
 {
-    gb_ymap top, units;
+    gb_ymap top;
     gb_status st;
     double version = 0;
     if ((st = gb_ymap_open(doc, fy_document_root(doc->fyd), "", &top, err)) ||
         (st = gb_ymap_number(&top, "gembem", GB_Y_REQUIRED, &version, err)))
         return st;
     if (version != 1) return gb_yaml_fail(doc, top.node, err, "gembem: expected scene format version 1");
-    if ((st = gb_ymap_map(&top, "units", GB_Y_REQUIRED, &units, err)) ||
-        (st = gb_ymap_string(&units, "length", GB_Y_REQUIRED, s->length_unit, sizeof s->length_unit, err)) ||
-        (st = gb_ymap_string(&units, "force", GB_Y_REQUIRED, s->force_unit, sizeof s->force_unit, err)) ||
-        (st = gb_ymap_close(&units, err)))
-        return st;
+    if ((st = gb_ymap_units(&top, s->length_unit, s->force_unit, sizeof s->length_unit, err))) return st;
     gb_ymap mats;
     if ((st = gb_ymap_map(&top, "materials", GB_Y_REQUIRED, &mats, err)) ||
         (st = read_material(&mats, "grain_grain", &s->grain_grain, err)) ||
@@ -542,24 +526,9 @@ gb_scene gb_scene_default(void)
     return s;
 }
 
-gb_status gb_scene_load(const char *path, gb_scene *out, gb_error *err)
-{
-    *out = gb_scene_default();
-    snprintf(out->path, sizeof out->path, "%s", path);
-    gb_yaml_doc doc;
-    gb_status st = gb_yaml_load(path, &doc, err);
-    if (st) return st;
-    gb_bem_mesh mesh;
-    memset(&mesh, 0, sizeof mesh);
-    st = load(&doc, out, &mesh, NULL, NULL, err);
-    gb_bem_mesh_free(&mesh);
-    gb_yaml_free(&doc);
-    if (st) gb_scene_free(out);
-    return st;
-}
-
-gb_status gb_scene_load_pack(const char *path, gb_scene *out, gb_bem_mesh *mesh, gb_scene_section_fn read_pack,
-                             void *user, gb_error *err)
+/* A scene file into out (from gb_scene_default) and its host's mesh into *mesh; on failure both are freed. */
+static gb_status load_file(const char *path, gb_scene *out, gb_bem_mesh *mesh, gb_scene_section_fn read_pack,
+                           void *user, gb_error *err)
 {
     *out = gb_scene_default();
     memset(mesh, 0, sizeof *mesh);
@@ -574,4 +543,18 @@ gb_status gb_scene_load_pack(const char *path, gb_scene *out, gb_bem_mesh *mesh,
         gb_scene_free(out);
     }
     return st;
+}
+
+gb_status gb_scene_load(const char *path, gb_scene *out, gb_error *err)
+{
+    gb_bem_mesh mesh;
+    gb_status st = load_file(path, out, &mesh, NULL, NULL, err);
+    if (!st) gb_bem_mesh_free(&mesh);
+    return st;
+}
+
+gb_status gb_scene_load_pack(const char *path, gb_scene *out, gb_bem_mesh *mesh, gb_scene_section_fn read_pack,
+                             void *user, gb_error *err)
+{
+    return load_file(path, out, mesh, read_pack, user, err);
 }

@@ -26,15 +26,11 @@ double gb_scene_load_force(const gb_scene *s, int stage)
     return fmax(weight, stress * 2 * r);
 }
 
+/* Indexed by gb_stage_kind: the one list of the names (the scene reader looks kinds up in it). */
+static const char *const STAGE_NAMES[GB_STAGE_KINDS] = {
+    "isotropic", "strain", "shear_mean_stress", "biaxial_stress", "relax", "host_displacement", "host_load"};
+
 const char *gb_stage_name(gb_stage_kind k)
 {
-    switch (k) {
-    case GB_STAGE_ISOTROPIC: return "isotropic";
-    case GB_STAGE_STRAIN: return "strain";
-    case GB_STAGE_SHEAR_MEAN: return "shear_mean_stress";
-    case GB_STAGE_RELAX: return "relax";
-    case GB_STAGE_HOST_DISPLACEMENT: return "host_displacement";
-    case GB_STAGE_HOST_LOAD: return "host_load";
-    default: return "biaxial_stress";
-    }
+    return (unsigned)k < GB_STAGE_KINDS ? STAGE_NAMES[k] : STAGE_NAMES[GB_STAGE_BIAXIAL_STRESS];
 }

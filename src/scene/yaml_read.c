@@ -217,6 +217,8 @@ int gb_yaml_closest(const char *written, size_t len, const char *const *names, i
     return -1;
 }
 
+enum { PATH_LEN = 256 }; /* a key's path in messages */
+
 static void key_path(const gb_ymap *m, const char *key, char *out, size_t n)
 {
     if (m->name[0]) snprintf(out, n, "%s.%s", m->name, key);
@@ -236,7 +238,7 @@ gb_status gb_ymap_find(gb_ymap *m, const char *key, int flags, struct fy_node **
         if (len == 0) *out = NULL; /* "key:" with no value counts as absent */
     }
     if (!*out && (flags & GB_Y_REQUIRED)) {
-        char path[256];
+        char path[PATH_LEN];
         key_path(m, key, path, sizeof path);
         /* a key of the mapping written for this one: named at its own line */
         void *it = NULL;
@@ -253,109 +255,130 @@ gb_status gb_ymap_find(gb_ymap *m, const char *key, int flags, struct fy_node **
     return GB_OK;
 }
 
+/* A key's value as found: its node (NULL when it is absent and may be), its path for messages
+ * ("host.mesh") and, for a scalar, its text. */
+typedef struct {
+    struct fy_node *node;
+    char path[PATH_LEN];
+    const char *text; /* NULL unless a scalar */
+    size_t len;
+} found_value;
+
+static gb_status find_value(gb_ymap *m, const char *key, int flags, found_value *v, gb_error *err)
+{
+    key_path(m, key, v->path, sizeof v->path);
+    v->text = NULL;
+    v->len = 0;
+    gb_status st = gb_ymap_find(m, key, flags, &v->node, err);
+    if (!st && v->node && fy_node_get_type(v->node) == FYNT_SCALAR) v->text = fy_node_get_scalar(v->node, &v->len);
+    return st;
+}
+
+/* The same, and the value read as a number when it is there. */
+static gb_status find_number(gb_ymap *m, const char *key, int flags, found_value *v, double *x, gb_error *err)
+{
+    gb_status st = find_value(m, key, flags, v, err);
+    return st || !v->node ? st : gb_yaml_number(m->doc, v->node, v->path, x, err);
+}
+
+/* A sequence of 1 to max numbers (exactly max when `exactly`) into out, their count in *n. */
+static gb_status find_numbers(gb_ymap *m, const char *key, int flags, int max, int exactly, double *out, int *n,
+                              gb_error *err)
+{
+    found_value v;
+    gb_status st = find_value(m, key, flags, &v, err);
+    if (st || !v.node) return st;
+    int count = fy_node_get_type(v.node) == FYNT_SEQUENCE ? fy_node_sequence_item_count(v.node) : -1;
+    if (exactly && count != max)
+        return gb_yaml_fail(m->doc, v.node, err, "%s: expected a list of %d numbers", v.path, max);
+    if (count < 1 || count > max)
+        return gb_yaml_fail(m->doc, v.node, err, "%s: expected a list of 1 to %d numbers", v.path, max);
+    for (int i = 0; i < count && !st; i++)
+        st = gb_yaml_number(m->doc, fy_node_sequence_get_by_index(v.node, i), v.path, &out[i], err);
+    if (!st) *n = count;
+    return st;
+}
+
 gb_status gb_ymap_number(gb_ymap *m, const char *key, int flags, double *out, gb_error *err)
 {
-    struct fy_node *v;
-    gb_status st = gb_ymap_find(m, key, flags, &v, err);
-    if (st || !v) return st;
-    char path[256];
-    key_path(m, key, path, sizeof path);
+    found_value v;
     double x;
-    if ((st = gb_yaml_number(m->doc, v, path, &x, err))) return st;
+    gb_status st = find_number(m, key, flags, &v, &x, err);
+    if (st || !v.node) return st;
     if ((flags & GB_Y_POSITIVE) && !(x > 0))
-        return gb_yaml_fail(m->doc, v, err, "%s: expected a positive number, found %g", path, x);
+        return gb_yaml_fail(m->doc, v.node, err, "%s: expected a positive number, found %g", v.path, x);
     if ((flags & GB_Y_NONNEG) && !(x >= 0))
-        return gb_yaml_fail(m->doc, v, err, "%s: expected a number >= 0, found %g", path, x);
+        return gb_yaml_fail(m->doc, v.node, err, "%s: expected a number >= 0, found %g", v.path, x);
     *out = x;
     return GB_OK;
 }
 
 gb_status gb_ymap_int(gb_ymap *m, const char *key, int flags, long lo, long hi, long *out, gb_error *err)
 {
-    struct fy_node *v;
-    gb_status st = gb_ymap_find(m, key, flags, &v, err);
-    if (st || !v) return st;
-    char path[256];
-    key_path(m, key, path, sizeof path);
+    found_value v;
     double x;
-    if ((st = gb_yaml_number(m->doc, v, path, &x, err))) return st;
+    gb_status st = find_number(m, key, flags, &v, &x, err);
+    if (st || !v.node) return st;
     if (x != floor(x) || x < (double)lo || x > (double)hi)
-        return gb_yaml_fail(m->doc, v, err, "%s: expected a whole number from %ld to %ld, found %g", path, lo, hi, x);
+        return gb_yaml_fail(m->doc, v.node, err, "%s: expected a whole number from %ld to %ld, found %g", v.path, lo,
+                            hi, x);
     *out = (long)x;
     return GB_OK;
 }
 
 gb_status gb_ymap_bool(gb_ymap *m, const char *key, int flags, int *out, gb_error *err)
 {
-    struct fy_node *v;
-    gb_status st = gb_ymap_find(m, key, flags, &v, err);
-    if (st || !v) return st;
-    char path[256];
-    key_path(m, key, path, sizeof path);
-    size_t len = 0;
-    const char *s = fy_node_get_type(v) == FYNT_SCALAR ? fy_node_get_scalar(v, &len) : NULL;
-    if (s && fy_node_get_style(v) == FYNS_PLAIN) {
-        if (len == 4 && !strncmp(s, "true", 4)) return *out = 1, GB_OK;
-        if (len == 5 && !strncmp(s, "false", 5)) return *out = 0, GB_OK;
+    found_value v;
+    gb_status st = find_value(m, key, flags, &v, err);
+    if (st || !v.node) return st;
+    if (v.text && fy_node_get_style(v.node) == FYNS_PLAIN) {
+        if (v.len == 4 && !strncmp(v.text, "true", 4)) return *out = 1, GB_OK;
+        if (v.len == 5 && !strncmp(v.text, "false", 5)) return *out = 0, GB_OK;
     }
-    return gb_yaml_fail(m->doc, v, err, "%s: expected true or false", path);
+    return gb_yaml_fail(m->doc, v.node, err, "%s: expected true or false", v.path);
 }
 
 gb_status gb_ymap_string(gb_ymap *m, const char *key, int flags, char *buf, size_t n, gb_error *err)
 {
-    struct fy_node *v;
-    gb_status st = gb_ymap_find(m, key, flags, &v, err);
-    if (st || !v) return st;
-    char path[256];
-    key_path(m, key, path, sizeof path);
-    size_t len = 0;
-    const char *s = fy_node_get_type(v) == FYNT_SCALAR ? fy_node_get_scalar(v, &len) : NULL;
-    if (!s) return gb_yaml_fail(m->doc, v, err, "%s: expected a string", path);
-    if (len == 0 || len >= n)
-        return gb_yaml_fail(m->doc, v, err, "%s: expected a non-empty string of at most %zu characters", path, n - 1);
-    memcpy(buf, s, len);
-    buf[len] = '\0';
+    found_value v;
+    gb_status st = find_value(m, key, flags, &v, err);
+    if (st || !v.node) return st;
+    if (!v.text) return gb_yaml_fail(m->doc, v.node, err, "%s: expected a string", v.path);
+    if (v.len == 0 || v.len >= n)
+        return gb_yaml_fail(m->doc, v.node, err, "%s: expected a non-empty string of at most %zu characters", v.path,
+                            n - 1);
+    memcpy(buf, v.text, v.len);
+    buf[v.len] = '\0';
     return GB_OK;
 }
 
 gb_status gb_ymap_map(gb_ymap *m, const char *key, int flags, gb_ymap *sub, gb_error *err)
 {
-    struct fy_node *v;
-    gb_status st = gb_ymap_find(m, key, flags, &v, err);
-    if (st) return st;
-    char path[256];
-    key_path(m, key, path, sizeof path);
-    return gb_ymap_open(m->doc, v, path, sub, err);
+    found_value v;
+    gb_status st = find_value(m, key, flags, &v, err);
+    return st ? st : gb_ymap_open(m->doc, v.node, v.path, sub, err);
 }
 
 gb_status gb_ymap_vector(gb_ymap *m, const char *key, int flags, int n, double *out, gb_error *err)
 {
-    struct fy_node *v;
-    gb_status st = gb_ymap_find(m, key, flags, &v, err);
-    if (st || !v) return st;
-    char path[256];
-    key_path(m, key, path, sizeof path);
-    if (fy_node_get_type(v) != FYNT_SEQUENCE || fy_node_sequence_item_count(v) != n)
-        return gb_yaml_fail(m->doc, v, err, "%s: expected a list of %d numbers", path, n);
-    for (int i = 0; i < n; i++)
-        if ((st = gb_yaml_number(m->doc, fy_node_sequence_get_by_index(v, i), path, &out[i], err))) return st;
-    return GB_OK;
+    int got = 0;
+    return find_numbers(m, key, flags, n, 1, out, &got, err);
 }
 
 gb_status gb_ymap_numbers(gb_ymap *m, const char *key, int flags, int max, double *out, int *n, gb_error *err)
 {
-    struct fy_node *v;
-    gb_status st = gb_ymap_find(m, key, flags, &v, err);
-    if (st || !v) return st;
-    char path[256];
-    key_path(m, key, path, sizeof path);
-    if (fy_node_get_type(v) != FYNT_SEQUENCE || fy_node_sequence_item_count(v) < 1 ||
-        fy_node_sequence_item_count(v) > max)
-        return gb_yaml_fail(m->doc, v, err, "%s: expected a list of 1 to %d numbers", path, max);
-    *n = fy_node_sequence_item_count(v);
-    for (int i = 0; i < *n; i++)
-        if ((st = gb_yaml_number(m->doc, fy_node_sequence_get_by_index(v, i), path, &out[i], err))) return st;
-    return GB_OK;
+    return find_numbers(m, key, flags, max, 0, out, n, err);
+}
+
+gb_status gb_ymap_units(gb_ymap *top, char *length, char *force, size_t n, gb_error *err)
+{
+    gb_ymap units;
+    gb_status st;
+    if ((st = gb_ymap_map(top, "units", GB_Y_REQUIRED, &units, err)) ||
+        (st = gb_ymap_string(&units, "length", GB_Y_REQUIRED, length, n, err)) ||
+        (st = gb_ymap_string(&units, "force", GB_Y_REQUIRED, force, n, err)))
+        return st;
+    return gb_ymap_close(&units, err);
 }
 
 gb_status gb_ymap_close(gb_ymap *m, gb_error *err)

@@ -70,6 +70,8 @@ gb_status gb_ymap_vector(gb_ymap *m, const char *key, int flags, int n, double *
 gb_status gb_ymap_numbers(gb_ymap *m, const char *key, int flags, int max, double *out, int *n, gb_error *err);
 /* Refuses any key that was never looked up, naming the keys that are expected. */
 gb_status gb_ymap_close(gb_ymap *m, gb_error *err);
+/* The required `units: {length, force}` of a run scene or a BEM scene, each into a buffer of n. */
+gb_status gb_ymap_units(gb_ymap *top, char *length, char *force, size_t n, gb_error *err);
 
 /* The first of names[0..n) that `written` (len bytes) is a likely misspelling of (an edit or two,
  * case aside), or -1: for "did you mean" in messages. */

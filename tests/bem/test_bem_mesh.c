@@ -38,16 +38,6 @@ static int well_oriented(const gb_bem_mesh *m)
     return ok;
 }
 
-static const char *write_tmp(const char *name, const char *text)
-{
-    static char path[256];
-    snprintf(path, sizeof path, "/tmp/gb_test_bem_%s", name);
-    FILE *f = fopen(path, "w");
-    fputs(text, f);
-    fclose(f);
-    return path;
-}
-
 static int refused(const char *path, const gb_bem_mesh_opts *o, const char *needle)
 {
     gb_bem_mesh m;
@@ -152,21 +142,21 @@ int main(void)
 
     /* broken input */
     CHECK(refused("meshes/does_not_exist.geo", &o, "cannot open"));
-    CHECK(refused(write_tmp("syntax.geo", "Point(1) = {0, 0, 0\nLine(1) = {1, 2};\n"), &o, "gmsh could not read"));
+    CHECK(refused(gb_test_file("bem_syntax.geo", "Point(1) = {0, 0, 0\nLine(1) = {1, 2};\n"), &o, "gmsh could not read"));
     CHECK(
-        refused(write_tmp("open.geo",
+        refused(gb_test_file("bem_open.geo",
                           "Point(1) = {0,0,0}; Point(2) = {1,0,0}; Point(3) = {1,1,0}; Point(4) = {0,1,0};\n"
                           "Line(1) = {1,2}; Line(2) = {2,3}; Line(3) = {3,4};\nPhysical Curve(\"outer\") = {1,2,3};\n"),
                 &o, "open at node"));
-    CHECK(refused(write_tmp("cross.geo",
+    CHECK(refused(gb_test_file("bem_cross.geo",
                             "Point(1) = {0,0,0}; Point(2) = {2,1,0}; Point(3) = {2,0,0}; Point(4) = {0,2,0};\n"
                             "Line(1) = {1,2}; Line(2) = {2,3}; Line(3) = {3,4}; Line(4) = {4,1};\n"
                             "Physical Curve(\"outer\") = {1,2,3,4};\n"),
                   &o, "crosses or touches"));
-    CHECK(refused(write_tmp("nogroup.geo", "Point(1) = {0,0,0}; Point(2) = {1,0,0}; Point(3) = {0,1,0};\n"
+    CHECK(refused(gb_test_file("bem_nogroup.geo", "Point(1) = {0,0,0}; Point(2) = {1,0,0}; Point(3) = {0,1,0};\n"
                                            "Line(1) = {1,2}; Line(2) = {2,3}; Line(3) = {3,1};\n"),
                   &o, "no physical curve groups"));
-    CHECK(refused(write_tmp("two.geo", "Point(1) = {0,0,0}; Point(2) = {1,0,0}; Point(3) = {0,1,0};\n"
+    CHECK(refused(gb_test_file("bem_two.geo", "Point(1) = {0,0,0}; Point(2) = {1,0,0}; Point(3) = {0,1,0};\n"
                                        "Point(4) = {5,0,0}; Point(5) = {6,0,0}; Point(6) = {5,1,0};\n"
                                        "Line(1) = {1,2}; Line(2) = {2,3}; Line(3) = {3,1};\n"
                                        "Line(4) = {4,5}; Line(5) = {5,6}; Line(6) = {6,4};\n"

@@ -6,9 +6,8 @@
 # the killed and resumed processes.
 gembem=$(cd "$(dirname "$1")" && pwd)/$(basename "$1"); root=$(cd "$(dirname "$0")/../.." && pwd)
 source "$root/tests/csv.sh"
-out=$(mktemp -d); fail=0; passed=0
-ok() { passed=$((passed + 1)); echo "ok   $1"; }
-bad() { fail=$((fail + 1)); echo "FAIL $1"; }
+source "$root/tools/lib.sh"
+gb_test_begin
 # The test's end: its outputs removed if it passed; its exit status.
 finish() {
   cd "$out/.."

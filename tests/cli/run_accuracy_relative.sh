@@ -11,11 +11,8 @@ set -u
 gembem=$1
 root=$(cd "$(dirname "$0")/../.." && pwd)
 source "$root/tests/csv.sh"
-out=$(mktemp -d)
-trap 'rm -rf "$out"' EXIT
-fail=0
-ok() { echo "ok   $1"; }
-bad() { echo "FAIL $1"; fail=1; }
+source "$root/tools/lib.sh"
+gb_test_begin
 cell() { # cell FILE NAME ROW: the value of column NAME in data row ROW (0 = step 0)
   csv_awk -v name="$2" -v row="$3" 'NR == row + 2 { print $col(name) }' "$1"
 }
@@ -63,4 +60,4 @@ sed -e "s|mesh: ../../meshes|mesh: $root/meshes|" -e 's/accuracy: 1.0e-9/accurac
 echo "output: {contacts_every: 1}" >> "$out/host.yaml"
 same host "$out/host.yaml"
 scale host "$(mean_pn "$out/host.rel/contacts/contacts_000000.csv")"
-exit $fail
+gb_test_end

@@ -13,17 +13,13 @@
 set -u
 gembem=$1 jammed=$(cd "$2" && pwd)
 root=$(cd "$(dirname "$0")/../.." && pwd)
-out=$(mktemp -d)
-trap 'rm -rf "$out"' EXIT
-fail=0
-ok() { echo "ok   $1"; }
-bad() { echo "FAIL $1"; fail=1; }
+source "$root/tools/lib.sh"
+gb_test_begin
 box=$(sed -n 's/^box: //p' "$jammed/scene.yaml")
 scene() { # scene GRAINS ACCURACY BOX STAGE...
   local grains=$1 accuracy=$2 box=$3; shift 3
-  printf 'gembem: 1\nunits: {length: cm, force: dyn}\nmaterials:\n'
-  printf '  grain_grain: {kn: 1.0e8, kt: 7.0e7, friction_deg: 25}\n  grain_wall: {kn: 1.0e8, kt: 7.0e7, friction_deg: 0}\n'
-  printf 'grains: {file: %s}\nbox: %s\nsolver: {method: global, accuracy: %s}\nloading:\n' "$grains" "$box" "$accuracy"
+  table3_scene_head "$grains"
+  printf 'box: %s\nsolver: {method: global, accuracy: %s}\nloading:\n' "$box" "$accuracy"
   for stage in "$@"; do printf '  - %s\n' "$stage"; done
   printf 'output: {measures_every: 0}\n'
 }
@@ -62,4 +58,4 @@ expect loose "the accuracy is not small against the contact forces" "the packing
 expect host "max_concentration is undefined"
 grep -q "^1,.*,none,nan$" "$out/host/localisation.csv" && ok "host: max_concentration nan at step 1" ||
   bad "host: localisation.csv's step 1 is not undefined"
-exit $fail
+gb_test_end

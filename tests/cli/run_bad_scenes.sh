@@ -10,17 +10,10 @@
 #   run_bad_scenes.sh GEMBEM GMSH
 set -u
 gembem=$1; gmsh=$2; dir=$(dirname "$0")
+source "$dir/../../tools/lib.sh"
 fail=0; n=0
 out=$(mktemp -d)
-for scene in "$dir"/bad/*.yaml; do
-  name=$(basename "$scene" .yaml); n=$((n + 1))
-  expect=$(cat "$dir/bad/$name.expect")
-  msg=$("$gembem" run "$scene" -o "$out/$name" 2>&1 >/dev/null); code=$?
-  if [ $code -ne 2 ]; then echo "FAIL $name: exit status $code, expected 2 ($msg)"; fail=$((fail + 1)); continue; fi
-  case "$msg" in *"$expect"*) ;; *) echo "FAIL $name: message '$msg' lacks '$expect'"; fail=$((fail + 1)); continue;; esac
-  if [ -e "$out/$name" ]; then echo "FAIL $name: the run directory was created"; fail=$((fail + 1)); continue; fi
-  echo "ok   $name: $msg"
-done
+for scene in "$dir"/bad/*.yaml; do expect_refused run "$scene" "$(cat "${scene%.yaml}.expect")"; done
 mkdir -p "$out/msh"
 for geo in "$dir"/bad_msh/*.geo; do
   name=$(basename "$geo" .geo); n=$((n + 1))

@@ -23,9 +23,8 @@
 set -u
 gembem=$1; root=$(cd "$(dirname "$0")/../.." && pwd)
 source "$root/tests/csv.sh"
-out=$(mktemp -d); fail=0; passed=0
-ok() { passed=$((passed + 1)); echo "ok   $1"; }
-bad() { fail=$((fail + 1)); echo "FAIL $1"; }
+source "$root/tools/lib.sh"
+gb_test_begin
 
 # Per column of two CSV files: the largest |a - b| over the largest |a| (first file's header), or
 # over the column's floor if larger (floors "col:value,..."); exits 1 if any exceeds tol. Columns
@@ -154,6 +153,4 @@ csv_awk 'BEGIN { OFS = ","; CONVFMT = "%.17g" } NR == 2 { $col("x") += 5 } 1' "$
 sed 's|stage1/state.yaml|into_host/state.yaml|' "$d/s2.yaml" > "$d/r_into_host.yaml"
 refuse "a grain in the host after the cavity moved" "$d/r_into_host.yaml" "into_host/state_grains.csv:2:[0-9]+: grain 0 .* has its centre outside the host's cavity"
 
-[ $fail -eq 0 ] && rm -rf "$out" || echo "outputs kept in $out"
-echo "$passed passed, $fail failed"
-[ $fail -eq 0 ]
+gb_test_end

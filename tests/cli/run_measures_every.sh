@@ -10,9 +10,8 @@
 set -u
 gembem=$1; root=$(cd "$(dirname "$0")/../.." && pwd)
 source "$root/tests/csv.sh"
-out=$(mktemp -d); fail=0; passed=0
-ok() { passed=$((passed + 1)); echo "ok   $1"; }
-bad() { fail=$((fail + 1)); echo "FAIL $1"; }
+source "$root/tools/lib.sh"
+gb_test_begin
 
 # The steps (sorted, one per line) of the files fields/<what>_NNNNNN.<ext> of a run directory.
 steps_of() { ls "$1/fields" 2>/dev/null | sed -n "s/^$2_0*\([0-9][0-9]*\)\.$3\$/\1/p" | sort -n; }
@@ -61,12 +60,7 @@ head -1 "$out/host0/localisation.csv" | grep -q ',s_ref,s_ref_kind,max_concentra
 # 3. Default by size: 5000 grains on a grid, touching nothing (converged at once), and 2 grains.
 awk 'BEGIN { print "x,y,r"; for (i = 0; i < 100; i++) for (j = 0; j < 50; j++) printf "%d.5,%d.5,0.4\n", i, j }' > "$out/grid.csv"
 cat > "$out/big.yaml" <<EOF
-gembem: 1
-units: {length: cm, force: dyn}
-materials:
-  grain_grain: {kn: 1.0e8, kt: 7.0e7, friction_deg: 25}
-  grain_wall: {kn: 1.0e8, kt: 7.0e7, friction_deg: 0}
-grains: {file: grid.csv}
+$(table3_scene_head grid.csv)
 box: {left: 0, right: 100, bottom: 0, top: 50}
 solver: {accuracy: 100}
 loading:
@@ -81,6 +75,4 @@ grep -q '^measures_every: 0 .*the default from 5000 grains up' "$out/big/run_inf
 grep -q '^measures_every: 1 .*the default below 5000 grains' "$out/small/run_info.yaml" \
   && ok "small: the default is every step" || bad "small: run_info.yaml: $(grep measures "$out/small/run_info.yaml")"
 
-[ $fail -eq 0 ] && rm -rf "$out" || echo "outputs kept in $out"
-echo "$passed passed, $fail failed"
-[ $fail -eq 0 ]
+gb_test_end

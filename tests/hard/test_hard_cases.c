@@ -79,6 +79,22 @@ static gb_scene three_discs(double kn, double kt, double phi, gb_stage *stages)
     return s;
 }
 
+/* Grains under their weight between fixed walls (frictionless; a strain stage of no strain, `steps`
+ * steps, in *hold), to the accuracy a. */
+static gb_scene under_weight(gb_grain *g, int n, gb_box box, double phi, double a, int steps, gb_stage *hold)
+{
+    gb_scene s = fixture_scene(g, n, box, 1e8, 7e7, phi);
+    s.grain_wall.friction_deg = 0;
+    s.body_force_per_area[1] = -1500;
+    s.solver.accuracy = a;
+    s.solver.max_iterations = 300000;
+    gb_stage strain = {.kind = GB_STAGE_STRAIN, .steps = steps, .de1 = 0, .de2 = 0};
+    *hold = strain;
+    s.stages = hold;
+    s.n_stages = 1;
+    return s;
+}
+
 int main(void)
 {
     gb_stage st2[2];
@@ -117,14 +133,8 @@ int main(void)
                              {1.0, 1.0, 1.0, 0},                     /* one contact: the floor */
                              {5.75, 2.4, 0.5, 0}};
             gb_box box = {0, 22, 0, 25};
-            gb_scene s = fixture_scene(g, 6, box, 1e8, 7e7, 25);
-            s.grain_wall.friction_deg = 0;
-            s.body_force_per_area[1] = -1500;
-            s.solver.accuracy = 100;
-            s.solver.max_iterations = 300000;
-            gb_stage strain = {.kind = GB_STAGE_STRAIN, .steps = 2, .de1 = 0, .de2 = 0};
-            s.stages = &strain;
-            s.n_stages = 1;
+            gb_stage hold;
+            gb_scene s = under_weight(g, 6, box, 25, 100, 2, &hold);
             run(&s, solver, &o, "overlap 50 %, ratio 10, rattler");
         }
         {   /* Three touching grains on a frictionless floor, far from the side walls, pressed into
@@ -132,13 +142,8 @@ int main(void)
              * of K): the system must still be solved, without a zero pivot or a NaN. */
             gb_grain g[3] = {{8.0, 0.999, 1.0, 0}, {9.99, 0.999, 1.0, 0}, {11.98, 0.999, 1.0, 0}};
             gb_box box = {0, 20, 0, 25};
-            gb_scene s = fixture_scene(g, 3, box, 1e8, 7e7, 0);
-            s.body_force_per_area[1] = -1500;
-            s.solver.accuracy = 1;
-            s.solver.max_iterations = 300000;
-            gb_stage strain = {.kind = GB_STAGE_STRAIN, .steps = 1, .de1 = 0, .de2 = 0};
-            s.stages = &strain;
-            s.n_stages = 1;
+            gb_stage hold;
+            gb_scene s = under_weight(g, 3, box, 0, 1, 1, &hold);
             if (run(&s, solver, &o, "row held by nothing sideways") == GB_OK) CHECK(o.finite);
         }
     }

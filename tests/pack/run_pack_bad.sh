@@ -5,17 +5,10 @@
 #   run_pack_bad.sh GEMBEM
 set -u
 gembem=$1; dir=$(cd "$(dirname "$0")" && pwd)
+source "$dir/../../tools/lib.sh"
 out=$(mktemp -d); fail=0; n=0
 trap 'rm -rf "$out"' EXIT
-for scene in "$dir"/bad/*.yaml; do
-  name=$(basename "$scene" .yaml); n=$((n + 1))
-  expect=$(cat "$dir/bad/$name.expect")
-  msg=$("$gembem" pack "$scene" -o "$out/$name" 2>&1 >/dev/null); code=$?
-  if [ $code -ne 2 ]; then echo "FAIL $name: exit status $code, expected 2 ($msg)"; fail=$((fail + 1)); continue; fi
-  case "$msg" in *"$expect"*) ;; *) echo "FAIL $name: message '$msg' lacks '$expect'"; fail=$((fail + 1)); continue;; esac
-  if [ -e "$out/$name" ]; then echo "FAIL $name: the directory was created"; fail=$((fail + 1)); continue; fi
-  echo "ok   $name: $msg"
-done
+for scene in "$dir"/bad/*.yaml; do expect_refused pack "$scene" "$(cat "${scene%.yaml}.expect")"; done
 n=$((n + 1)); mkdir "$out/full"; echo keep > "$out/full/file"
 msg=$("$gembem" pack "$dir/box_growth.yaml" -o "$out/full" 2>&1 >/dev/null); code=$?
 if [ $code -ne 2 ] || [ "$(ls "$out/full")" != file ]; then

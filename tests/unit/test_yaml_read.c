@@ -5,16 +5,6 @@
 #include "check.h"
 #include "scene/yaml_read.h"
 
-static const char *write_tmp(const char *name, const char *text)
-{
-    static char path[256];
-    snprintf(path, sizeof path, "/tmp/gb_test_yaml_%s.yaml", name);
-    FILE *f = fopen(path, "w");
-    fputs(text, f);
-    fclose(f);
-    return path;
-}
-
 int main(void)
 {
     gb_error err = {0};
@@ -23,7 +13,7 @@ int main(void)
     double x = -1;
     long n = 0;
 
-    const char *p = write_tmp("ok", "# comment\na: 1.5e8\nsub:\n  n: 12\n  b: true\n");
+    const char *p = gb_test_file("yaml_ok.yaml", "# comment\na: 1.5e8\nsub:\n  n: 12\n  b: true\n");
     CHECK(gb_yaml_load(p, &doc, &err) == GB_OK);
     CHECK(gb_ymap_open(&doc, fy_document_root(doc.fyd), "", &m, &err) == GB_OK);
     CHECK(gb_ymap_number(&m, "a", GB_Y_REQUIRED | GB_Y_POSITIVE, &x, &err) == GB_OK);
@@ -38,14 +28,14 @@ int main(void)
     CHECK(strstr(err.msg, "missing key 'missing'") != NULL);
     gb_yaml_free(&doc);
 
-    p = write_tmp("tiny", "a: 8.8e-317\nb: 1e309\n"); /* a subnormal reads back; overflow does not */
+    p = gb_test_file("yaml_tiny.yaml", "a: 8.8e-317\nb: 1e309\n"); /* a subnormal reads back; overflow does not */
     CHECK(gb_yaml_load(p, &doc, &err) == GB_OK);
     gb_ymap_open(&doc, fy_document_root(doc.fyd), "", &m, &err);
     CHECK(gb_ymap_number(&m, "a", 0, &x, &err) == GB_OK && x == 8.8e-317);
     CHECK(gb_ymap_number(&m, "b", 0, &x, &err) == GB_EINPUT && strstr(err.msg, ":2:4: b: expected a finite number"));
     gb_yaml_free(&doc);
 
-    p = write_tmp("bad", "a: -3\nb: .nan\nc: \"12\"\nd: 1.5x\n");
+    p = gb_test_file("yaml_bad.yaml", "a: -3\nb: .nan\nc: \"12\"\nd: 1.5x\n");
     CHECK(gb_yaml_load(p, &doc, &err) == GB_OK);
     gb_ymap_open(&doc, fy_document_root(doc.fyd), "", &m, &err);
     CHECK(gb_ymap_number(&m, "a", GB_Y_POSITIVE, &x, &err) == GB_EINPUT && strstr(err.msg, ":1:4:"));
@@ -54,14 +44,14 @@ int main(void)
     CHECK(gb_ymap_number(&m, "d", 0, &x, &err) == GB_EINPUT && strstr(err.msg, ":4:4:"));
     gb_yaml_free(&doc);
 
-    p = write_tmp("syntax", "a: [1, 2\nb: 3\n");
+    p = gb_test_file("yaml_syntax.yaml", "a: [1, 2\nb: 3\n");
     CHECK(gb_yaml_load(p, &doc, &err) == GB_EINPUT);
     CHECK(strstr(err.msg, "syntax error") != NULL);
     CHECK(gb_yaml_load("/nonexistent/scene.yaml", &doc, &err) == GB_EINPUT);
 
     /* "did you mean": a typo of a long key (a swap, a letter missed, the case) is named at its
      * own line; of a short key it is not (kn and kt, de1 and de2 are different keys) */
-    p = write_tmp("typo", "friciton_deg: 25\nkt: 7\nAccuracy: 1\nde2: 0\nmax_iteration: 5\n");
+    p = gb_test_file("yaml_typo.yaml", "friciton_deg: 25\nkt: 7\nAccuracy: 1\nde2: 0\nmax_iteration: 5\n");
     CHECK(gb_yaml_load(p, &doc, &err) == GB_OK);
     gb_ymap_open(&doc, fy_document_root(doc.fyd), "m", &m, &err);
     CHECK(gb_ymap_number(&m, "friction_deg", GB_Y_REQUIRED, &x, &err) == GB_EINPUT);
@@ -80,14 +70,14 @@ int main(void)
 
     /* UTF-8 is checked before libfyaml, which looped forever on a directive with a byte that is not
      * (fuzz/regress/scene): the place of the bad byte; a character split across two reads is fine */
-    p = write_tmp("latin1", "a: 1\n%YAML\xe9\n");
+    p = gb_test_file("yaml_latin1.yaml", "a: 1\n%YAML\xe9\n");
     CHECK(gb_yaml_load(p, &doc, &err) == GB_EINPUT);
     CHECK(strstr(err.msg, ":2:6: byte 0xe9 is not UTF-8 text") != NULL);
-    p = write_tmp("overlong", "%\xe0\x9b\x9e\n"); /* a 3-byte form of a 2-byte character: it hung too */
+    p = gb_test_file("yaml_overlong.yaml", "%\xe0\x9b\x9e\n"); /* a 3-byte form of a 2-byte character: it hung too */
     CHECK(gb_yaml_load(p, &doc, &err) == GB_EINPUT && strstr(err.msg, ":1:2: byte 0xe0") != NULL);
-    p = write_tmp("surrogate", "%\xed\xa0\x80\n");
+    p = gb_test_file("yaml_surrogate.yaml", "%\xed\xa0\x80\n");
     CHECK(gb_yaml_load(p, &doc, &err) == GB_EINPUT && strstr(err.msg, ":1:2: byte 0xed") != NULL);
-    p = write_tmp("truncated", "a: caf\xc3");
+    p = gb_test_file("yaml_truncated.yaml", "a: caf\xc3");
     CHECK(gb_yaml_load(p, &doc, &err) == GB_EINPUT && strstr(err.msg, ":1:7: byte 0xc3") != NULL);
     static char big[8200];
     for (int shift = 0; shift < 4; shift++) {
@@ -95,7 +85,7 @@ int main(void)
         memcpy(big, "a: ", 3);
         memset(big + 3, 'x', 4092 - 3 + (size_t)shift);
         strcat(big, "\xc3\xa9\xe2\x82\xac\xf0\x9f\x98\x80\n"); /* e acute, euro, an emoji across offset 4096 */
-        CHECK(gb_yaml_load(write_tmp("split", big), &doc, &err) == GB_OK);
+        CHECK(gb_yaml_load(gb_test_file("yaml_split.yaml", big), &doc, &err) == GB_OK);
         gb_yaml_free(&doc);
     }
     TEST_END();

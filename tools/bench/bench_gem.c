@@ -10,9 +10,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "bench_clock.h"
-
-#include "gembem/gembem.h"
+#include "bench_step.h"
 
 
 int main(int argc, char **argv)
@@ -39,28 +37,24 @@ int main(int argc, char **argv)
         return 1;
     }
     gb_wall_control wc = {GB_WALLS_STRESS, 0.5 * s0, 0.5 * s0, 0};
-    long prep_it = 0, it_total = 0;
-    double max_force, wall, contact_iterations = 0;
+    long prep_it = 0;
+    double max_force, wall;
     double t0 = bench_now();
     gb_status st = gb_solver_relax(sim, &wc, prep_cap, &prep_it, &max_force, &wall, &err);
     double t_prep = bench_now() - t0;
     int contacts = gb_sim_contacts(sim, NULL, 0);
-    contact_iterations += (double)prep_it * contacts;
-    double t_steps = 0;
+    bench_totals load = {0, 0, (double)prep_it * contacts, contacts}; /* the preparation's contact-iterations too */
     int done = 0;
     if (st == GB_OK) {
         for (int k = 1; k <= steps && st == GB_OK; k++) {
             wc.s1 = wc.s2 = s0 * (0.5 + 0.5 * k / steps);
-            long it = 0;
-            double t1 = bench_now();
-            st = gb_solver_relax(sim, &wc, sc.solver.max_iterations, &it, &max_force, &wall, &err);
-            t_steps += bench_now() - t1;
-            it_total += it;
-            contacts = gb_sim_contacts(sim, NULL, 0);
-            contact_iterations += (double)it * contacts;
+            st = bench_load_step(sim, &wc, sc.solver.max_iterations, &load, &max_force, &wall, &err);
             done += st == GB_OK;
         }
     }
+    double t_steps = load.seconds, contact_iterations = load.contact_iterations;
+    long it_total = load.iterations;
+    contacts = load.contacts;
     double secs = t_prep + t_steps, iters = (double)(prep_it + it_total);
     const gb_global_stats *g = gb_solver_statistics(sim);
     if (g) {

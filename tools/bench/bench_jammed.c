@@ -16,9 +16,7 @@
 #include <string.h>
 #include <sys/resource.h>
 #include "bench_accuracy.h"
-#include "bench_clock.h"
-
-#include "gembem/gembem.h"
+#include "bench_step.h"
 
 
 static void progress(void *user, const gb_iteration_report *r)
@@ -47,7 +45,7 @@ int main(int argc, char **argv)
     }
     if (gb_sim_create(&sc, &sim, &err)) return fprintf(stderr, "%s\n", err.msg), 1;
     gb_wall_control wc = {GB_WALLS_FIXED, 0, 0, 0};
-    long prep = 0, it = 0;
+    long prep = 0;
     double mf, wr, t0 = bench_now();
     const char *verbose = getenv("BENCH_PROGRESS");
     if (verbose && !strcmp(verbose, "1")) gb_sim_on_iteration(sim, progress, &t0);
@@ -74,24 +72,21 @@ int main(int argc, char **argv)
     long sweeps0 = gb_solver_work_done(sim).sweeps;
     gb_global_stats g0 = {0};
     if (gb_solver_statistics(sim)) g0 = *gb_solver_statistics(sim);
-    double contact_its = 0, t_steps = 0;
-    int contacts = gb_sim_contacts(sim, NULL, 0), done = 0;
+    bench_totals load = {0, 0, 0, gb_sim_contacts(sim, NULL, 0)};
+    int done = 0;
     for (int k = 1; k <= steps; k++) {
         wc.mode = GB_WALLS_STRESS;
         wc.s1 = wc.s2 = sr * (1 + 0.05 * k);
-        long n = 0;
-        double t1 = bench_now();
-        st = gb_solver_relax(sim, &wc, sc.solver.max_iterations, &n, &mf, &wr, &err);
-        t_steps += bench_now() - t1;
-        it += n;
-        contacts = gb_sim_contacts(sim, NULL, 0);
-        contact_its += (double)n * contacts;
+        st = bench_load_step(sim, &wc, sc.solver.max_iterations, &load, &mf, &wr, &err);
         if (st) {
             fprintf(stderr, "  %s %d, load step %d: %s\n", method, gb_sim_n_grains(sim), k, err.msg);
             break;
         }
         done++;
     }
+    double contact_its = load.contact_iterations, t_steps = load.seconds;
+    long it = load.iterations;
+    int contacts = load.contacts;
     struct rusage ru;
     getrusage(RUSAGE_SELF, &ru);
     printf("| %s | %d | %d | %ld (%.1f s) | %.3g | %.3g | %s%.0f | %.3e | %.1f | %.1f | %.0f |\n", method, gb_sim_n_grains(sim), contacts,

@@ -195,33 +195,33 @@ static void check_shares(const packing *p, int K, const double *diam, const doub
     }
 }
 
-static void case_overlap(void)
+/* gb_packgen with these options into name.csv, its older files removed first: its exit status. */
+static int make(const char *name, const char *options)
 {
     char args[2048];
-    clean("overlap_dense");
-    snprintf(args, sizeof args, "--n 500 --diameters 0.6,0.9,1.2 --seed 11 --out '%s'",
-             path("overlap_dense", ".csv"));
-    CHECK(run(args) == 0, "densest 500-disc packing failed");
+    clean(name);
+    snprintf(args, sizeof args, "%s --out '%s'", options, path(name, ".csv"));
+    return run(args);
+}
+
+static void case_overlap(void)
+{
     packing p;
+    CHECK(make("overlap_dense", "--n 500 --diameters 0.6,0.9,1.2 --seed 11") == 0,
+          "densest 500-disc packing failed");
     CHECK(load("overlap_dense", &p) && p.n == 500, "cannot read the densest packing");
     check_no_overlap(&p);
     check_inside(&p);
     unload(&p);
 
-    clean("overlap_dilated");
-    snprintf(args, sizeof args,
-             "--n 500 --diameters 0.6,0.9,1.2 --porosity 0.35 --seed 12 --out '%s'",
-             path("overlap_dilated", ".csv"));
-    CHECK(run(args) == 0, "dilated 500-disc packing failed");
+    CHECK(make("overlap_dilated", "--n 500 --diameters 0.6,0.9,1.2 --porosity 0.35 --seed 12") == 0,
+          "dilated 500-disc packing failed");
     CHECK(load("overlap_dilated", &p) && p.n == 500, "cannot read the dilated packing");
     check_no_overlap(&p);
     unload(&p);
 
-    clean("overlap_gap");
-    snprintf(args, sizeof args,
-             "--n 500 --diameters 0.6,0.9,1.2 --min-gap 0.05 --seed 13 --out '%s'",
-             path("overlap_gap", ".csv"));
-    CHECK(run(args) == 0, "500-disc packing with --min-gap failed");
+    CHECK(make("overlap_gap", "--n 500 --diameters 0.6,0.9,1.2 --min-gap 0.05 --seed 13") == 0,
+          "500-disc packing with --min-gap failed");
     CHECK(load("overlap_gap", &p) && p.n == 500, "cannot read the --min-gap packing");
     double gmin = INFINITY;
     for (size_t i = 0; i < p.n; ++i)

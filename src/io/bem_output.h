@@ -1,7 +1,7 @@
-/* Files of an elastostatic run: boundary CSV and VTK polydata, interior VTK unstructured grid and
- * CSV, the condensed stiffness. Full precision (%.17g). */
-#ifndef GB_BEM_OUTPUT_H
-#define GB_BEM_OUTPUT_H
+/* Files of an elastic body's solution (`gembem bem`, and a hybrid run's host): boundary CSV and VTK
+ * polydata, interior VTK unstructured grid and CSV, the condensed stiffness. Full precision (%.17g). */
+#ifndef GB_IO_BEM_OUTPUT_H
+#define GB_IO_BEM_OUTPUT_H
 
 #include "gembem/bem.h"
 
