@@ -6,14 +6,15 @@ set(GB_TEST_MODULES
     bem cli contact core gem hybrid io measure pack run scene solver   # src/<module>
     validation demo python study fuzz tools)                       # validation/, the demo, python/, studies/, fuzz/, tools/
 
-# A test of one C program: the executable is named after its first source (test_x.c: test_x). It
-# sees the public API only (include/gembem/), as the tools and validation programs do.
+# A test of one C program test_x.c (the executable test_x), run with the arguments that follow in
+# the repository's root. It sees the public API only (include/gembem/), as the tools and
+# validation programs do.
 function(gb_add_test name source)
   get_filename_component(exe ${source} NAME_WE)
-  add_executable(${exe} ${source} ${ARGN})
+  add_executable(${exe} ${source})
   target_include_directories(${exe} PRIVATE ${PROJECT_SOURCE_DIR}/tests)
   target_link_libraries(${exe} PRIVATE gembem)
-  add_test(NAME ${name} COMMAND ${exe} WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+  add_test(NAME ${name} COMMAND ${exe} ${ARGN} WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
 endfunction()
 
 # A white-box unit test of a module's internals (its private headers in src/<module>/): the
