@@ -3,11 +3,13 @@
 mean, standard deviation and count (statistics.md), and the figures statistics_*.png.
 
 Every run (study.py stat_cases: 8 cases x 20 packings, 1000 grains) is read only up to its last
-step within the host's small-strain range (the host ring's largest principal strain magnitude
-<= study.STAT_HOST_STRAIN). On those steps, per run:
+step within the host's small-strain range: the host's largest principal strain magnitude on the
+cavity wall (wall_strain) <= study.STAT_HOST_STRAIN; with --ring, on the ring at 1.5 R instead
+(ring_strain; a sensitivity run, twice the travel: statistics_ring*). On those steps, per run:
 
   window    the strain accumulated over WINDOW steps (0.05 cm of the top's travel), ending at each
-            step from the first full window to the last allowed step;
+            step from the first full window to the last allowed step (a run allowed fewer steps,
+            at least 2: one window of them all);
   band      the window with the largest band measure (figures.strip_share: the largest share of
             sum(gamma area) in a straight strip 0.5 cm wide, here in 1 degree steps); its strip's
             axis is the band's axis, the window's end the band's time;
@@ -20,20 +22,21 @@ step within the host's small-strain range (the host ring's largest principal str
             against theta_MC = 45 + phi/2, theta_R = 45 + psi/2, theta_A = 45 + (phi + psi)/4;
   thickness the full width at half height (above the profile's median) of the mean shear strain
             across the band (bins of half a mean diameter), in mean grain diameters d;
-  null      the band measure of the band's window with its strain values shuffled among the
-            triangles (a field with the same values and no band);
-  rotation  mean |rotation| over the window of the grains within the band (|distance to the
-            axis| <= max(thickness/2, d)) over that of the others; its null: the same for random
-            strips as wide;
+  null      the band measure of the band's window with its triangles' (strain, area) pairs
+            shuffled among their places (a field with the same values and no band);
+  rotation  mean (and median) |rotation| over the window of the grains within the band
+            (|distance to the axis| <= max(thickness/2, d)) over that of the others, rattlers
+            (< 2 contacts at the window's end) and grains turning more than SPIN (a mechanism)
+            left out; its null: the same for random strips as wide;
   onset     the first window in which the band's strip holds at least half way from its area
             share to its share at the band's time; where along the strip that window's strain
             peaks (bins of d, 3-bin mean): its distance from the cavity wall in d;
-  host      the host ring's shear strain increment over the band's window where the band's axis
-            meets the cavity (the two ring points nearest each end) over that at the mirror
-            points (x -> -x: the loading is symmetric about the vertical axis, so the mirror
-            points see the same loading without the band).
+  host      the host's shear strain increment over the band's window where the band's axis
+            meets the cavity (the two wall elements, and the two ring points at 1.5 R, nearest
+            each end) over that at the mirror points (x -> -x: the loading is symmetric about
+            the vertical axis, so the mirror points see the same loading without the band).
 
-Usage: validation/localisation/band_statistics.py [RUNS_DIR]     (default runs/localisation)
+Usage: validation/localisation/band_statistics.py [RUNS_DIR] [--ring]     (default runs/localisation)
 """
 import math
 import os
@@ -55,9 +58,15 @@ from gembem.yamlfile import read_yaml  # noqa: E402
 import study  # noqa: E402
 import figures as fg  # noqa: E402  (the strain on the triangles, the band measure: written once, there)
 
-RUNS = sys.argv[1] if len(sys.argv) > 1 else os.path.join(HERE, "..", "..", "runs", "localisation")
+ARGS = [a for a in sys.argv[1:] if not a.startswith("--")]
+RUNS = ARGS[0] if ARGS else os.path.join(HERE, "..", "..", "runs", "localisation")
+# Where the host's strain is bounded: on the cavity wall (its largest), or with --ring on the
+# ring at 1.5 R (the sensitivity run: outputs statistics_ring*)
+BOUND_AT = "ring" if "--ring" in sys.argv else "wall"
+SUFFIX = "_ring" if BOUND_AT == "ring" else ""
 WINDOW = 5          # steps of 0.01 cm: the window over which the band's strain accumulates
 DANG = 1            # degrees between the band measure's strip directions
+SPIN = 1.0          # radians over a window: a grain turning more is in a mechanism (README)
 NULL_SHUFFLES, NULL_SEED = 5, 20  # the nulls' shuffles (and 4x as many random strips), their seed
 EPISODE = fg.EPISODE  # band measure that counts as a band (0.45, as the extended cases)
 R_USABLE = 2.5 * (math.cos(math.pi / study.STAT_CAVITY) - math.sin(math.pi / study.STAT_CAVITY))
@@ -74,6 +83,16 @@ def ring_strain(run, k):
     h = run.field("host_ring", k)
     e1, e2, _ = principal(h["exx"], h["eyy"], h["exy"])
     return float(np.max(np.maximum(np.abs(e1), np.abs(e2))))
+
+
+def wall_strain(run, k):
+    """The host's largest principal strain magnitude on the cavity wall at step k: plane strain
+    Hooke on each element's hoop and normal stress (fields/host_wall; no shear: the boundary
+    contacts are frictionless), eps = (s - nu (s_t + s_n)) / (2 G)."""
+    h = run.field("host_wall", k)
+    tr = h["hoop"] + h["normal"]
+    et, en = (h["hoop"] - study.NU * tr) / (2 * study.G), (h["normal"] - study.NU * tr) / (2 * study.G)
+    return float(np.max(np.maximum(np.abs(et), np.abs(en))))
 
 
 def zone_stress(run, k):
@@ -117,7 +136,9 @@ class StatRun:
         self.travel = -hs["uy"][top]
         steps = self.r.steps_of("fields", "host_ring")
         self.ring = {k: ring_strain(self.r, k) for k in steps}
-        ok = [k for k in steps if k >= self.first_top and self.ring[k] <= study.STAT_HOST_STRAIN]
+        self.wall = {k: wall_strain(self.r, k) for k in steps}
+        bound = self.wall if BOUND_AT == "wall" else self.ring
+        ok = [k for k in steps if k >= self.first_top and bound[k] <= study.STAT_HOST_STRAIN]
         self.last = max(ok) if ok else self.first_top - 1  # the last step within the allowed strain
 
 
@@ -187,12 +208,18 @@ def band_thickness(tri, g, ok, area, ang, axis, d, radius=R_USABLE):
 def measure(sr):
     """The measures of one run (a dict; None where the allowed steps hold no full window)."""
     out = {"case": sr.name, "travel": float(sr.travel[sr.last]), "last": sr.last, "d": sr.d}
-    ends = list(range(sr.first_top + WINDOW - 1, sr.last + 1))
-    if not ends:
+    if sr.last >= sr.first_top:   # how far the zone went: its strain over the allowed loading
+        ez = zone_strain(sr.r, sr.first_top, sr.last)
+        out["zone_axial"], out["zone_vol"] = -ez[1, 1], ez[0, 0] + ez[1, 1]
+    # windows of WINDOW steps; a run allowed fewer (but at least 2) loading steps: one window of them all
+    win = min(WINDOW, sr.last - sr.first_top + 1)
+    out["window"] = win
+    if win < 2:
         return out
+    ends = list(range(sr.first_top + win - 1, sr.last + 1))
     wins = []
     for k1 in ends:
-        k0 = k1 - WINDOW + 1
+        k0 = k1 - win + 1
         tri, g, ok, area, _ = fg.accumulated_strain(sr, k0, k1)
         share, ashare, ang, axis = fg.strip_share(tri, g, ok, area, offset=True, dang=DANG)
         wins.append((k0, k1, share, ashare, ang, axis, tri, g, ok, area))
@@ -207,9 +234,11 @@ def measure(sr):
     idx = np.nonzero(ok)[0]
     nulls = []
     for _ in range(NULL_SHUFFLES):
-        gs = g.copy()
-        gs[idx] = g[rng.permutation(idx)]
-        nulls.append(fg.strip_share(tri, gs, ok, area, dang=DANG)[0])
+        # strain and area together (a sliver's huge strain stays on a sliver's area)
+        gs, as_ = g.copy(), area.copy()
+        perm = rng.permutation(idx)
+        gs[idx], as_[idx] = g[perm], area[perm]
+        nulls.append(fg.strip_share(tri, gs, ok, as_, dang=DANG)[0])
     out["band_null"] = float(np.mean(nulls))
     out["axis_r"] = abs(axis) / R_USABLE
     # the whole allowed loading's band measure
@@ -236,15 +265,32 @@ def measure(sr):
     th = math.radians(ang)
     dist = np.abs(-gb["x"] * math.sin(th) + gb["y"] * math.cos(th) - axis)
     rot = np.abs(gb["rotation"] - ga["rotation"])
-    inside = dist <= max(width / 2, sr.d)
-    out["rot_ratio"] = float(rot[inside].mean() / rot[~inside].mean())
+    # rattlers (fewer than 2 contacts at the window's end) spin freely: left out of both means
+    c = sr.r.contacts(k1)
+    jj = np.array([int(j) for j in c["j"] if not str(j).startswith("p")], int)  # j: a grain, or p<k> a particle
+    z = np.bincount(c["i"].astype(int), minlength=len(rot)) + np.bincount(jj, minlength=len(rot))
+    # grains spinning in a mechanism (both contacts sliding: the rotation is undetermined, the
+    # solver's value arbitrary; 7326 rad in one step on k0.01_p100_nr/s11) are left out too
+    spin = rot > SPIN
+    out["spinning"] = int((spin & (z >= 2)).sum())
+    held = (z >= 2) & ~spin
+    out["rattlers"] = int((z < 2).sum())
+    inside = (dist <= max(width / 2, sr.d)) & held
+    outside = (~inside) & held
+    # means (the brief's measure) and medians: a few grains spinning between two contacts swing
+    # the means' ratio (0.01 and 13 on one run), not the medians'
+    few = inside.sum() < 5
+    out["rot_ratio"] = np.nan if few else float(rot[inside].mean() / rot[outside].mean())
+    out["rot_ratio_med"] = np.nan if few else float(np.median(rot[inside]) / np.median(rot[outside]))
     # its null: the same ratio for strips as wide at random directions and offsets (|offset| < R/2)
     rr = []
     for _ in range(NULL_SHUFFLES * 4):
         a2, o2 = math.radians(rng.uniform(0, 180)), rng.uniform(-R_USABLE / 2, R_USABLE / 2)
         ins = np.abs(-gb["x"] * math.sin(a2) + gb["y"] * math.cos(a2) - o2) <= max(width / 2, sr.d)
-        rr.append(rot[ins].mean() / rot[~ins].mean())
-    out["rot_ratio_null"] = float(np.mean(rr))
+        if (ins & held).sum() >= 5:
+            rr.append((rot[ins & held].mean() / rot[~ins & held].mean(),
+                       np.median(rot[ins & held]) / np.median(rot[~ins & held])))
+    out["rot_ratio_null"], out["rot_ratio_med_null"] = (float(v) for v in np.mean(rr, 0))
     # onset: the first window whose strain in the band's strip is half way to its band-time share
     target = ashare + 0.5 * (share - ashare)
     for k0o, k1o, _, _, _, _, trio, go, oko, areao in wins:
@@ -254,7 +300,8 @@ def measure(sr):
         if wg[instrip].sum() / wg.sum() >= target:
             break
     out["onset_travel"] = float(sr.travel[k1o])
-    te = np.arange(-R_USABLE, R_USABLE + sr.d, sr.d)
+    half = math.sqrt(max(R_USABLE**2 - axis**2, sr.d**2))  # the strip's half chord
+    te = np.arange(-half, half + sr.d, sr.d)
     num, _ = np.histogram(to[instrip], te, weights=wg[instrip])
     num = np.convolve(num, np.ones(3) / 3, "same")
     tpk = 0.5 * (te[1:] + te[:-1])[int(np.argmax(num))]
@@ -274,15 +321,30 @@ def measure(sr):
             dd = np.hypot(ha["x"] - pt[0], ha["y"] - pt[1])
             lst.extend(gam[np.argsort(dd)[:2]])
     out["host_end_mirror"] = float(np.mean(at_end) / np.mean(at_mirror))
+    # the same on the wall itself (the elements' shear strain |eps_t - eps_n| from the hoop and
+    # normal stress, plane strain), the two elements nearest each end against their mirrors
+    wa, wb = sr.r.field("host_wall", k0 - 1), sr.r.field("host_wall", k1)
+    gw = np.abs((wb["hoop"] - wa["hoop"]) - (wb["normal"] - wa["normal"])) / (2 * study.G)
+    at_end, at_mirror = [], []
+    for sgn in (-1, 1):
+        p = axis * nrm + sgn * tend * tan
+        for pt, lst in ((p, at_end), (p * [-1, 1], at_mirror)):
+            lst.extend(gw[np.argsort(np.hypot(wa["x"] - pt[0], wa["y"] - pt[1]))[:2]])
+    out["wall_end_mirror"] = float(np.mean(at_end) / np.mean(at_mirror))
     out["host_end_mean"] = float(np.mean(at_end) / np.mean(gam))
     out["ring_max"] = sr.ring[sr.last]
+    out["wall_max"] = sr.wall[sr.last]
     out["_draw"] = (tri, g, ok, ha["x"], ha["y"], gam, gb, ang, axis)
     return out
 
 
 KEYS = [("travel", "top's travel within the allowed host strain [cm]", "{:.3f}"),
+        ("wall_max", "host's largest principal strain on the wall at the last step measured", "{:.4f}"),
+        ("ring_max", "the same on the ring at 1.5 R", "{:.4f}"),
+        ("zone_axial", "zone's vertical strain over the allowed travel (compression +)", "{:.4f}"),
+        ("zone_vol", "zone's volumetric strain over it (dilation +)", "{:.4f}"),
         ("band", "band measure at the band's time", "{:.2f}"),
-        ("band_null", "the same window's strain shuffled among its triangles (null)", "{:.2f}"),
+        ("band_null", "the same window's (strain, area) shuffled among its triangles (null)", "{:.2f}"),
         ("band_whole", "band measure of the whole allowed travel", "{:.2f}"),
         ("axis_r", "band axis' distance from the centre / usable radius", "{:.2f}"),
         ("band_travel", "band's time: travel at the window's end [cm]", "{:.3f}"),
@@ -295,8 +357,11 @@ KEYS = [("travel", "top's travel within the allowed host strain [cm]", "{:.3f}")
         ("thickness_d", "thickness (FWHM of the shear strain profile) [d]", "{:.1f}"),
         ("rot_ratio", "mean abs rotation in the band / outside", "{:.2f}"),
         ("rot_ratio_null", "the same for random strips as wide (null)", "{:.2f}"),
+        ("rot_ratio_med", "median abs rotation in the band / outside", "{:.2f}"),
+        ("rot_ratio_med_null", "the same for random strips as wide (null)", "{:.2f}"),
         ("onset_wall_d", "onset: distance of the strain peak from the wall [d]", "{:.1f}"),
-        ("host_end_mirror", "host ring shear strain increment at the band's ends / mirror points", "{:.2f}"),
+        ("wall_end_mirror", "host wall's shear strain increment at the band's ends / mirror points", "{:.2f}"),
+        ("host_end_mirror", "host ring's (1.5 R) shear strain increment at the band's ends / mirror points", "{:.2f}"),
         ("host_end_mean", "the same / the ring's mean", "{:.2f}")]
 
 
@@ -330,9 +395,11 @@ def table(rows):
             cells.append(f"{v.mean():+.1f} +- {v.std(ddof=1):.1f} ({len(v)})" if len(v) > 1 else "")
         lines.append(f"| theta - theta_{name} [deg] | " + " | ".join(cells) + " |")
     legend = "\n".join(f"- `{g}`: {case_label(g)}" for g in groups)
+    where = ("on the cavity wall" if BOUND_AT == "wall" else "on the ring at 1.5 R (the wall's reaches about twice "
+             "as much)")
     return (f"Mean +- standard deviation (number of runs) over the packings; each run measured up to its "
-            f"last step with the host ring's largest principal strain <= {study.STAT_HOST_STRAIN:g} "
-            f"(band_statistics.py; windows of {WINDOW} steps, 0.01 cm each).\n\n" + head + "\n".join(lines) + "\n\n"
+            f"last step with the host's largest principal strain {where} <= {study.STAT_HOST_STRAIN:g} "
+            f"(band_statistics.py; windows of {WINDOW} steps of 0.01 cm, or all the allowed steps when fewer).\n\n" + head + "\n".join(lines) + "\n\n"
             + legend + "\n")
 
 
@@ -349,7 +416,7 @@ def draw_band(ax, sr, m, vmax):
         p = (axis + off) * nrm
         ax.plot(*np.array([p - 3 * tan, p + 3 * tan]).T, color="tab:cyan", lw=0.6, ls="--")
     ax.set_aspect("equal")
-    ax.set_xlim(-2.9, 2.9), ax.set_ylim(-2.9, 2.9)
+    ax.set_xlim(-3.9, 3.9), ax.set_ylim(-3.9, 3.9)
     ax.set_xticks([]), ax.set_yticks([])
     return tp, hs
 
@@ -372,10 +439,10 @@ def fig_maps(runs, meas):
                      f"rotation ratio {m['rot_ratio']:.2f}", fontsize=7)
         fig.colorbar(tp, ax=ax, fraction=0.04, pad=0.01)
     fig.suptitle("The band's window (shear strain accumulated over 0.05 cm of the top's travel) of the run with the "
-                 "median band measure of each case; dashed: the band measure's 0.5 cm strip; grey squares: the host "
-                 "ring's shear strain increment over the window (own scale)", fontsize=8)
+                 "median band measure of each case\ndashed: the band measure's 0.5 cm strip; grey squares: the host's "
+                 "shear strain increment over the window on the ring at 1.5 R (own scale)", fontsize=8)
     fig.tight_layout(rect=(0, 0, 1, 0.95))
-    path = os.path.join(HERE, "statistics_maps.png")
+    path = os.path.join(HERE, f"statistics{SUFFIX}_maps.png")
     fig.savefig(path, dpi=110)
     plt.close(fig)
     fg.shrink_png(path)
@@ -384,9 +451,9 @@ def fig_maps(runs, meas):
 def fig_measures(meas):
     groups = [g[0] for g in study.stat_groups()]
     panels = [("theta", "band to minor principal stress [deg]"), ("band", "band measure"),
-              ("thickness_d", "thickness [d]"), ("rot_ratio", "rotation in band / outside"),
+              ("thickness_d", "thickness [d]"), ("rot_ratio_med", "median rotation in band / outside"),
               ("onset_wall_d", "onset distance from the wall [d]"),
-              ("host_end_mirror", "host at band ends / mirror points")]
+              ("wall_end_mirror", "host wall at band ends / mirror points")]
     fig, axes = plt.subplots(2, 3, figsize=(13, 7.5))
     x = np.arange(len(groups))
     for ax, (key, label) in zip(axes.ravel(), panels):
@@ -396,6 +463,11 @@ def fig_measures(meas):
             ax.plot(i + jit, v, ".", color="tab:blue", ms=4)
             if len(v):
                 ax.errorbar(i + 0.3, v.mean(), v.std(ddof=1) if len(v) > 1 else 0, fmt="s", color="k", ms=4)
+            nk = {"band": "band_null", "rot_ratio_med": "rot_ratio_med_null"}.get(key)
+            if nk:
+                vn = np.array([m[nk] for m in meas if m["case"].startswith(grp + "/") and nk in m])
+                ax.plot(i + 0.3, np.nanmean(vn), "x", color="tab:red", ms=6,
+                        label="null (mean)" if i == 0 else None)
             if key == "theta":
                 for k2, col in (("theta_mc", "tab:red"), ("theta_r", "tab:green"), ("theta_a", "tab:orange")):
                     p = np.array([m[k2] for m in meas if m["case"].startswith(grp + "/") and k2 in m])
@@ -403,11 +475,11 @@ def fig_measures(meas):
                         ax.plot([i - 0.35, i + 0.4], [p.mean()] * 2, color=col, lw=1.2,
                                 label={"theta_mc": "MC 45+phi/2", "theta_r": "Roscoe 45+psi/2",
                                        "theta_a": "Arthur 45+(phi+psi)/4"}[k2] if i == 0 else None)
-        if key == "theta":
+        if key in ("theta", "band", "rot_ratio_med"):
             ax.legend(fontsize=6)
         if key == "band":
             ax.axhline(EPISODE, color="0.5", ls=":", lw=0.8)
-        if key in ("rot_ratio", "host_end_mirror"):
+        if key in ("rot_ratio_med", "wall_end_mirror"):
             ax.axhline(1, color="0.5", ls=":", lw=0.8)
         if key == "thickness_d":
             ax.axhspan(7.5, 10, color="0.9", zorder=0)
@@ -417,7 +489,7 @@ def fig_measures(meas):
     fig.suptitle("Per run (dots) and mean +- sd per case (squares); grey band in the thickness panel: 7.5-10 d "
                  "(Bardet & Proubet 1992, discs; 8-10 d)", fontsize=8)
     fig.tight_layout(rect=(0, 0, 1, 0.96))
-    fig.savefig(os.path.join(HERE, "statistics_measures.png"), dpi=110)
+    fig.savefig(os.path.join(HERE, f"statistics{SUFFIX}_measures.png"), dpi=110)
     plt.close(fig)
 
 
@@ -432,16 +504,16 @@ def main():
         sr = StatRun(n)
         runs[n] = sr
         meas.append(measure(sr))
-    with open(os.path.join(HERE, "statistics.md"), "w") as f:
+    with open(os.path.join(HERE, f"statistics{SUFFIX}.md"), "w") as f:
         f.write(table(meas))
-    keys = [k for k, _, _ in KEYS] + ["ang", "minor_dir", "axis", "onset_travel", "ring_max", "d"]
-    with open(os.path.join(HERE, "statistics_runs.csv"), "w") as f:
+    keys = [k for k, _, _ in KEYS] + ["window", "spinning", "rattlers", "strip_ang", "ang", "minor_dir", "axis", "onset_travel", "d"]
+    with open(os.path.join(HERE, f"statistics{SUFFIX}_runs.csv"), "w") as f:
         f.write("case," + ",".join(keys) + "\n")
         for m in meas:
             f.write(m["case"] + "," + ",".join(f"{m[k]:.6g}" if k in m else "" for k in keys) + "\n")
     fig_maps(runs, meas)
     fig_measures(meas)
-    print(open(os.path.join(HERE, "statistics.md")).read())
+    print(open(os.path.join(HERE, f"statistics{SUFFIX}.md")).read())
 
 
 if __name__ == "__main__":
