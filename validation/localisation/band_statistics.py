@@ -305,7 +305,7 @@ def measure(sr):
     num, _ = np.histogram(to[instrip], te, weights=wg[instrip])
     num = np.convolve(num, np.ones(3) / 3, "same")
     tpk = 0.5 * (te[1:] + te[:-1])[int(np.argmax(num))]
-    out["onset_wall_d"] = (R_USABLE - math.hypot(tpk, axis)) / sr.d
+    out["onset_wall_d"] = max(0.0, R_USABLE - math.hypot(tpk, axis)) / sr.d  # (a bin's centre may lie past the chord's end)
     # the host's ring where the band's axis meets the cavity, against the mirror points
     ha, hb = sr.r.field("host_ring", k0 - 1), sr.r.field("host_ring", k1)
     dexx, deyy, dexy = (hb[c] - ha[c] for c in ("exx", "eyy", "exy"))
@@ -483,11 +483,15 @@ def fig_measures(meas):
             ax.axhline(1, color="0.5", ls=":", lw=0.8)
         if key == "thickness_d":
             ax.axhspan(7.5, 10, color="0.9", zorder=0)
+            ax.set_ylim(0, None)
+        if key == "theta":   # a direction at random: uniform in 0-90 deg, mean 45, sd 26
+            ax.axhspan(45 - 26, 45 + 26, color="0.93", zorder=0)
         ax.set_xticks(x)
         ax.set_xticklabels(groups, rotation=30, fontsize=6)
         ax.set_ylabel(label, fontsize=8)
-    fig.suptitle("Per run (dots) and mean +- sd per case (squares); grey band in the thickness panel: 7.5-10 d "
-                 "(Bardet & Proubet 1992, discs; 8-10 d)", fontsize=8)
+    fig.suptitle("Per run (dots) and mean +- sd per case (squares); grey in the thickness panel: 7.5-10 d "
+                 "(Bardet & Proubet 1992, discs); in the orientation panel: 45 +- 26 deg, a direction drawn at random",
+                 fontsize=8)
     fig.tight_layout(rect=(0, 0, 1, 0.96))
     fig.savefig(os.path.join(HERE, f"statistics{SUFFIX}_measures.png"), dpi=110)
     plt.close(fig)
