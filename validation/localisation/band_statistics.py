@@ -131,6 +131,7 @@ class StatRun:
         self.radii = fg.read_csv(os.path.join(self.dir, "grains.csv"))["r"]
         self.d = 2 * self.radii.mean()
         self.first_top = study.STEPS_P + 2
+        self.P = study.stat_case(name)[2]
         hs = self.r.host_steps
         top = hs["group"] == "top"
         self.travel = -hs["uy"][top]
@@ -208,6 +209,10 @@ def band_thickness(tri, g, ok, area, ang, axis, d, radius=R_USABLE):
 def measure(sr):
     """The measures of one run (a dict; None where the allowed steps hold no full window)."""
     out = {"case": sr.name, "travel": float(sr.travel[sr.last]), "last": sr.last, "d": sr.d}
+    # the grains' own confinement: the zone's mean pressure (Love-Weber) at the end of the
+    # host's confinement, over P (the packing's pre-stress and the host's shielding set it, not P)
+    s0 = zone_stress(sr.r, sr.first_top - 1)
+    out["p_zone_P"] = float(-0.5 * (s0[0, 0] + s0[1, 1]) / sr.P)
     if sr.last >= sr.first_top:   # how far the zone went: its strain over the allowed loading
         ez = zone_strain(sr.r, sr.first_top, sr.last)
         out["zone_axial"], out["zone_vol"] = -ez[1, 1], ez[0, 0] + ez[1, 1]
@@ -341,6 +346,7 @@ def measure(sr):
 KEYS = [("travel", "top's travel within the allowed host strain [cm]", "{:.3f}"),
         ("wall_max", "host's largest principal strain on the wall at the last step measured", "{:.4f}"),
         ("ring_max", "the same on the ring at 1.5 R", "{:.4f}"),
+        ("p_zone_P", "zone's mean pressure at the end of the confinement / P", "{:.3g}"),
         ("zone_axial", "zone's vertical strain over the allowed travel (compression +)", "{:.4f}"),
         ("zone_vol", "zone's volumetric strain over it (dilation +)", "{:.4f}"),
         ("band", "band measure at the band's time", "{:.2f}"),
