@@ -5,14 +5,15 @@ mean, standard deviation and count (statistics.md), and the figures statistics_*
 Every run (study.py stat_cases: 8 cases x 20 packings, 1000 grains) is read only up to its last
 step within the host's small-strain range: the host's largest principal strain magnitude on the
 cavity wall (wall_strain) <= study.STAT_HOST_STRAIN; with --ring, on the ring at 1.5 R instead
-(ring_strain; a sensitivity run, twice the travel: statistics_ring*). On those steps, per run:
+(ring_strain; a sensitivity run, 2.2-4 times the travel: statistics_ring*). On those steps, per run:
 
   window    the strain accumulated over WINDOW steps (0.05 cm of the top's travel), ending at each
             step from the first full window to the last allowed step (a run allowed fewer steps,
             at least 2: one window of them all);
   band      the window with the largest band measure (figures.strip_share: the largest share of
-            sum(gamma area) in a straight strip 0.5 cm wide, here in 1 degree steps); its strip's
-            axis is the band's axis, the window's end the band's time;
+            sum(gamma area) in a straight strip 0.5 cm wide, here in 1 degree steps), the window's
+            end the band's time; the band's direction and axis: band_direction's refinement of
+            the strip's;
   phi       mobilised friction angle at the band's time: sin phi = (s1 - s3) / (s1 + s3) of the
             zone's Love-Weber stress (zone_stress: sum over the grains of branch x force);
   psi       dilatancy angle over the band's window: sin psi = (de1 + de2) / (de1 - de2) of the

@@ -247,14 +247,14 @@ def scene(name, mesh, refine=1):
 # The statistics (issue 20, item 2): 2 x 2 x 2 cases, STAT_SEEDS packings each. 1000 grains
 # (the 250-grain cavity is ~18 grains across, narrower than an 8-10 d band), 128 cavity elements,
 # 30 deg, phi 0.82, nu 0.1; with and without rolling resistance, P 100 and 10 kgf/cm^2, kn/G 0.01
-# and 10 cm. The top's travel is limited to the host's small-strain range (STAT_STEPS, the allowed
-# strain STAT_HOST_STRAIN: README "Statistics"); figures.py reads the steps within it only.
+# and 10 cm. The runs go past the host's small-strain range (STAT_STEPS); band_statistics.py reads
+# only the steps within it (STAT_HOST_STRAIN on the cavity wall; --ring: on the ring at 1.5 R).
 STAT_N, STAT_CAVITY, STAT_SEEDS = 1000, 128, 20
 STAT_KN_G, STAT_P, STAT_ROLLING = [0.01, 10.0], [100.0, 10.0], [False, True]
-STAT_HOST_STRAIN = 0.02  # the largest principal strain magnitude allowed on the host's ring (README)
+STAT_HOST_STRAIN = 0.02  # the host's largest principal strain magnitude allowed (README "Statistics")
 STAT_DU = 0.01           # cm of the top's travel per step
 STAT_STEPS = {0.01: 24, 10.0: 24}  # steps of STAT_DU per kn/G: past the allowed strain (pilot runs: the
-# ring reaches 2 % at 0.17-0.18 cm of travel for both kn/G at P = 100)
+# ring at 1.5 R reaches 2 % at 0.17-0.18 cm of travel for both kn/G at P = 100; the wall, at 0.04-0.09)
 STAT_ETA = 0.1           # rolling friction coefficient (validation/biaxial122's)
 # The accuracy: a = STAT_A_REL x the mean normal contact force at each step's start (gembem's
 # {relative: r}). A force (0.2375 kgf, the extended cases' rule) was up to 4.9 times the mean contact
