@@ -386,6 +386,12 @@ def table(rows):
                  + " | ".join(str(sum("band" in r for r in by[g])) for g in groups) + " |")
     lines.append(f"| runs with band measure >= {EPISODE} | "
                  + " | ".join(str(sum(r.get("band", 0) >= EPISODE for r in by[g])) for g in groups) + " |")
+    lines.append(f"| runs with band measure >= {EPISODE} and >= 2 x its null | "
+                 + " | ".join(str(sum(r.get("band", 0) >= max(EPISODE, 2 * r.get("band_null", 1)) for r in by[g]))
+                              for g in groups) + " |")
+    lines.append("| runs with band measure >= 2 x its null | "
+                 + " | ".join(str(sum(r.get("band", 0) >= 2 * r.get("band_null", 1) for r in by[g])) for g in groups)
+                 + " |")
     lines.append("| runs with the onset's strain peak within 3 d of the wall | "
                  + " | ".join(str(sum(r.get("onset_wall_d", 99) <= 3 for r in by[g])) for g in groups) + " |")
     for key, label, fmt in KEYS:
