@@ -499,9 +499,9 @@ class ExtCase:
 STRIP = 0.5  # cm: the width of the straight strip of the band measure
 
 
-def strip_share(tri, gamma, ok, area, width=STRIP, step=0.05, offset=False):
+def strip_share(tri, gamma, ok, area, width=STRIP, step=0.05, offset=False, dang=5):
     """The band measure: the largest share of sum(gamma area) in a straight strip `width` cm wide
-    across the zone (any direction, 5 degree steps; triangles by their centroids), with the
+    across the zone (any direction, `dang` degree steps; triangles by their centroids), with the
     strip's share of the area and the direction of the strip's axis (degrees from +x). A uniform
     field gives the area share (about 0.13 for a strip through the centre); a band crossing the
     zone several times that."""
@@ -513,7 +513,7 @@ def strip_share(tri, gamma, ok, area, width=STRIP, step=0.05, offset=False):
         return (0.0, 0.0, 0.0, 0.0) if offset else (0.0, 0.0, 0.0)
     m = int(round(width / step))
     best = (0.0, 0.0, 0.0, 0.0)
-    for ang in range(0, 180, 5):
+    for ang in np.arange(0, 180, dang):
         th = math.radians(ang)
         pr = -cx * math.sin(th) + cy * math.cos(th)  # distance across a strip along direction ang
         edges = np.arange(pr.min() - 1e-9, pr.max() + step, step)

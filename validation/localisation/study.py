@@ -180,6 +180,9 @@ def extended():
 
 def pack_values(name):
     """(grains, solid fraction of the usable disc, seed, cavity elements) of the case's packing."""
+    sc = stat_case(name)
+    if sc is not None:
+        return STAT_N, BASE["phi"], sc[4], STAT_CAVITY
     c = ext(name)
     if c is not None:
         return c["n"], c["phi"], c["seed"], c["cavity"]
@@ -201,8 +204,9 @@ def pack_scene(name, mesh, radius=2.5):
     the case's friction, with its kn; the accuracy is 5e-5 kn (the sweep's), the balance of every
     grain at the end of the packing."""
     n, phi, seed, cavity = pack_values(name)
-    c = ext(name)
-    kn = c["kn_g"] * G if c is not None else next(k for m, _, _, k in cases() if m == name)
+    c, sc = ext(name), stat_case(name)
+    kn = (sc[1] * G if sc is not None else c["kn_g"] * G if c is not None
+          else next(k for m, _, _, k in cases() if m == name))
     usable = radius * (math.cos(math.pi / cavity) - math.sin(math.pi / cavity))
     polygon = 0.5 * cavity * radius**2 * math.sin(2 * math.pi / cavity)
     nu = c["nu"] if c is not None else NU
@@ -222,6 +226,8 @@ less the boundary particles' bulge, R cos(pi/m) - R sin(pi/m)): {phi_polygon:.6f
 def scene(name, mesh, refine=1):
     """The case's scene (gembem.Scene; scene_comment says what it is); refine > 1: the top's steps
     `refine` times smaller (a second attempt)."""
+    if stat_case(name) is not None:
+        return stat_scene(name, mesh)
     c = ext(name)
     if c is not None:
         shear = c["load"] == "shear"
@@ -236,6 +242,73 @@ def scene(name, mesh, refine=1):
                               kn * (A_FRICTIONLESS if friction == 0 else A_KN), 3000, P / STEPS_P, None,
                               STEPS * refine, [0, DUY / refine])
     raise SystemExit(f"unknown case {name}")
+
+
+# The statistics (issue 20, item 2): 2 x 2 x 2 cases, STAT_SEEDS packings each. 1000 grains
+# (the 250-grain cavity is ~18 grains across, narrower than an 8-10 d band), 128 cavity elements,
+# 30 deg, phi 0.82, nu 0.1; with and without rolling resistance, P 100 and 10 kgf/cm^2, kn/G 0.01
+# and 10 cm. The runs go past the host's small-strain range (STAT_STEPS); band_statistics.py reads
+# only the steps within it (STAT_HOST_STRAIN on the cavity wall; --ring: on the ring at 1.5 R).
+STAT_N, STAT_CAVITY, STAT_SEEDS = 1000, 128, 20
+STAT_KN_G, STAT_P, STAT_ROLLING = [0.01, 10.0], [100.0, 10.0], [False, True]
+STAT_HOST_STRAIN = 0.02  # the host's largest principal strain magnitude allowed (README "Statistics")
+STAT_DU = 0.01           # cm of the top's travel per step
+STAT_STEPS = {0.01: 24, 10.0: 24}  # steps of STAT_DU per kn/G: past the allowed strain (pilot runs: the
+# ring at 1.5 R reaches 2 % at 0.17-0.18 cm of travel for both kn/G at P = 100; the wall, at 0.04-0.09)
+STAT_ETA = 0.1           # rolling friction coefficient (validation/biaxial122's)
+# The accuracy: a = STAT_A_REL x the mean normal contact force at each step's start (gembem's
+# {relative: r}). A force (0.2375 kgf, the extended cases' rule) was up to 4.9 times the mean contact
+# force of the kn/G = 0.01 cm grains, which carry little of the confinement (gembem warned).
+STAT_A_REL = 1e-3
+
+
+def stat_name(kn_g, p, rolling, seed):
+    return f"k{kn_g:g}_p{p:g}_{'rr' if rolling else 'nr'}/s{seed:02d}"
+
+
+def stat_group(kn_g, p, rolling):
+    return stat_name(kn_g, p, rolling, 0).split("/")[0]
+
+
+def stat_groups():
+    """(group name, kn_g, P, rolling) of the 8 cases."""
+    return [(stat_group(k, p, r), k, p, r) for r in STAT_ROLLING for p in STAT_P for k in STAT_KN_G]
+
+
+def stat_cases():
+    """(name, kn_g, P, rolling, seed) of every run of the statistics."""
+    return [(stat_name(k, p, r, s), k, p, r, s) for _, k, p, r in stat_groups() for s in range(1, STAT_SEEDS + 1)]
+
+
+def stat_case(name):
+    for c in stat_cases():
+        if c[0] == name:
+            return c
+    return None
+
+
+def stat_r0():
+    """The mean radius of the statistics' grains: phi pi R_u^2 = n pi E[r^2], r uniform in [0.75, 1.25] r0."""
+    usable = 2.5 * (math.cos(math.pi / STAT_CAVITY) - math.sin(math.pi / STAT_CAVITY))
+    return math.sqrt(BASE["phi"] * usable**2 / (STAT_N * (1 + 0.25**2 / 3)))
+
+
+def stat_rolling(kn_g):
+    """{kr, eta}: kr = kt R*^2 (beta = 1, docs/scene.md), R* = r0 / 2 between two mean grains."""
+    kt = KT_KN * kn_g * G
+    return {"kr": g6(kt * (stat_r0() / 2)**2), "eta": STAT_ETA}
+
+
+def stat_scene(name, mesh):
+    _, kn_g, p, rolling, seed = stat_case(name)
+    dp = p / STEPS_P
+    s = case_scene(name, kn_g * G, BASE["friction"], mesh, STAT_CAVITY, NU, "displacement", 1.0, 3000, dp, None,
+                   STAT_STEPS[kn_g], [0, -STAT_DU])
+    s.solver["accuracy"] = {"relative": STAT_A_REL}
+    if rolling:
+        s.materials["grain_grain"]["rolling"] = stat_rolling(kn_g)
+    s.output = {"contacts_every": 1}   # the grains' rotations and the contact forces (Love-Weber stress)
+    return s
 
 
 def write_scene(name, path, mesh, refine=1):
