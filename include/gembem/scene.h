@@ -234,6 +234,14 @@ static inline int gb_scene_rolling(const gb_scene *s) { return s->grain_grain.kr
  * measures_every is the default of a scene below GB_MEASURES_DEFAULT_GRAINS grains. */
 gb_scene gb_scene_default(void);
 
+/* The geometric admission of a scene, apart from reading it (gb_scene_load calls it; a scene built
+ * in code calls it before gb_sim_create): refuses (GB_EINPUT, at the grain's file:line:column when
+ * it was read) a grain larger than its space, a grain whose centre is outside it, a disc that
+ * crosses a wall or the cavity's boundary by more than s->max_overlap of its radius, two grains
+ * that overlap by more than s->max_overlap of the smaller radius; counts the overlaps it accepts in
+ * s->overlaps. mesh: the host's (gb_bem_mesh_load of s->host; NULL: the box). */
+gb_status gb_scene_admit(gb_scene *s, const gb_bem_mesh *mesh, gb_error *err);
+
 /* Reads and validates a scene; on any error *out is left empty and err says file:line:column. */
 gb_status gb_scene_load(const char *path, gb_scene *out, gb_error *err);
 void gb_scene_free(gb_scene *s);
