@@ -376,5 +376,9 @@ gb_status gb_sim_run(gb_sim *sim, gb_run_output *out, gb_step_fn on_step, void *
             sim->profile.control += gb_clock_seconds() - t2;
         }
     }
+    if (out) { /* the output's hooks end with the run: the caller closes (frees) it next */
+        gb_sim_on_within_step(sim, NULL, NULL);
+        if (sc->solver.history) gb_sim_on_iteration(sim, NULL, NULL);
+    }
     return st;
 }
