@@ -81,7 +81,7 @@ static gb_status write_info(const char *path, const char *command, const bem_run
     if (st) return st;
     FILE *f = a.f;
     fprintf(f, "# How this run directory was made.\n");
-    gb_run_record_origin(f, command, sc->path, "started");
+    gb_run_record_origin(f, command, sc->path, "started", NULL);
     fprintf(f, "settings:   # as the solve used them\n  units: {length: %s, force: %s}\n", sc->length_unit,
             sc->force_unit);
     fprintf(f, "  material: {shear_modulus: %.17g, poisson: %.17g, plane: %s}\n", mat->shear_modulus, mat->poisson,

@@ -19,7 +19,7 @@ static void write_info(FILE *f, const char *command, const gb_scene *s, const gb
     fprintf(f, "# How this packing was made (docs/packing.md). A run scene starts from it with\n"
                "#   initial_state: <this directory>/state.yaml%s\n",
             s->host.present ? "\n# and the same host: section (the same mesh)" : "");
-    gb_run_record_origin(f, command, s->path, "made");
+    gb_run_record_origin(f, command, s->path, "made", NULL);
     fprintf(f, "protocol: %s\nseed: %llu\nsizes: %s\n", d->protocol == GB_PACK_GROWTH ? "growth" : "deposition",
             (unsigned long long)d->seed, sizes_name(&d->sizes));
     if (d->protocol == GB_PACK_GROWTH)

@@ -68,8 +68,8 @@ static gb_status write_info(const gb_run_output *o, const gb_sim *sim, const cha
     gb_atomic_file a;
     gb_status st = gb_atomic_open(&a, path, err);
     if (st) return st;
-    fprintf(a.f, "# How this run directory was made.\ngembem_version: %s\ncommand: \"%s\"\nscene: \"%s\"\nstarted: %s\n",
-            gb_version(), o->command, o->scene->path, o->started);
+    fprintf(a.f, "# How this run directory was made.\n");
+    gb_run_record_origin(a.f, o->command, o->scene->path, "started", o->started);
     const char *threads = getenv("OPENBLAS_NUM_THREADS");
     fprintf(a.f, "openblas_threads: \"%s\"\n", threads ? threads : "default");
     const gb_scene *sc = o->scene;

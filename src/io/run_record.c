@@ -15,13 +15,13 @@
 #include "io/scene_report.h"
 #include "solver/solver.h"
 
-void gb_run_record_origin(FILE *f, const char *command, const char *scene, const char *when_key)
+void gb_run_record_origin(FILE *f, const char *command, const char *scene, const char *when_key, const char *when)
 {
     char now[64];
     time_t t = time(NULL);
     strftime(now, sizeof now, "%Y-%m-%dT%H:%M:%SZ", gmtime(&t));
     fprintf(f, "gembem_version: %s\ncommand: \"%s\"\nscene: \"%s\"\n%s: %s\n", gb_version(), command, scene,
-            when_key, now);
+            when_key, when ? when : now);
 }
 
 static void material(FILE *f, const char *name, const gb_material *m)

@@ -8,8 +8,8 @@
 #include "gembem/gem.h"
 
 /* The record's first keys, how the directory was made: gembem_version, command, scene, and the
- * time now (UTC) as `when_key` ("started" in run_info.yaml, "made" in pack_info.yaml). */
-void gb_run_record_origin(FILE *f, const char *command, const char *scene, const char *when_key);
+ * time `when` (NULL: now, UTC) as `when_key` ("started" in run_info.yaml, "made" in pack_info.yaml). */
+void gb_run_record_origin(FILE *f, const char *command, const char *scene, const char *when_key, const char *when);
 
 /* settings: the scene's every setting, defaults spelled out. */
 void gb_run_record_settings(FILE *f, const gb_scene *sc);
