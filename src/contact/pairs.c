@@ -4,18 +4,23 @@
 #include <stdlib.h>
 #include <string.h>
 
-void gb_pairs_free(gb_pair_list *L)
+void gb_pair_set_free(gb_pair_set *P)
 {
-    free(L->p);
-    free(L->tmp);
-    free(L->x0);
-    free(L->cell_head);
-    free(L->cell_next);
-    free(L->cand);
-    free(L->pcell_head);
-    free(L->pcell_next);
-    free(L->px0);
-    memset(L, 0, sizeof *L);
+    free(P->p);
+    free(P->x0);
+    free(P->px0);
+    memset(P, 0, sizeof *P);
+}
+
+void gb_pair_search_free(gb_pair_search *S)
+{
+    free(S->tmp);
+    free(S->cell_head);
+    free(S->cell_next);
+    free(S->cand);
+    free(S->pcell_head);
+    free(S->pcell_next);
+    memset(S, 0, sizeof *S);
 }
 
 gb_status gb_particles_create(gb_particles *bp, const gb_bem_mesh *mesh, const int *elem, int m, gb_error *err)
@@ -132,7 +137,7 @@ static gb_status grow(void **buf, int *cap, int need, size_t size, gb_error *err
     return GB_OK;
 }
 
-gb_status gb_pairs_rebuild(gb_pair_list *L, const gb_world *w, gb_error *err)
+gb_status gb_pairs_rebuild(gb_pair_set *P, gb_pair_search *S, const gb_world *w, gb_error *err)
 {
     gb_status st;
     const gb_grain *g = w->g;
@@ -155,28 +160,28 @@ gb_status gb_pairs_rebuild(gb_pair_list *L, const gb_world *w, gb_error *err)
     }
     /* Cells of side 2 rmax + skin: every candidate lies in the 3 x 3 cells around a grain. Grids
      * far finer than the grain count only cost memory, so the cell count is kept near n. */
-    double h = 2 * rmax + L->skin;
+    double h = 2 * rmax + S->skin;
     double span = fmax(xmax - xmin, ymax - ymin);
     if (span / h > 4.0 * sqrt((double)n) + 4) h = span / (4.0 * sqrt((double)n) + 4);
     int ncx = (int)((xmax - xmin) / h) + 1, ncy = (int)((ymax - ymin) / h) + 1;
     int ncells = ncx * ncy;
-    if ((st = grow((void **)&L->cell_head, &L->n_cells_cap, ncells, sizeof(int), err))) return st;
-    if (!L->cell_next && !(L->cell_next = malloc((size_t)(n > 0 ? n : 1) * sizeof(int))))
+    if ((st = grow((void **)&S->cell_head, &S->n_cells_cap, ncells, sizeof(int), err))) return st;
+    if (!S->cell_next && !(S->cell_next = malloc((size_t)(n > 0 ? n : 1) * sizeof(int))))
         return gb_fail(err, GB_ENOMEM, "out of memory for the cell list");
-    if (!L->x0 && !(L->x0 = malloc((size_t)(2 * (n > 0 ? n : 1)) * sizeof(double))))
+    if (!P->x0 && !(P->x0 = malloc((size_t)(2 * (n > 0 ? n : 1)) * sizeof(double))))
         return gb_fail(err, GB_ENOMEM, "out of memory for the cell list");
-    for (int c = 0; c < ncells; c++) L->cell_head[c] = -1;
+    for (int c = 0; c < ncells; c++) S->cell_head[c] = -1;
     if (np > 0) {
-        if ((st = grow((void **)&L->pcell_head, &L->n_pcells_cap, ncells, sizeof(int), err)) ||
-            (st = grow((void **)&L->pcell_next, &L->n_particles_cap, np, sizeof(int), err)))
+        if ((st = grow((void **)&S->pcell_head, &S->n_pcells_cap, ncells, sizeof(int), err)) ||
+            (st = grow((void **)&S->pcell_next, &S->n_particles_cap, np, sizeof(int), err)))
             return st;
-        for (int c = 0; c < ncells; c++) L->pcell_head[c] = -1;
+        for (int c = 0; c < ncells; c++) S->pcell_head[c] = -1;
         for (int e = np - 1; e >= 0; e--) {
             int cx = (int)((bp->x[e] - xmin) / h), cy = (int)((bp->y[e] - ymin) / h);
             cx = cx < 0 ? 0 : cx >= ncx ? ncx - 1 : cx;
             cy = cy < 0 ? 0 : cy >= ncy ? ncy - 1 : cy;
-            L->pcell_next[e] = L->pcell_head[cy * ncx + cx];
-            L->pcell_head[cy * ncx + cx] = e;
+            S->pcell_next[e] = S->pcell_head[cy * ncx + cx];
+            S->pcell_head[cy * ncx + cx] = e;
         }
     }
     /* Insert in reverse so that each cell lists its grains in increasing order. */
@@ -184,8 +189,8 @@ gb_status gb_pairs_rebuild(gb_pair_list *L, const gb_world *w, gb_error *err)
         int cx = (int)((g[i].x - xmin) / h), cy = (int)((g[i].y - ymin) / h);
         cx = cx < 0 ? 0 : cx >= ncx ? ncx - 1 : cx;
         cy = cy < 0 ? 0 : cy >= ncy ? ncy - 1 : cy;
-        L->cell_next[i] = L->cell_head[cy * ncx + cx];
-        L->cell_head[cy * ncx + cx] = i;
+        S->cell_next[i] = S->cell_head[cy * ncx + cx];
+        S->cell_head[cy * ncx + cx] = i;
     }
 
     int m = 0, old = 0;
@@ -200,45 +205,45 @@ gb_status gb_pairs_rebuild(gb_pair_list *L, const gb_world *w, gb_error *err)
             if (y < 0 || y >= ncy) continue;
             for (int x = cx - 1; x <= cx + 1; x++) {
                 if (x < 0 || x >= ncx) continue;
-                for (int e = L->pcell_head[y * ncx + x]; e >= 0; e = L->pcell_next[e]) {
-                    double dx = bp->x[e] - a->x, dy = bp->y[e] - a->y, reach = a->r + bp->r[e] + L->skin;
+                for (int e = S->pcell_head[y * ncx + x]; e >= 0; e = S->pcell_next[e]) {
+                    double dx = bp->x[e] - a->x, dy = bp->y[e] - a->y, reach = a->r + bp->r[e] + S->skin;
                     if (dx * dx + dy * dy >= reach * reach) continue;
-                    if ((st = grow((void **)&L->cand, &L->cand_cap, nc + 1, sizeof(int), err))) return st;
-                    L->cand[nc++] = GB_PARTICLE_J(e);
+                    if ((st = grow((void **)&S->cand, &S->cand_cap, nc + 1, sizeof(int), err))) return st;
+                    S->cand[nc++] = GB_PARTICLE_J(e);
                 }
             }
         }
         for (int wl = GB_N_WALLS - 1; box && wl >= 0; wl--) {
             double gap[GB_N_WALLS] = {a->x - box->left, box->right - a->x, a->y - box->bottom, box->top - a->y};
-            if (gap[wl] < a->r + L->skin) {
-                if ((st = grow((void **)&L->cand, &L->cand_cap, nc + 1, sizeof(int), err))) return st;
-                L->cand[nc++] = -1 - wl;
+            if (gap[wl] < a->r + S->skin) {
+                if ((st = grow((void **)&S->cand, &S->cand_cap, nc + 1, sizeof(int), err))) return st;
+                S->cand[nc++] = -1 - wl;
             }
         }
-        if (nc > 1) qsort(L->cand, (size_t)nc, sizeof(int), cmp_int);
+        if (nc > 1) qsort(S->cand, (size_t)nc, sizeof(int), cmp_int);
         int first_grain = nc;
         for (int y = cy - 1; y <= cy + 1; y++) {
             if (y < 0 || y >= ncy) continue;
             for (int x = cx - 1; x <= cx + 1; x++) {
                 if (x < 0 || x >= ncx) continue;
-                for (int j = L->cell_head[y * ncx + x]; j >= 0; j = L->cell_next[j]) {
+                for (int j = S->cell_head[y * ncx + x]; j >= 0; j = S->cell_next[j]) {
                     if (j <= i) continue;
-                    double dx = g[j].x - a->x, dy = g[j].y - a->y, reach = a->r + g[j].r + L->skin;
+                    double dx = g[j].x - a->x, dy = g[j].y - a->y, reach = a->r + g[j].r + S->skin;
                     if (dx * dx + dy * dy >= reach * reach) continue;
-                    if ((st = grow((void **)&L->cand, &L->cand_cap, nc + 1, sizeof(int), err))) return st;
-                    L->cand[nc++] = j;
+                    if ((st = grow((void **)&S->cand, &S->cand_cap, nc + 1, sizeof(int), err))) return st;
+                    S->cand[nc++] = j;
                 }
             }
         }
-        if (nc - first_grain > 1) qsort(L->cand + first_grain, (size_t)(nc - first_grain), sizeof(int), cmp_int);
-        if ((st = grow((void **)&L->tmp, &L->tmp_cap, m + nc, sizeof(gb_pair), err))) return st;
+        if (nc - first_grain > 1) qsort(S->cand + first_grain, (size_t)(nc - first_grain), sizeof(int), cmp_int);
+        if ((st = grow((void **)&S->tmp, &S->tmp_cap, m + nc, sizeof(gb_pair), err))) return st;
         for (int k = 0; k < nc; k++) {
-            int j = L->cand[k];
+            int j = S->cand[k];
             /* Merge: the old list is sorted by (i, j) as well. */
-            while (old < L->n && (L->p[old].i < i || (L->p[old].i == i && L->p[old].j < j))) old++;
-            gb_pair *q = &L->tmp[m++];
-            if (old < L->n && L->p[old].i == i && L->p[old].j == j) {
-                *q = L->p[old++];
+            while (old < P->n && (P->p[old].i < i || (P->p[old].i == i && P->p[old].j < j))) old++;
+            gb_pair *q = &S->tmp[m++];
+            if (old < P->n && P->p[old].i == i && P->p[old].j == j) {
+                *q = P->p[old++];
             } else {
                 memset(q, 0, sizeof *q);
                 q->i = i;
@@ -248,51 +253,57 @@ gb_status gb_pairs_rebuild(gb_pair_list *L, const gb_world *w, gb_error *err)
             }
         }
     }
-    /* Swap the lists. */
-    gb_pair *p = L->p;
-    int cap = L->cap;
-    L->p = L->tmp;
-    L->cap = L->tmp_cap;
-    L->n = m;
-    L->tmp = p;
-    L->tmp_cap = cap;
-    for (int i = 0; i < n; i++) {
-        L->x0[2 * i] = g[i].x;
-        L->x0[2 * i + 1] = g[i].y;
+    /* Swap the lists, the new one at least as long as the old (a state saved before fits in it) */
+    if (S->tmp_cap < P->cap) {
+        gb_pair *q = realloc(S->tmp, (size_t)P->cap * sizeof *q);
+        if (!q) return gb_fail(err, GB_ENOMEM, "out of memory for %d contact pairs", P->cap);
+        S->tmp = q, S->tmp_cap = P->cap;
     }
-    if (np > 0 && (st = grow((void **)&L->px0, &L->px0_cap, 2 * np, sizeof(double), err))) return st;
-    for (int e = 0; e < np; e++) L->px0[2 * e] = bp->x[e], L->px0[2 * e + 1] = bp->y[e];
-    if (box) L->box0 = *box;
-    L->rebuilds++;
-    L->generation = ++L->generations;
+    gb_pair *p = P->p;
+    int cap = P->cap;
+    P->p = S->tmp;
+    P->cap = S->tmp_cap;
+    P->n = m;
+    S->tmp = p;
+    S->tmp_cap = cap;
+    for (int i = 0; i < n; i++) {
+        P->x0[2 * i] = g[i].x;
+        P->x0[2 * i + 1] = g[i].y;
+    }
+    if (np > 0 && !P->px0 && !(P->px0 = malloc(2 * (size_t)np * sizeof(double))))
+        return gb_fail(err, GB_ENOMEM, "out of memory for the cell list");
+    for (int e = 0; e < np; e++) P->px0[2 * e] = bp->x[e], P->px0[2 * e + 1] = bp->y[e];
+    if (box) P->box0 = *box;
+    P->rebuilds++;
+    P->generation = ++S->generations;
     return GB_OK;
 }
 
-void gb_pairs_drift(const gb_pair_list *L, const gb_world *w, double *grain, double *wall)
+void gb_pairs_drift(const gb_pair_set *P, const gb_world *w, double *grain, double *wall)
 {
     const gb_box *box = w->box;
     *wall = 0;
     if (box)
-        *wall = fmax(fmax(fabs(box->left - L->box0.left), fabs(box->right - L->box0.right)),
-                     fmax(fabs(box->bottom - L->box0.bottom), fabs(box->top - L->box0.top)));
+        *wall = fmax(fmax(fabs(box->left - P->box0.left), fabs(box->right - P->box0.right)),
+                     fmax(fabs(box->bottom - P->box0.bottom), fabs(box->top - P->box0.top)));
     for (int e = 0; w->bp && e < w->bp->n; e++)
-        *wall = fmax(*wall, hypot(w->bp->x[e] - L->px0[2 * e], w->bp->y[e] - L->px0[2 * e + 1]));
+        *wall = fmax(*wall, hypot(w->bp->x[e] - P->px0[2 * e], w->bp->y[e] - P->px0[2 * e + 1]));
     double max2 = 0;
-    for (int i = 0; i < w->n; i++) max2 = fmax(max2, gb_pairs_grain_drift2(L, w, i));
+    for (int i = 0; i < w->n; i++) max2 = fmax(max2, gb_pairs_grain_drift2(P, w, i));
     *grain = sqrt(max2);
 }
 
-int gb_pairs_drift_stale(const gb_pair_list *L, double grain, double wall)
+int gb_pairs_drift_stale(const gb_pair_search *S, double grain, double wall)
 {
     /* A pair's gap shrinks by at most the sum of both sides' displacements. */
-    return 2 * grain >= L->skin || grain + wall >= L->skin;
+    return 2 * grain >= S->skin || grain + wall >= S->skin;
 }
 
-int gb_pairs_stale(const gb_pair_list *L, const gb_world *w)
+int gb_pairs_stale(const gb_pair_set *P, const gb_pair_search *S, const gb_world *w)
 {
     double grain, wall;
-    gb_pairs_drift(L, w, &grain, &wall);
-    return gb_pairs_drift_stale(L, grain, wall);
+    gb_pairs_drift(P, w, &grain, &wall);
+    return gb_pairs_drift_stale(S, grain, wall);
 }
 
 int gb_pairs_brute_force(const gb_grain *g, int n, double range, int *out_i, int *out_j, int cap)

@@ -42,43 +42,50 @@ typedef struct {
     double diss;     /* energy dissipated at this contact in the current load step */
 } gb_pair;
 
+/* The candidate pairs and where they were found: part of a simulation's state (src/gem/sim.h),
+ * saved and restored with the grains. */
 typedef struct {
     gb_pair *p;
-    int n, cap;
-    gb_pair *tmp;         /* the next list while rebuilding */
-    int tmp_cap;
-    double skin;          /* extra distance covered by the list */
+    int n, cap;           /* a rebuild never lowers cap: a list saved earlier fits when restored */
     double *x0;           /* grain positions at the last rebuild (2 per grain) */
-    int *pcell_head, *pcell_next, n_pcells_cap, n_particles_cap; /* boundary particles by cell */
     double *px0;          /* particle centres at the last rebuild (2 per particle) */
-    int px0_cap;
     gb_box box0;          /* walls at the last rebuild */
-    int *cell_head, *cell_next, n_cells_cap;
-    int *cand;            /* per-grain candidate buffer */
-    int cand_cap;
     long rebuilds;
     /* Which rebuild the list's pairs come from, unique within the process: `rebuilds` goes back
      * when a saved state is restored and may then count a different list, this never repeats. */
-    long generation, generations;
-} gb_pair_list;
+    long generation;
+} gb_pair_set;
 
-void gb_pairs_free(gb_pair_list *L);
+/* How pairs are found: the skin and the search's buffers, which no state needs. */
+typedef struct {
+    double skin;          /* extra distance covered by the list */
+    gb_pair *tmp;         /* the next list while rebuilding */
+    int tmp_cap;
+    int *pcell_head, *pcell_next, n_pcells_cap, n_particles_cap; /* boundary particles by cell */
+    int *cell_head, *cell_next, n_cells_cap;
+    int *cand;            /* per-grain candidate buffer */
+    int cand_cap;
+    long generations;     /* of the lists built in this process (gb_pair_set.generation) */
+} gb_pair_search;
+
+void gb_pair_set_free(gb_pair_set *P);
+void gb_pair_search_free(gb_pair_search *S);
 
 /* Rebuilds the candidate pairs from scratch with a cell grid (no O(N^2) loop), carrying over
  * the state of the pairs that persist. Both lists are sorted by (i, j). */
-gb_status gb_pairs_rebuild(gb_pair_list *L, const gb_world *w, gb_error *err);
+gb_status gb_pairs_rebuild(gb_pair_set *P, gb_pair_search *S, const gb_world *w, gb_error *err);
 
 /* True when some grain or wall has moved far enough since the last rebuild that a new contact
  * could be missing from the list. */
-int gb_pairs_stale(const gb_pair_list *L, const gb_world *w);
+int gb_pairs_stale(const gb_pair_set *P, const gb_pair_search *S, const gb_world *w);
 /* The same test in parts, for callers that move few grains: the largest displacement since the
  * rebuild of a grain (`grain`) and of a wall or particle (`wall`), the test on them, and the
  * squared displacement of one grain. */
-void gb_pairs_drift(const gb_pair_list *L, const gb_world *w, double *grain, double *wall);
-int gb_pairs_drift_stale(const gb_pair_list *L, double grain, double wall);
-static inline double gb_pairs_grain_drift2(const gb_pair_list *L, const gb_world *w, int i)
+void gb_pairs_drift(const gb_pair_set *P, const gb_world *w, double *grain, double *wall);
+int gb_pairs_drift_stale(const gb_pair_search *S, double grain, double wall);
+static inline double gb_pairs_grain_drift2(const gb_pair_set *P, const gb_world *w, int i)
 {
-    double dx = w->g[i].x - L->x0[2 * i], dy = w->g[i].y - L->x0[2 * i + 1];
+    double dx = w->g[i].x - P->x0[2 * i], dy = w->g[i].y - P->x0[2 * i + 1];
     return dx * dx + dy * dy;
 }
 

@@ -25,7 +25,7 @@ double gb_pairs_mean_normal_force(const gb_pair *p, int n, double extent)
 
 double gb_sim_extent(const gb_sim *sim)
 {
-    const gb_box *b = &sim->box;
+    const gb_box *b = &sim->state.box;
     return fmax(fmax(fabs(b->left), fabs(b->right)), fmax(fabs(b->bottom), fabs(b->top)));
 }
 

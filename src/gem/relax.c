@@ -35,7 +35,7 @@ void gb_gem_add_contact(gb_sim *sim, const gb_pair *p, double sign)
      * r w its stiffness is kr / r^2, kept at the cap as kt is (K 8). */
     double mr = sign * p->mr, kr = sign * mat->kr;
     int rolling = mat->kr > 0; /* without, no divisions: they are a good part of a contact's cost */
-    double ri = sim->g[i].r, *F = &sim->scratch.F[3 * i], *S = &sim->scratch.S[6 * i];
+    double ri = sim->state.g[i].r, *F = &sim->scratch.F[3 * i], *S = &sim->scratch.S[6 * i];
     F[0] += fx, F[1] += fy, F[2] += rolling ? pt - mr / ri : pt;
     S[0] += s00, S[1] += s01, S[2] += -kt * s, S[3] += s11, S[4] += kt * c;
     S[5] += rolling ? kt + kr / (ri * ri) : kt;
@@ -47,7 +47,7 @@ void gb_gem_add_contact(gb_sim *sim, const gb_pair *p, double sign)
     if (p->j >= 0) {
         /* B's block T' = [[-c, -s, 0], [s, -c, 1]] (K 25): same moment, opposite force. */
         int j = p->j;
-        double rj = sim->g[j].r;
+        double rj = sim->state.g[j].r;
         F = &sim->scratch.F[3 * j], S = &sim->scratch.S[6 * j];
         F[0] -= fx, F[1] -= fy, F[2] += rolling ? pt + mr / rj : pt;
         S[0] += s00, S[1] += s01, S[2] += kt * s, S[3] += s11, S[4] += -kt * c;
@@ -64,7 +64,7 @@ void gb_gem_add_contact(gb_sim *sim, const gb_pair *p, double sign)
         sim->scratch.bp_S[3 * e] += s00, sim->scratch.bp_S[3 * e + 1] += s01, sim->scratch.bp_S[3 * e + 2] += s11;
     } else {
         int w = -1 - p->j;
-        sim->wall_force[w] += pn;
+        sim->state.wall_force[w] += pn;
         sim->scratch.wall_k[w] += kn;
     }
 }
@@ -73,10 +73,10 @@ void gb_gem_add_contact(gb_sim *sim, const gb_pair *p, double sign)
  * particles the force K u + f0 that their displacement asks of the host. */
 static void reset_forces(gb_sim *sim)
 {
-    int n = sim->n;
+    int n = sim->state.n;
     memset(sim->scratch.S, 0, (size_t)n * 6 * sizeof(double));
     memset(sim->scratch.nc, 0, (size_t)n * sizeof(int));
-    for (int w = 0; w < GB_N_WALLS; w++) sim->wall_force[w] = sim->scratch.wall_k[w] = 0;
+    for (int w = 0; w < GB_N_WALLS; w++) sim->state.wall_force[w] = sim->scratch.wall_k[w] = 0;
     if (sim->host) {
         memcpy(sim->scratch.bp_F, sim->host->force, (size_t)sim->host->m * sizeof(double));
         memset(sim->scratch.bp_S, 0, 3 * (size_t)sim->bp.n * sizeof(double));
@@ -91,8 +91,8 @@ static void reset_forces(gb_sim *sim)
 void gb_gem_forces(gb_sim *sim)
 {
     reset_forces(sim);
-    for (int k = 0; k < sim->pairs.n; k++)
-        if (sim->pairs.p[k].d > 0) gb_gem_add_contact(sim, &sim->pairs.p[k], 1);
+    for (int k = 0; k < sim->state.pairs.n; k++)
+        if (sim->state.pairs.p[k].d > 0) gb_gem_add_contact(sim, &sim->state.pairs.p[k], 1);
 }
 
 /* Solves the symmetric 2x2 system [a b; b c] x = f, or returns 0 if it is singular. */
@@ -174,7 +174,7 @@ void gb_gem_grain_move(const gb_sim *sim, int i, double dX[3])
 double gb_gem_fixing_work(const gb_sim *sim)
 {
     double w = 0;
-    for (int k = 0; k < 3 * sim->n; k++) w += sim->scratch.F[k] * sim->scratch.dX[k];
+    for (int k = 0; k < 3 * sim->state.n; k++) w += sim->scratch.F[k] * sim->scratch.dX[k];
     return w;
 }
 
@@ -183,9 +183,9 @@ double gb_gem_wall_moves(gb_sim *sim, const gb_wall_control *wc)
 {
     memset(sim->scratch.wall_dx, 0, sizeof sim->scratch.wall_dx);
     if (wc->mode == GB_WALLS_FIXED) return 0;
-    const gb_box *b = &sim->box;
+    const gb_box *b = &sim->state.box;
     double W = b->right - b->left, H = b->top - b->bottom;
-    const double *f = sim->wall_force, *k = sim->scratch.wall_k;
+    const double *f = sim->state.wall_force, *k = sim->scratch.wall_k;
     /* A wall that touches nothing moves as if it had one grain-wall contact. */
     double kmin = sim->scene->grain_wall.kn;
     double dy, dx, residual;
@@ -222,8 +222,8 @@ double gb_gem_wall_moves(gb_sim *sim, const gb_wall_control *wc)
  * rebuilds the pair list if it may miss a contact now. */
 static gb_status move_bodies(gb_sim *sim, gb_error *err)
 {
-    for (int i = 0; i < sim->n; i++) {
-        gb_grain *g = &sim->g[i];
+    for (int i = 0; i < sim->state.n; i++) {
+        gb_grain *g = &sim->state.g[i];
         const double *d = &sim->scratch.dX[3 * i];
         g->x += d[0];
         g->y += d[1];
@@ -232,11 +232,11 @@ static gb_status move_bodies(gb_sim *sim, gb_error *err)
     for (int e = 0; e < sim->bp.n; e++) {
         sim->bp.x[e] += sim->bp.dx[2 * e];
         sim->bp.y[e] += sim->bp.dx[2 * e + 1];
-        sim->host->u[2 * e] += sim->bp.dx[2 * e];
-        sim->host->u[2 * e + 1] += sim->bp.dx[2 * e + 1];
+        sim->state.host.u[2 * e] += sim->bp.dx[2 * e];
+        sim->state.host.u[2 * e + 1] += sim->bp.dx[2 * e + 1];
     }
-    if (sim->host) gb_host_update_force(sim->host);
-    gb_box *b = &sim->box;
+    if (sim->host) gb_host_update_force(sim->host, &sim->state.host);
+    gb_box *b = &sim->state.box;
     b->left += sim->scratch.wall_dx[GB_WALL_LEFT][0];
     b->right += sim->scratch.wall_dx[GB_WALL_RIGHT][0];
     b->bottom += sim->scratch.wall_dx[GB_WALL_BOTTOM][1];
@@ -245,7 +245,9 @@ static gb_status move_bodies(gb_sim *sim, gb_error *err)
         return gb_fail(err, GB_ENUMERIC, "the box turned inside out (width %g, height %g): the load step is too "
                        "large for these springs", b->right - b->left, b->top - b->bottom);
     double t0 = gb_clock_seconds();
-    gb_status st = gb_pairs_stale(&sim->pairs, &sim->world) ? gb_pairs_rebuild(&sim->pairs, &sim->world, err) : GB_OK;
+    gb_status st = gb_pairs_stale(&sim->state.pairs, &sim->search, &sim->world)
+                       ? gb_pairs_rebuild(&sim->state.pairs, &sim->search, &sim->world, err)
+                       : GB_OK;
     sim->detect_seconds += gb_clock_seconds() - t0;
     return st;
 }
@@ -256,9 +258,9 @@ static void account_move(gb_sim *sim, double diss, const double before[GB_N_WALL
 {
     double inward[GB_N_WALLS] = {sim->scratch.wall_dx[GB_WALL_LEFT][0], -sim->scratch.wall_dx[GB_WALL_RIGHT][0],
                                  sim->scratch.wall_dx[GB_WALL_BOTTOM][1], -sim->scratch.wall_dx[GB_WALL_TOP][1]};
-    for (int w = 0; w < GB_N_WALLS; w++) sim->acc.work_walls_iter += 0.5 * (before[w] + after[w]) * inward[w];
-    sim->acc.dissipation += diss;
-    sim->acc.dissipation_step += diss;
+    for (int w = 0; w < GB_N_WALLS; w++) sim->state.acc.work_walls_iter += 0.5 * (before[w] + after[w]) * inward[w];
+    sim->state.acc.dissipation += diss;
+    sim->state.acc.dissipation_step += diss;
 }
 
 /* Updates every pair to the moved bodies (K 6, 13, 25), the energy each dissipated into
@@ -268,13 +270,13 @@ static void account_move(gb_sim *sim, double diss, const double before[GB_N_WALL
  * is about half of a smoother step's time (src/solver/inertial.c). */
 static gb_status update_pairs(gb_sim *sim, gb_error *err)
 {
-    int n = sim->pairs.n;
+    int n = sim->state.pairs.n;
     if (n > sim->scratch.pair_diss_cap) {
-        double *d = realloc(sim->scratch.pair_diss, (size_t)sim->pairs.cap * sizeof(double));
-        if (!d) return gb_fail(err, GB_ENOMEM, "out of memory for %d pairs", sim->pairs.cap);
-        sim->scratch.pair_diss = d, sim->scratch.pair_diss_cap = sim->pairs.cap;
+        double *d = realloc(sim->scratch.pair_diss, (size_t)sim->state.pairs.cap * sizeof(double));
+        if (!d) return gb_fail(err, GB_ENOMEM, "out of memory for %d pairs", sim->state.pairs.cap);
+        sim->scratch.pair_diss = d, sim->scratch.pair_diss_cap = sim->state.pairs.cap;
     }
-    gb_pair *P = sim->pairs.p;
+    gb_pair *P = sim->state.pairs.p;
     double *diss = sim->scratch.pair_diss;
     const double *dX = sim->scratch.dX, *wall_dx = &sim->scratch.wall_dx[0][0];
     const gb_world *w = &sim->world;
@@ -291,30 +293,30 @@ gb_status gb_gem_apply_moves(gb_sim *sim, gb_error *err)
     if (!st) st = update_pairs(sim, err);
     if (st) return st;
     double diss = 0, wall_after[GB_N_WALLS] = {0, 0, 0, 0};
-    for (int k = 0; k < sim->pairs.n; k++) {
-        const gb_pair *p = &sim->pairs.p[k];
+    for (int k = 0; k < sim->state.pairs.n; k++) {
+        const gb_pair *p = &sim->state.pairs.p[k];
         diss += sim->scratch.pair_diss[k];
         if (p->j < 0 && !GB_IS_PARTICLE(p->j)) wall_after[-1 - p->j] += p->pn;
     }
-    account_move(sim, diss, sim->wall_force, wall_after);
+    account_move(sim, diss, sim->state.wall_force, wall_after);
     return GB_OK;
 }
 
 gb_status gb_gem_move_and_forces(gb_sim *sim, gb_error *err)
 {
     double wall_before[GB_N_WALLS];
-    memcpy(wall_before, sim->wall_force, sizeof wall_before);
+    memcpy(wall_before, sim->state.wall_force, sizeof wall_before);
     gb_status st = move_bodies(sim, err);
     if (!st) st = update_pairs(sim, err);
     if (st) return st;
     reset_forces(sim);
     double diss = 0;
-    for (int k = 0; k < sim->pairs.n; k++) {
-        const gb_pair *p = &sim->pairs.p[k];
+    for (int k = 0; k < sim->state.pairs.n; k++) {
+        const gb_pair *p = &sim->state.pairs.p[k];
         diss += sim->scratch.pair_diss[k];
         if (p->d > 0) gb_gem_add_contact(sim, p, 1);
     }
-    account_move(sim, diss, wall_before, sim->wall_force);
+    account_move(sim, diss, wall_before, sim->state.wall_force);
     return GB_OK;
 }
 
@@ -324,7 +326,7 @@ gb_status gb_gem_move_and_forces(gb_sim *sim, gb_error *err)
 double gb_gem_merit(const gb_sim *sim, const unsigned char *in_system, double wall_residual)
 {
     double m = wall_residual * wall_residual;
-    for (int i = 0; i < sim->n; i++)
+    for (int i = 0; i < sim->state.n; i++)
         if (in_system[i])
             for (int k = 3 * i; k < 3 * i + 3; k++) m += sim->scratch.F[k] * sim->scratch.F[k];
     return gb_gem_particle_merit(sim, m);
@@ -342,7 +344,7 @@ static double nan_max(double a, double b) { return a > b || a != a ? a : b; }
 double gb_gem_largest_grain_force2(const gb_sim *sim)
 {
     double max2 = 0;
-    for (int i = 0; i < sim->n; i++) max2 = nan_max(gb_gem_force2(sim, i), max2);
+    for (int i = 0; i < sim->state.n; i++) max2 = nan_max(gb_gem_force2(sim, i), max2);
     return max2;
 }
 
@@ -364,8 +366,8 @@ int gb_gem_balance(gb_sim *sim, const gb_wall_control *wc, double *max_force, do
     /* Energy absorbed by the fixing forces (the "hand" that holds each grain) over a move, by the
      * trapezoid rule: the springs' energy changes by sum (F + B).dX + walls' work - dissipation,
      * so -sum F.dX is what the quasi-static iteration loses where a dynamic system would damp. */
-    if (sim->acc.half_pending) sim->acc.relaxation -= 0.5 * gb_gem_fixing_work(sim);
-    sim->acc.half_pending = 0;
+    if (sim->state.acc.half_pending) sim->state.acc.relaxation -= 0.5 * gb_gem_fixing_work(sim);
+    sim->state.acc.half_pending = 0;
     *wall_residual = gb_gem_wall_moves(sim, wc);
     if (!isfinite(*max_force) || !isfinite(*wall_residual)) {
         *st = gb_fail(err, GB_ENUMERIC, "a fixing force became non-finite");
@@ -381,10 +383,10 @@ int gb_gem_balance(gb_sim *sim, const gb_wall_control *wc, double *max_force, do
 
 gb_status gb_gem_reference_move(gb_sim *sim, gb_error *err)
 {
-    int n = sim->n, threads = sim->scene->solver.threads;
+    int n = sim->state.n, threads = sim->scene->solver.threads;
 #pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1 && n >= GB_PARALLEL_GRAINS)
     for (int i = 0; i < n; i++) gb_gem_grain_move(sim, i, &sim->scratch.dX[3 * i]);
-    sim->acc.relaxation -= 0.5 * gb_gem_fixing_work(sim);
-    sim->acc.half_pending = 1;
+    sim->state.acc.relaxation -= 0.5 * gb_gem_fixing_work(sim);
+    sim->state.acc.half_pending = 1;
     return gb_gem_apply_moves(sim, err);
 }

@@ -15,16 +15,17 @@ static const double PI = 3.14159265358979323846;
 void gb_gem_problem_free(gb_sim *sim)
 {
     if (!sim) return;
-    free(sim->g);
+    sim->bp.x = sim->bp.y = NULL; /* the state's */
+    gb_state_free(&sim->state);
     free(sim->body);
     free(sim->scratch.F);
     free(sim->scratch.S);
     free(sim->scratch.dX);
     free(sim->scratch.nc);
     free(sim->scratch.one);
-    gb_sim_state_free(&sim->saved);
-    gb_sim_state_free(&sim->substep);
-    gb_pairs_free(&sim->pairs);
+    gb_state_free(&sim->saved);
+    gb_state_free(&sim->substep);
+    gb_pair_search_free(&sim->search);
     gb_host_free(sim->host);
     gb_particles_free(&sim->bp);
     free(sim->scratch.bp_F), free(sim->scratch.bp_S);
@@ -35,7 +36,7 @@ void gb_gem_problem_free(gb_sim *sim)
 static int pair_cmp(const gb_pair *p, int i, int j) { return p->i != i ? (p->i > i) - (p->i < i) : (p->j > j) - (p->j < j); }
 
 /* The pair (i, j) in the sorted list, or NULL. */
-static gb_pair *find_pair(gb_pair_list *L, int i, int j)
+static gb_pair *find_pair(gb_pair_set *L, int i, int j)
 {
     int lo = 0, hi = L->n - 1;
     while (lo <= hi) {
@@ -54,10 +55,16 @@ static gb_status add_host(gb_sim *sim, gb_error *err)
 {
     gb_status st = gb_host_create(&sim->scene->host, &sim->host, err);
     if (st) return st;
-    const gb_host *h = sim->host;
+    gb_host *h = sim->host;
+    gb_state *s = &sim->state;
     int m = h->m / 2;
     gb_particles *bp = &sim->bp;
     if ((st = gb_particles_create(bp, &h->mesh, h->K.elem, m, err))) return st;
+    /* the particles' centres are the state's: bp->x, bp->y point into it */
+    s->n_particles = m;
+    s->bp_x = bp->x, s->bp_y = bp->y;
+    if ((st = gb_host_vars_create(h, &s->host, err))) return st;
+    s->host_m = h->m;
     sim->scratch.bp_F = calloc(2 * (size_t)m, sizeof(double));
     sim->scratch.bp_S = calloc(3 * (size_t)m, sizeof(double));
     if (!sim->scratch.bp_F || !sim->scratch.bp_S) return gb_fail(err, GB_ENOMEM, "out of memory for %d boundary particles", m);
@@ -66,19 +73,18 @@ static gb_status add_host(gb_sim *sim, gb_error *err)
      * particles set, so that f0 and the force are the ones the run had. */
     const gb_host_state *hs = &sim->scene->restart.host;
     if (hs->present) {
-        gb_host *hw = sim->host;
         if (hs->n_cavity != m)
             return gb_fail(err, GB_EINPUT, "%s: the state's host has %d cavity elements, the scene's %d",
                            sim->scene->path, hs->n_cavity, m);
         for (int k = 0; k < sim->scene->host.n_bcs; k++) {
-            int g = gb_bem_mesh_group(&hw->mesh, sim->scene->host.bc_group[k]);
-            hw->prob.bc[g].value[0] = hs->bc[k].value[0], hw->prob.bc[g].value[1] = hs->bc[k].value[1];
+            int g = gb_bem_mesh_group(&h->mesh, sim->scene->host.bc_group[k]);
+            s->host.bc[g][0] = hs->bc[k].value[0], s->host.bc[g][1] = hs->bc[k].value[1];
         }
-        if (hw->mesh.unbounded) memcpy(hw->prob.remote_stress, hs->remote_stress, sizeof hw->prob.remote_stress);
-        memcpy(hw->u, hs->u, 2 * (size_t)m * sizeof(double));
+        if (h->mesh.unbounded) memcpy(s->host.remote, hs->remote_stress, sizeof s->host.remote);
+        memcpy(s->host.u, hs->u, 2 * (size_t)m * sizeof(double));
         for (int k = 0; k < m; k++) bp->x[k] = hs->xy[2 * k], bp->y[k] = hs->xy[2 * k + 1];
-        gb_host_update_f0(hw);
     }
+    gb_host_update_f0(h, &s->host);
     /* that every grain lies in the cavity was checked when the scene was read (src/scene/admit.c) */
     sim->world.box = NULL;
     sim->world.bp = bp;
@@ -113,47 +119,50 @@ gb_status gb_gem_problem_create(const gb_scene *scene, gb_sim **out, gb_error *e
     int n = scene->n_grains;
     size_t nn = (size_t)(n > 0 ? n : 1);
     sim->scene = scene;
-    sim->n = n;
-    sim->g = malloc(nn * sizeof *sim->g);
+    gb_status st = gb_state_alloc(&sim->state, n, 0, 0, 0, err);
+    if (st) {
+        free(sim);
+        return st;
+    }
     sim->body = malloc(nn * 2 * sizeof(double));
     sim->scratch.F = calloc(nn * 3, sizeof(double));
     sim->scratch.S = calloc(nn * 6, sizeof(double));
     sim->scratch.dX = calloc(nn * 3, sizeof(double));
     sim->scratch.nc = calloc(nn, sizeof(int));
     sim->scratch.one = calloc(nn * GB_ONE, sizeof(double));
-    if (!sim->g || !sim->body || !sim->scratch.F || !sim->scratch.S || !sim->scratch.dX || !sim->scratch.nc || !sim->scratch.one) {
+    if (!sim->body || !sim->scratch.F || !sim->scratch.S || !sim->scratch.dX || !sim->scratch.nc || !sim->scratch.one) {
         gb_gem_problem_free(sim);
         return gb_fail(err, GB_ENOMEM, "out of memory for %d grains", n);
     }
-    memcpy(sim->g, scene->grains, (size_t)n * sizeof *sim->g);
+    memcpy(sim->state.g, scene->grains, (size_t)n * sizeof *sim->state.g);
     double rsum = 0;
     for (int i = 0; i < n; i++) {
-        double area = PI * sim->g[i].r * sim->g[i].r;
+        double area = PI * sim->state.g[i].r * sim->state.g[i].r;
         sim->body[2 * i] = scene->body_force_per_area[0] * area;
         sim->body[2 * i + 1] = scene->body_force_per_area[1] * area;
-        rsum += sim->g[i].r;
+        rsum += sim->state.g[i].r;
     }
-    sim->box = scene->box;
+    sim->state.box = scene->box;
     sim->ref_width = scene->box.right - scene->box.left;
     sim->ref_height = scene->box.top - scene->box.bottom;
     sim->tan_phi_gg = tan(scene->grain_grain.friction_deg * PI / 180);
     sim->tan_phi_gw = tan(scene->grain_wall.friction_deg * PI / 180);
     sim->tan_phi_gb = tan(scene->grain_boundary.friction_deg * PI / 180);
     /* The skin trades list length against rebuilds; a fifth of the mean radius keeps both small. */
-    sim->pairs.skin = 0.2 * rsum / n;
-    sim->world.g = sim->g;
+    sim->search.skin = 0.2 * rsum / n;
+    sim->world.g = sim->state.g;
     sim->world.n = n;
-    sim->world.box = &sim->box;
+    sim->world.box = &sim->state.box;
     sim->world.bp = NULL;
-    gb_status st = scene->host.present ? add_host(sim, err) : GB_OK;
-    if (!st) st = gb_pairs_rebuild(&sim->pairs, &sim->world, err);
+    st = scene->host.present ? add_host(sim, err) : GB_OK;
+    if (!st) st = gb_pairs_rebuild(&sim->state.pairs, &sim->search, &sim->world, err);
     if (st) {
         gb_gem_problem_free(sim);
         return st;
     }
     /* Initial contacts: pn from the overlap, pt from the scene. */
-    for (int k = 0; k < sim->pairs.n; k++) {
-        gb_pair *p = &sim->pairs.p[k];
+    for (int k = 0; k < sim->state.pairs.n; k++) {
+        gb_pair *p = &sim->state.pairs.p[k];
         gb_pair_geometry(p, &sim->world);
         p->pn = p->d > 0 ? gb_sim_material(sim, p->j)->kn * p->d : 0;
         p->pt = p->mr = 0;
@@ -162,7 +171,7 @@ gb_status gb_gem_problem_create(const gb_scene *scene, gb_sim **out, gb_error *e
         const gb_contact_init *ci = &scene->restart.contacts[c];
         int i = ci->i, j = ci->j;
         if (j >= 0 && j < i) i = ci->j, j = ci->i;
-        gb_pair *p = find_pair(&sim->pairs, i, j);
+        gb_pair *p = find_pair(&sim->state.pairs, i, j);
         if (!p || !(p->d > 0)) {
             gb_gem_problem_free(sim);
             if (GB_IS_PARTICLE(ci->j))
@@ -177,21 +186,21 @@ gb_status gb_gem_problem_create(const gb_scene *scene, gb_sim **out, gb_error *e
         if (!(gb_sim_material(sim, p->j)->kr > 0)) p->mr = 0; /* rolling switched off: no moment */
     }
     /* the accuracy of a relaxation run outside gb_sim_run (benchmarks, tests): as for a first step */
-    gb_sim_resolve_accuracy(sim, sim->pairs.p, sim->pairs.n, 0);
+    gb_sim_resolve_accuracy(sim, sim->state.pairs.p, sim->state.pairs.n, 0);
     *out = sim;
     return GB_OK;
 }
 
 const gb_scene *gb_sim_scene(const gb_sim *sim) { return sim->scene; }
-int gb_sim_n_grains(const gb_sim *sim) { return sim->n; }
-const gb_grain *gb_sim_grains(const gb_sim *sim) { return sim->g; }
-gb_box gb_sim_box(const gb_sim *sim) { return sim->box; }
+int gb_sim_n_grains(const gb_sim *sim) { return sim->state.n; }
+const gb_grain *gb_sim_grains(const gb_sim *sim) { return sim->state.g; }
+gb_box gb_sim_box(const gb_sim *sim) { return sim->state.box; }
 
 int gb_sim_contacts(const gb_sim *sim, gb_contact *out, int cap)
 {
     int m = 0;
-    for (int k = 0; k < sim->pairs.n; k++) {
-        const gb_pair *p = &sim->pairs.p[k];
+    for (int k = 0; k < sim->state.pairs.n; k++) {
+        const gb_pair *p = &sim->state.pairs.p[k];
         if (!(p->d > 0)) continue;
         if (out && m < cap) {
             gb_contact c = {p->i, p->j, p->nx, p->ny, p->d, p->pn, p->pt, p->diss, p->mr};
@@ -205,8 +214,8 @@ int gb_sim_contacts(const gb_sim *sim, gb_contact *out, int cap)
 double gb_sim_elastic_energy(const gb_sim *sim)
 {
     double e = 0;
-    for (int k = 0; k < sim->pairs.n; k++) {
-        const gb_pair *p = &sim->pairs.p[k];
+    for (int k = 0; k < sim->state.pairs.n; k++) {
+        const gb_pair *p = &sim->state.pairs.p[k];
         if (!(p->d > 0)) continue;
         const gb_material *m = gb_sim_material(sim, p->j);
         e += gb_spring_energy(p->pn, p->pt, p->mr, m); /* (K 22) */
@@ -244,7 +253,7 @@ int gb_sim_host_dofs(const gb_sim *sim) { return sim->host ? sim->host->m : 0; }
 void gb_sim_host_cavity(const gb_sim *sim, double *u, double *force, double *fixing)
 {
     size_t m = (size_t)gb_sim_host_dofs(sim) * sizeof(double);
-    if (u && m) memcpy(u, sim->host->u, m);
+    if (u && m) memcpy(u, sim->state.host.u, m);
     if (force && m) memcpy(force, sim->host->force, m);
     if (fixing && m) memcpy(fixing, sim->scratch.bp_F, m);
 }
@@ -253,20 +262,20 @@ gb_status gb_sim_host_group_force(const gb_sim *sim, const char *group, double f
                                   gb_error *err)
 {
     if (!sim->host) return gb_fail(err, GB_EINPUT, "the simulation has no host");
-    return gb_host_group_force(sim->host, group, force, disp, err);
+    return gb_host_group_force(sim->host, &sim->state.host, group, force, disp, err);
 }
 
 void gb_gem_stress(const gb_sim *sim, double *s1, double *s2)
 {
     /* (K section 4.1): the forces on the two walls of a direction over twice the other side. */
-    const gb_box *b = &sim->box;
-    *s1 = (sim->wall_force[GB_WALL_BOTTOM] + sim->wall_force[GB_WALL_TOP]) / (2 * (b->right - b->left));
-    *s2 = (sim->wall_force[GB_WALL_LEFT] + sim->wall_force[GB_WALL_RIGHT]) / (2 * (b->top - b->bottom));
+    const gb_box *b = &sim->state.box;
+    *s1 = (sim->state.wall_force[GB_WALL_BOTTOM] + sim->state.wall_force[GB_WALL_TOP]) / (2 * (b->right - b->left));
+    *s2 = (sim->state.wall_force[GB_WALL_LEFT] + sim->state.wall_force[GB_WALL_RIGHT]) / (2 * (b->top - b->bottom));
 }
 
 void gb_gem_strain(const gb_sim *sim, double *e1, double *e2)
 {
-    const gb_box *b = &sim->box;
+    const gb_box *b = &sim->state.box;
     *e1 = (sim->ref_height - (b->top - b->bottom)) / sim->ref_height;
     *e2 = (sim->ref_width - (b->right - b->left)) / sim->ref_width;
 }

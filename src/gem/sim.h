@@ -36,23 +36,29 @@ typedef struct {
     double *bp_S;       /* its contact stiffness: s00 s01 s11 */
 } gb_sim_scratch;
 
-/* A copy of everything an iteration changes: grains, contacts, walls, accounts and the host. */
+/* The live state of a simulation: everything that iterations and load steps change, and nothing
+ * they recompute from it (forces and stiffnesses: gb_sim_scratch; the host's force K u + f0:
+ * gb_host). A rejected trial or a failed step goes back to a copy (gb_state_copy); a checkpoint
+ * writes it (src/io/checkpoint.c). Every array is the state's own. */
 typedef struct {
+    int n;                    /* grains */
     gb_grain *g;
-    gb_pair *p;
-    int n_pairs, cap;
-    double *x0;          /* the pair list's rebuild positions */
-    gb_box box, box0;
-    long rebuilds, generation;
-    double wall_force[GB_N_WALLS];
+    gb_pair_set pairs;        /* candidate pairs with their contacts' forces, and where they were found */
+    gb_box box;               /* the walls */
+    double wall_force[GB_N_WALLS]; /* normal force of the grains on each wall (compression +) */
+    int n_particles;          /* boundary particles (none without a host) */
+    double *bp_x, *bp_y;      /* their centres (a simulation's sim->bp.x, .y point here) */
+    int host_m;               /* the host's cavity DOFs (0 without a host) */
+    gb_host_vars host;        /* its cavity displacements and loads */
     gb_iteration_accounts acc;
-    double *bp_xy;       /* boundary particles' centres, 2 per particle */
-    double *px0;         /* and at the pair list's rebuild */
-    double *host_u;      /* the host's cavity displacements */
-    double *host_f0;     /* and its f0, which follows the host's prescribed boundary values */
-    double host_bc[GB_BEM_MAX_GROUPS][2];
-    double host_remote[3];
-} gb_sim_state;
+} gb_state;
+
+/* The arrays of a state of n grains, np particles and m host DOFs, with room for `pairs` pairs. */
+gb_status gb_state_alloc(gb_state *s, int n, int np, int m, int pairs, gb_error *err);
+/* dst = src, allocating dst's arrays if it has none (gb_state_alloc) and growing its pair list if
+ * short; copying into a state with the sizes and room needs no memory and cannot fail. */
+gb_status gb_state_copy(gb_state *dst, const gb_state *src, gb_error *err);
+void gb_state_free(gb_state *s);
 
 /* Where gb_sim_run stands: the last completed load step (a checkpoint's place in the program; one
  * taken within a step holds that step in sim->cur too). */
@@ -94,23 +100,20 @@ static inline long gb_sim_step_iterations(const gb_sim_step *c) { return c->iter
  * (src/io/checkpoint.c): a field added here that outlives an iteration belongs there too. */
 struct gb_sim {
     const gb_scene *scene;
-    int n;
-    gb_grain *g;
+    gb_state state;     /* what iterations and load steps change */
     double *body;       /* B per grain: bx, by */
-    gb_pair_list pairs;
+    gb_pair_search search; /* how the state's pairs are found */
     gb_world world;     /* what the grains touch: themselves, the box's walls, boundary particles */
-    gb_particles bp;    /* boundary particles (none without a host) */
-    gb_host *host;      /* the elastic host of a hybrid scene, or NULL */
+    gb_particles bp;    /* boundary particles (none without a host): their centres are the state's */
+    gb_host *host;      /* the elastic host of a hybrid scene, or NULL (its vars are the state's) */
     gb_sim_scratch scratch; /* an iteration's forces, stiffnesses and moves */
     struct gb_solver *solver; /* how it is solved (src/solver: the only code that looks inside) */
-    gb_box box;
-    double wall_force[GB_N_WALLS]; /* normal force of the grains on each wall (compression +) */
     double ref_width, ref_height;  /* strain reference */
     double tan_phi_gg, tan_phi_gw, tan_phi_gb;
     /* The last converged state (the start of the current step), restored when a step fails. */
-    gb_sim_state saved;
+    gb_state saved;
     /* The start of a sub-step of a load step being cut back (gb_sim_run). */
-    gb_sim_state substep;
+    gb_state substep;
     long iterations_total;    /* of the load steps completed */
     gb_iteration_fn on_iteration; /* solver.history */
     void *on_iteration_user;
@@ -122,7 +125,6 @@ struct gb_sim {
     double work_walls;        /* done by the walls: quasi-static, from converged steps' forces */
     double work_body;         /* done by the body forces */
     double energy0;           /* elastic energy of the initial state */
-    gb_iteration_accounts acc; /* those that iterations change */
     gb_sim_position pos;
     gb_sim_step cur;          /* the load step in progress */
     gb_run_profile profile;   /* the loop's phases (src/run/program.c) */
@@ -146,9 +148,11 @@ static inline gb_solver_work gb_solver_work_minus(gb_solver_work a, gb_solver_wo
 gb_status gb_gem_problem_create(const gb_scene *scene, gb_sim **out, gb_error *err);
 void gb_gem_problem_free(gb_sim *sim);
 
-gb_status gb_sim_state_save(const gb_sim *sim, gb_sim_state *st, gb_error *err);
-void gb_sim_state_restore(gb_sim *sim, const gb_sim_state *st);
-void gb_sim_state_free(gb_sim_state *st);
+/* A copy of the simulation's state into st (allocated at the first save). */
+gb_status gb_sim_state_save(const gb_sim *sim, gb_state *st, gb_error *err);
+/* The simulation's state back to a copy made by gb_sim_state_save (or read from a checkpoint, with
+ * room for its pairs): no memory needed, the host's force updated. */
+void gb_sim_state_restore(gb_sim *sim, const gb_state *st);
 
 /* The largest squared fixing force of a grain, and of a boundary particle (0 without a host or
  * with a rigid one); NaN if one is NaN. */

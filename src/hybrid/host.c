@@ -12,7 +12,6 @@ void gb_host_free(gb_host *h)
     gb_bem_system_free(&h->sys);
     gb_bem_mesh_free(&h->mesh);
     free(h->Ksym);
-    free(h->u);
     free(h->force);
     free(h->loads);
     free(h->load0);
@@ -70,29 +69,60 @@ gb_status gb_host_create(const gb_host_def *def, gb_host **out, gb_error *err)
     }
     int m = h->m = h->K.m;
     h->Ksym = malloc((size_t)m * m * sizeof(double));
-    h->u = calloc((size_t)m, sizeof(double));
     h->force = calloc((size_t)m, sizeof(double));
-    if (!h->Ksym || !h->u || !h->force) {
+    if (!h->Ksym || !h->force) {
         gb_host_free(h);
         return gb_fail(err, GB_ENOMEM, "out of memory for the host stiffness");
     }
     for (int c = 0; c < m; c++)
         for (int r = 0; r < m; r++) h->Ksym[r + (size_t)c * m] = 0.5 * (h->K.K[r + (size_t)c * m] + h->K.K[c + (size_t)r * m]);
-    gb_host_update_force(h);
+    memcpy(h->force, h->K.f0, (size_t)m * sizeof(double)); /* u = 0 */
     *out = h;
     return GB_OK;
 }
 
-void gb_host_update_force(gb_host *h)
+gb_status gb_host_vars_create(const gb_host *h, gb_host_vars *v, gb_error *err)
 {
-    memcpy(h->force, h->K.f0, (size_t)h->m * sizeof(double));
-    cblas_dgemv(CblasColMajor, CblasNoTrans, h->m, h->m, 1.0, h->K.K, h->m, h->u, 1, 1.0, h->force, 1);
+    memset(v, 0, sizeof *v);
+    size_t m = (size_t)(h->m > 0 ? h->m : 1);
+    v->u = calloc(m, sizeof(double));
+    v->f0 = malloc(m * sizeof(double));
+    if (!v->u || !v->f0) {
+        gb_host_vars_free(v);
+        return gb_fail(err, GB_ENOMEM, "out of memory for the host's displacements");
+    }
+    memcpy(v->f0, h->K.f0, (size_t)h->m * sizeof(double));
+    for (int g = 0; g < GB_BEM_MAX_GROUPS; g++)
+        v->bc[g][0] = h->prob.bc[g].value[0], v->bc[g][1] = h->prob.bc[g].value[1];
+    memcpy(v->remote, h->prob.remote_stress, sizeof v->remote);
+    return GB_OK;
 }
 
-gb_status gb_host_solve(const gb_host *h, gb_bem_solution *sol, gb_error *err)
+void gb_host_vars_free(gb_host_vars *v)
+{
+    free(v->u), free(v->f0);
+    memset(v, 0, sizeof *v);
+}
+
+void gb_host_update_force(gb_host *h, const gb_host_vars *v)
+{
+    memcpy(h->force, v->f0, (size_t)h->m * sizeof(double));
+    cblas_dgemv(CblasColMajor, CblasNoTrans, h->m, h->m, 1.0, h->K.K, h->m, v->u, 1, 1.0, h->force, 1);
+}
+
+gb_bem_problem gb_host_problem(const gb_host *h, const gb_host_vars *v)
+{
+    gb_bem_problem p = h->prob;
+    for (int g = 0; g < GB_BEM_MAX_GROUPS; g++) p.bc[g].value[0] = v->bc[g][0], p.bc[g].value[1] = v->bc[g][1];
+    memcpy(p.remote_stress, v->remote, sizeof p.remote_stress);
+    return p;
+}
+
+gb_status gb_host_solve(const gb_host *h, const gb_host_vars *v, gb_bem_solution *sol, gb_error *err)
 {
     memset(sol, 0, sizeof *sol);
-    return gb_bem_solve_group_displacement(&h->mesh, &h->sys, &h->prob, h->cavity, h->u, NULL, sol, err);
+    gb_bem_problem p = gb_host_problem(h, v);
+    return gb_bem_solve_group_displacement(&h->mesh, &h->sys, &p, h->cavity, v->u, NULL, sol, err);
 }
 
 void gb_host_group_sum(const gb_host *h, const gb_bem_solution *sol, int g, double force[2], double disp[2])
@@ -109,12 +139,13 @@ void gb_host_group_sum(const gb_host *h, const gb_bem_solution *sol, int g, doub
     if (len > 0) disp[0] /= len, disp[1] /= len;
 }
 
-gb_status gb_host_group_force(const gb_host *h, const char *group, double force[2], double disp[2], gb_error *err)
+gb_status gb_host_group_force(const gb_host *h, const gb_host_vars *v, const char *group, double force[2],
+                              double disp[2], gb_error *err)
 {
     int g = gb_bem_mesh_group(&h->mesh, group);
     if (g < 0) return gb_fail(err, GB_EINPUT, "host: no group '%s'", group);
     gb_bem_solution sol;
-    gb_status st = gb_host_solve(h, &sol, err);
+    gb_status st = gb_host_solve(h, v, &sol, err);
     if (!st) gb_host_group_sum(h, &sol, g, force, disp);
     gb_bem_solution_free(&sol);
     return st;

@@ -15,16 +15,24 @@ typedef struct {
     int comp;  /* value[comp] of the group's condition, or remote_stress[comp] */
 } gb_host_load;
 
+/* What loading and iterations change in a host: a simulation's state holds it (src/gem/sim.h's
+ * gb_state), the host (below) what stays. */
+typedef struct {
+    double *u;     /* cavity element displacements, m */
+    double *f0;    /* the loads' part of the cavity force F = K u + f0, m (linear in bc and remote) */
+    double bc[GB_BEM_MAX_GROUPS][2]; /* each group's condition values now */
+    double remote[3];                /* the remote stress now (an unbounded host) */
+} gb_host_vars;
+
 typedef struct {
     gb_bem_mesh mesh;
     gb_bem_system sys;
-    gb_bem_problem prob;  /* the current boundary values and remote stress */
+    gb_bem_problem prob;  /* the conditions, with their values at creation (now: gb_host_vars) */
     gb_bem_stiffness K;  /* on the cavity group, in its element order */
     double *Ksym;        /* (K + K^t)/2, for the symmetric (CHOLMOD) solve */
     int cavity;          /* the cavity's group index */
     int m;               /* 2 x cavity elements */
-    double *u;           /* element displacements, m */
-    double *force;       /* K u + f0, m */
+    double *force;       /* K u + f0 of the vars last passed to gb_host_update_force, m */
     /* f0 is linear in the loads: f0 = f0_base + sum_j (value_j - load0_j) f0_unit_j, so a load step
      * costs O(m n_loads) instead of a condensation. */
     int n_loads;
@@ -42,27 +50,33 @@ typedef struct {
  * (one factorisation); refuses a mesh or a condition it cannot use (GB_EINPUT). */
 gb_status gb_host_create(const gb_host_def *def, gb_host **out, gb_error *err);
 void gb_host_free(gb_host *h);
+/* The vars of the host as created: u = 0, f0 and the values at creation. */
+gb_status gb_host_vars_create(const gb_host *h, gb_host_vars *v, gb_error *err);
+void gb_host_vars_free(gb_host_vars *v);
 /* force = K u + f0 */
-void gb_host_update_force(gb_host *h);
+void gb_host_update_force(gb_host *h, const gb_host_vars *v);
 /* Condenses the host on its cavity (h->K) and the unit responses of f0 (src/hybrid/host_load.c). */
 gb_status gb_host_condense(gb_host *h, gb_error *err);
-/* f0 from the current loads (prob's values and remote stress), then the force. */
-void gb_host_update_f0(gb_host *h);
+/* f0 from the loads' values now (v->bc, v->remote), then the force. */
+void gb_host_update_f0(gb_host *h, gb_host_vars *v);
 /* Number of values of a group's condition that loading may change: 2 (displacement, traction,
  * component-wise), 1 (pressure, normal displacement) or 0 (fixed, free, the cavity). */
 int gb_host_group_values(const gb_host *h, int group);
 /* Adds increments to a group's condition values (inc[0..n), n = gb_host_group_values), or to the
  * remote stress of an unbounded host (sxx, syy, sxy), then updates f0 and the force. */
-gb_status gb_host_add_load(gb_host *h, const char *group, const double inc[2], gb_error *err);
-gb_status gb_host_add_remote(gb_host *h, const double remote_inc[3], gb_error *err);
-/* The host's whole boundary state for the current cavity displacements (one solve). */
-gb_status gb_host_solve(const gb_host *h, gb_bem_solution *sol, gb_error *err);
+gb_status gb_host_add_load(gb_host *h, gb_host_vars *v, const char *group, const double inc[2], gb_error *err);
+gb_status gb_host_add_remote(gb_host *h, gb_host_vars *v, const double remote_inc[3], gb_error *err);
+/* The conditions with the values of v. */
+gb_bem_problem gb_host_problem(const gb_host *h, const gb_host_vars *v);
+/* The host's whole boundary state for the cavity displacements and loads of v (one solve). */
+gb_status gb_host_solve(const gb_host *h, const gb_host_vars *v, gb_bem_solution *sol, gb_error *err);
 /* A group's total force (sum of traction x length over its elements: what the outside puts on the
  * body) and its mean displacement (length-weighted), from a solution of gb_host_solve. */
 void gb_host_group_sum(const gb_host *h, const gb_bem_solution *sol, int group, double force[2], double disp[2]);
-/* The same for the current cavity displacements and loads, from the unit responses: O(m + n_loads). */
-void gb_host_group_resultant(const gb_host *h, int group, double force[2], double disp[2]);
+/* The same for the cavity displacements and loads of v, from the unit responses: O(m + n_loads). */
+void gb_host_group_resultant(const gb_host *h, const gb_host_vars *v, int group, double force[2], double disp[2]);
 /* The same by name, solving for it. */
-gb_status gb_host_group_force(const gb_host *h, const char *group, double force[2], double disp[2], gb_error *err);
+gb_status gb_host_group_force(const gb_host *h, const gb_host_vars *v, const char *group, double force[2],
+                              double disp[2], gb_error *err);
 
 #endif

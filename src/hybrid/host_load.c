@@ -20,11 +20,11 @@ static double *load_value(gb_bem_problem *p, const gb_host_load *l)
 }
 
 /* How far load j is from its value at creation. */
-static double load_change(const gb_host *h, int j)
+static double load_change(const gb_host *h, const gb_host_vars *v, int j)
 {
     const gb_host_load *l = &h->loads[j];
-    double v = l->group < 0 ? h->prob.remote_stress[l->comp] : h->prob.bc[l->group].value[l->comp];
-    return v - h->load0[j];
+    double now = l->group < 0 ? v->remote[l->comp] : v->bc[l->group][l->comp];
+    return now - h->load0[j];
 }
 
 gb_status gb_host_condense(gb_host *h, gb_error *err)
@@ -83,7 +83,7 @@ gb_status gb_host_condense(gb_host *h, gb_error *err)
     return st;
 }
 
-void gb_host_group_resultant(const gb_host *h, int g, double force[2], double disp[2])
+void gb_host_group_resultant(const gb_host *h, const gb_host_vars *v, int g, double force[2], double disp[2])
 {
     int no = 4 * h->mesh.n_groups, m = h->m;
     double r[4];
@@ -91,42 +91,42 @@ void gb_host_group_resultant(const gb_host *h, int g, double force[2], double di
     for (int c = 0; c < 4; c++) r[c] = base[4 * g + c];
     for (int j = 0; j < m; j++) {
         const double *col = h->resultant_unit + (size_t)j * (size_t)no;
-        for (int c = 0; c < 4; c++) r[c] += h->u[j] * col[4 * g + c];
+        for (int c = 0; c < 4; c++) r[c] += v->u[j] * col[4 * g + c];
     }
     for (int j = 0; j < h->n_loads; j++) {
-        double dv = load_change(h, j);
+        double dv = load_change(h, v, j);
         const double *col = h->resultant_unit + (size_t)(m + 1 + j) * (size_t)no;
         for (int c = 0; c < 4; c++) r[c] += dv * col[4 * g + c];
     }
     force[0] = r[0], force[1] = r[1], disp[0] = r[2], disp[1] = r[3];
 }
 
-void gb_host_update_f0(gb_host *h)
+void gb_host_update_f0(gb_host *h, gb_host_vars *v)
 {
-    memcpy(h->K.f0, h->f0_base, (size_t)h->m * sizeof(double));
+    memcpy(v->f0, h->f0_base, (size_t)h->m * sizeof(double));
     for (int j = 0; j < h->n_loads; j++) {
-        double dv = load_change(h, j);
+        double dv = load_change(h, v, j);
         if (dv == 0) continue;
         const double *r = h->f0_unit + (size_t)j * (size_t)h->m;
-        for (int q = 0; q < h->m; q++) h->K.f0[q] += dv * r[q];
+        for (int q = 0; q < h->m; q++) v->f0[q] += dv * r[q];
     }
-    gb_host_update_force(h);
+    gb_host_update_force(h, v);
 }
 
-gb_status gb_host_add_load(gb_host *h, const char *group, const double inc[2], gb_error *err)
+gb_status gb_host_add_load(gb_host *h, gb_host_vars *v, const char *group, const double inc[2], gb_error *err)
 {
     int g = gb_bem_mesh_group(&h->mesh, group), n = gb_host_group_values(h, g);
     if (n == 0)
         return gb_fail(err, GB_EINPUT, "host: '%s' is not a group whose condition has values to load", group);
-    for (int c = 0; c < n; c++) h->prob.bc[g].value[c] += inc[c];
-    gb_host_update_f0(h);
+    for (int c = 0; c < n; c++) v->bc[g][c] += inc[c];
+    gb_host_update_f0(h, v);
     return GB_OK;
 }
 
-gb_status gb_host_add_remote(gb_host *h, const double inc[3], gb_error *err)
+gb_status gb_host_add_remote(gb_host *h, gb_host_vars *v, const double inc[3], gb_error *err)
 {
     if (!h->mesh.unbounded) return gb_fail(err, GB_EINPUT, "host: a remote stress applies to an unbounded host only");
-    for (int c = 0; c < 3; c++) h->prob.remote_stress[c] += inc[c];
-    gb_host_update_f0(h);
+    for (int c = 0; c < 3; c++) v->remote[c] += inc[c];
+    gb_host_update_f0(h, v);
     return GB_OK;
 }

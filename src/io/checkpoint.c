@@ -40,14 +40,14 @@ gb_status gb_checkpoint_scene_hash(const gb_sim *sim, uint64_t *hash, gb_error *
     if (bad) return gb_fail(err, GB_EINPUT, "%s: read failed", sc->path);
     /* What the run starts from, as the simulation holds it (files the scene names included); not
      * the host's condensed stiffness, whose last digits may follow the BLAS's threads. */
-    h = fnv(h, &sim->n, sizeof sim->n);
-    for (int i = 0; i < sim->n; i++) h = fnv(h, &sim->g[i], sizeof sim->g[i]);
-    for (int q = 0; q < sim->pairs.n; q++) {
-        const gb_pair *p = &sim->pairs.p[q];
+    h = fnv(h, &sim->state.n, sizeof sim->state.n);
+    for (int i = 0; i < sim->state.n; i++) h = fnv(h, &sim->state.g[i], sizeof sim->state.g[i]);
+    for (int q = 0; q < sim->state.pairs.n; q++) {
+        const gb_pair *p = &sim->state.pairs.p[q];
         double v[4] = {p->d, p->pn, p->pt, p->mr};
         h = fnv(h, &p->i, sizeof p->i), h = fnv(h, &p->j, sizeof p->j), h = fnv(h, v, sizeof v);
     }
-    double box[4] = {sim->box.left, sim->box.right, sim->box.bottom, sim->box.top};
+    double box[4] = {sim->state.box.left, sim->state.box.right, sim->state.box.bottom, sim->state.box.top};
     h = fnv(h, box, sizeof box);
     const gb_solver_damping *d = gb_solver_damping_of(sim);
     h = fnv(h, &d->mu, sizeof d->mu), h = fnv(h, d->history, sizeof d->history);
@@ -57,9 +57,10 @@ gb_status gb_checkpoint_scene_hash(const gb_sim *sim, uint64_t *hash, gb_error *
         h = fnv(h, hw->mesh.mid, 2 * (size_t)hw->mesh.n * sizeof(double));
         h = fnv(h, hw->mesh.length, (size_t)hw->mesh.n * sizeof(double));
         h = fnv(h, hw->mesh.group, (size_t)hw->mesh.n * sizeof(int));
-        h = fnv(h, hw->u, (size_t)hw->m * sizeof(double));
-        for (int g = 0; g < GB_BEM_MAX_GROUPS; g++) h = fnv(h, hw->prob.bc[g].value, sizeof hw->prob.bc[g].value);
-        h = fnv(h, hw->prob.remote_stress, sizeof hw->prob.remote_stress);
+        const gb_host_vars *v = &sim->state.host;
+        h = fnv(h, v->u, (size_t)hw->m * sizeof(double));
+        for (int g = 0; g < GB_BEM_MAX_GROUPS; g++) h = fnv(h, v->bc[g], sizeof v->bc[g]);
+        h = fnv(h, v->remote, sizeof v->remote);
     }
     *hash = h;
     return GB_OK;
@@ -74,15 +75,16 @@ static void put(FILE *f, const char *label, const double *v, int n)
     fputc('\n', f);
 }
 
-/* A state of the simulation (src/gem/sim_state.c) as a block: the current one, the step's start
+/* A state of the simulation (gb_state, src/gem/sim.h) as a block: the current one, the step's start
  * and the sub-step's start are all written by this; un: the global solver's unloading flags of its
  * pairs, or NULL. */
-static void put_state(FILE *f, const char *name, const gb_sim *sim, const gb_sim_state *st, const unsigned char *un)
+static void put_state(FILE *f, const char *name, const gb_sim *sim, const gb_state *st, const unsigned char *un)
 {
     int np = sim->bp.n, hm = sim->host ? sim->host->m : 0;
-    fprintf(f, "state %s %d %ld %ld %d\n", name, st->n_pairs, st->generation, st->rebuilds, st->acc.half_pending);
+    fprintf(f, "state %s %d %ld %ld %d\n", name, st->pairs.n, st->pairs.generation, st->pairs.rebuilds,
+            st->acc.half_pending);
     double box[4] = {st->box.left, st->box.right, st->box.bottom, st->box.top};
-    double box0[4] = {st->box0.left, st->box0.right, st->box0.bottom, st->box0.top};
+    double box0[4] = {st->pairs.box0.left, st->pairs.box0.right, st->pairs.box0.bottom, st->pairs.box0.top};
     put(f, "box", box, 4);
     put(f, "box0", box0, 4);
     put(f, "wall_force", st->wall_force, GB_N_WALLS);
@@ -90,26 +92,27 @@ static void put_state(FILE *f, const char *name, const gb_sim *sim, const gb_sim
     put(f, "energies", e, 4);
     if (hm) {
         double v[2 * GB_BEM_MAX_GROUPS + 3];
-        for (int g = 0; g < GB_BEM_MAX_GROUPS; g++) v[2 * g] = st->host_bc[g][0], v[2 * g + 1] = st->host_bc[g][1];
-        memcpy(&v[2 * GB_BEM_MAX_GROUPS], st->host_remote, 3 * sizeof(double));
+        for (int g = 0; g < GB_BEM_MAX_GROUPS; g++) v[2 * g] = st->host.bc[g][0], v[2 * g + 1] = st->host.bc[g][1];
+        memcpy(&v[2 * GB_BEM_MAX_GROUPS], st->host.remote, 3 * sizeof(double));
         put(f, "host_values", v, 2 * GB_BEM_MAX_GROUPS + 3);
     }
     fprintf(f, "grains\n");
-    for (int i = 0; i < sim->n; i++) {
+    for (int i = 0; i < sim->state.n; i++) {
         const gb_grain *g = &st->g[i];
-        fprintf(f, "%a %a %a %a %a %a\n", g->x, g->y, g->r, g->rot, st->x0[2 * i], st->x0[2 * i + 1]);
+        fprintf(f, "%a %a %a %a %a %a\n", g->x, g->y, g->r, g->rot, st->pairs.x0[2 * i], st->pairs.x0[2 * i + 1]);
     }
     fprintf(f, "pairs %d\n", un != NULL);
-    for (int q = 0; q < st->n_pairs; q++) {
-        const gb_pair *p = &st->p[q];
+    for (int q = 0; q < st->pairs.n; q++) {
+        const gb_pair *p = &st->pairs.p[q];
         fprintf(f, "%d %d %a %a %a %a %a %a %a %d\n", p->i, p->j, p->nx, p->ny, p->d, p->pn, p->pt, p->mr, p->diss,
                 un ? un[q] : 0);
     }
     fprintf(f, "particles\n");
     for (int e2 = 0; e2 < np; e2++)
-        fprintf(f, "%a %a %a %a\n", st->bp_xy[2 * e2], st->bp_xy[2 * e2 + 1], st->px0[2 * e2], st->px0[2 * e2 + 1]);
+        fprintf(f, "%a %a %a %a\n", st->bp_x[e2], st->bp_y[e2], st->pairs.px0[2 * e2],
+                st->pairs.px0[2 * e2 + 1]);
     fprintf(f, "host\n");
-    for (int k = 0; k < hm; k++) fprintf(f, "%a %a\n", st->host_u[k], st->host_f0[k]);
+    for (int k = 0; k < hm; k++) fprintf(f, "%a %a\n", st->host.u[k], st->host.f0[k]);
 }
 
 /* The load step in progress (sim->cur), for a checkpoint within it: its place and cut-back
@@ -127,12 +130,13 @@ static void put_step(FILE *f, const gb_sim *sim)
     const gb_solver_damping *d = gb_solver_damping_of(sim);
     fprintf(f, "stall %ld %a\n", d->since, d->best); /* "inf" before the solver's first move */
     fprintf(f, "moves\n");
-    for (int i = 0; i < sim->n; i++) fprintf(f, "%a %a %a\n", sim->scratch.dX[3 * i], sim->scratch.dX[3 * i + 1], sim->scratch.dX[3 * i + 2]);
+    for (int i = 0; i < sim->state.n; i++)
+        fprintf(f, "%a %a %a\n", sim->scratch.dX[3 * i], sim->scratch.dX[3 * i + 1], sim->scratch.dX[3 * i + 2]);
     put_state(f, "step_start", sim, &sim->saved, NULL);
     if (c->cuts > 0) put_state(f, "substep", sim, &sim->substep, NULL);
 }
 
-static gb_status write_body(FILE *f, const gb_sim *sim, const gb_checkpoint_meta *m, gb_error *err)
+static void write_body(FILE *f, const gb_sim *sim, const gb_checkpoint_meta *m)
 {
     fprintf(f, "gembem_checkpoint %d\nversion %s\nscene %s\nscene_hash %016" PRIx64 "\nfiles %d\n", FORMAT,
             gb_version(), m->scene_path, m->scene_hash, m->n_files);
@@ -144,7 +148,7 @@ static gb_status write_body(FILE *f, const gb_sim *sim, const gb_checkpoint_meta
     }
     const gb_sim_position *pos = &sim->pos;
     fprintf(f, "position %d %d %d %a %a\n", pos->stage, pos->stage_step, pos->step, pos->start[0], pos->start[1]);
-    fprintf(f, "counts %d %d %d\n", sim->n, sim->bp.n, sim->host ? sim->host->m : 0);
+    fprintf(f, "counts %d %d %d\n", sim->state.n, sim->bp.n, sim->host ? sim->host->m : 0);
     double ref[2] = {sim->ref_width, sim->ref_height}, acc[3] = {sim->work_walls, sim->work_body, sim->energy0};
     put(f, "reference", ref, 2);
     put(f, "accounts", acc, 3);
@@ -152,14 +156,9 @@ static gb_status write_body(FILE *f, const gb_sim *sim, const gb_checkpoint_meta
     fprintf(f, "counters %ld %d\n", sim->iterations_total, d->next);
     put(f, "damping", &d->mu, 1);
     put(f, "damping_history", d->history, GB_SOLVER_HISTORY);
-    gb_sim_state now;
-    memset(&now, 0, sizeof now);
-    gb_status st = gb_sim_state_save(sim, &now, err);
-    if (!st) put_state(f, "current", sim, &now, gb_solver_unloading(sim));
-    gb_sim_state_free(&now);
+    put_state(f, "current", sim, &sim->state, gb_solver_unloading(sim));
     fprintf(f, "within_step %d\n", sim->cur.active);
-    if (!st && sim->cur.active) put_step(f, sim);
-    return st;
+    if (sim->cur.active) put_step(f, sim);
 }
 
 gb_status gb_checkpoint_write(const char *dir, const gb_sim *sim, const gb_checkpoint_meta *m, gb_error *err)
@@ -171,8 +170,9 @@ gb_status gb_checkpoint_write(const char *dir, const gb_sim *sim, const gb_check
     size_t len = 0;
     FILE *mem = open_memstream(&buf, &len);
     if (!mem) return gb_fail(err, GB_ENOMEM, "out of memory for a checkpoint");
-    gb_status st = write_body(mem, sim, m, err);
-    if ((fclose(mem) != 0 || !buf) && !st) st = gb_fail(err, GB_ENOMEM, "out of memory for a checkpoint");
+    write_body(mem, sim, m);
+    gb_status st = GB_OK;
+    if (fclose(mem) != 0 || !buf) st = gb_fail(err, GB_ENOMEM, "out of memory for a checkpoint");
     if (st) {
         free(buf);
         return st;
@@ -367,7 +367,7 @@ typedef struct {
     double work_walls, work_body, energy0, ref[2];
     long iterations_total;
     gb_solver_damping damping; /* since and best: within a step only */
-    gb_sim_state now;          /* the current state */
+    gb_state now;          /* the current state */
     unsigned char *unloading;  /* the global solver's flags of its pairs, or NULL */
     /* a checkpoint within a step: the step (sim->cur), the solver's work in it, the last move, the
      * step's and the sub-step's start (sim->saved, sim->substep) */
@@ -375,7 +375,7 @@ typedef struct {
     int attempt;
     gb_solver_work work;
     double *dX;
-    gb_sim_state start, sub;
+    gb_state start, sub;
     long gen[3];               /* the lists' generations as written: now, start, sub */
 } extras;
 
@@ -386,48 +386,44 @@ static void *alloc(cursor *c, size_t n, size_t size)
     return p;
 }
 
-/* A state block (put_state) into st, allocated as gb_sim_state_save would; *gen: its list's
+/* A state block (put_state) into st (gb_state_alloc); *gen: its list's
  * generation as written; un (may be NULL): the unloading flags, allocated if the block has them. */
-static void get_state(cursor *c, const gb_sim *sim, const char *name, gb_sim_state *st, long *gen, unsigned char **un)
+static void get_state(cursor *c, const gb_sim *sim, const char *name, gb_state *st, long *gen, unsigned char **un)
 {
-    int n = sim->n, np = sim->bp.n, hm = sim->host ? sim->host->m : 0;
+    int n = sim->state.n, np = sim->bp.n, hm = sim->host ? sim->host->m : 0;
     expect(c, "state");
     expect(c, name);
-    st->n_pairs = (int)integer(c, 0, 1 << 30);
+    int n_pairs = (int)integer(c, 0, 1 << 30);
     *gen = (long)integer(c, 0, (long long)1 << 62);
-    st->rebuilds = (long)integer(c, 0, (long long)1 << 62);
-    st->acc.half_pending = (int)integer(c, 0, 1);
-    st->g = alloc(c, (size_t)n, sizeof *st->g), st->x0 = alloc(c, 2 * (size_t)n, sizeof(double));
-    st->p = alloc(c, (size_t)st->n_pairs, sizeof *st->p), st->cap = st->n_pairs;
-    if (hm) {
-        st->bp_xy = alloc(c, (size_t)hm, sizeof(double)), st->px0 = alloc(c, (size_t)hm, sizeof(double));
-        st->host_u = alloc(c, (size_t)hm, sizeof(double)), st->host_f0 = alloc(c, (size_t)hm, sizeof(double));
-    }
+    long rebuilds = (long)integer(c, 0, (long long)1 << 62);
+    int half_pending = (int)integer(c, 0, 1);
+    if (c->st || (c->st = gb_state_alloc(st, n, np, hm, n_pairs, c->err))) return;
+    st->pairs.n = n_pairs, st->pairs.rebuilds = rebuilds, st->acc.half_pending = half_pending;
     double box[4], box0[4], e[4];
     nums(c, "box", box, 4);
     nums(c, "box0", box0, 4);
     gb_box b = {box[0], box[1], box[2], box[3]}, b0 = {box0[0], box0[1], box0[2], box0[3]};
-    st->box = b, st->box0 = b0;
+    st->box = b, st->pairs.box0 = b0;
     nums(c, "wall_force", st->wall_force, GB_N_WALLS);
     nums(c, "energies", e, 4);
     st->acc.work_walls_iter = e[0], st->acc.dissipation = e[1], st->acc.dissipation_step = e[2], st->acc.relaxation = e[3];
     if (hm) {
         double v[2 * GB_BEM_MAX_GROUPS + 3];
         nums(c, "host_values", v, 2 * GB_BEM_MAX_GROUPS + 3);
-        for (int g = 0; g < GB_BEM_MAX_GROUPS; g++) st->host_bc[g][0] = v[2 * g], st->host_bc[g][1] = v[2 * g + 1];
-        memcpy(st->host_remote, &v[2 * GB_BEM_MAX_GROUPS], sizeof st->host_remote);
+        for (int g = 0; g < GB_BEM_MAX_GROUPS; g++) st->host.bc[g][0] = v[2 * g], st->host.bc[g][1] = v[2 * g + 1];
+        memcpy(st->host.remote, &v[2 * GB_BEM_MAX_GROUPS], sizeof st->host.remote);
     }
     expect(c, "grains");
     for (int i = 0; i < n && !c->st; i++) {
         gb_grain *g = &st->g[i];
         g->x = num(c), g->y = num(c), g->r = num(c), g->rot = num(c);
-        st->x0[2 * i] = num(c), st->x0[2 * i + 1] = num(c);
-        if (g->r != sim->g[i].r) fail(c, "a grain's radius differs from the scene's");
+        st->pairs.x0[2 * i] = num(c), st->pairs.x0[2 * i + 1] = num(c);
+        if (g->r != sim->state.g[i].r) fail(c, "a grain's radius differs from the scene's");
     }
     expect(c, "pairs");
-    if (integer(c, 0, 1) && un) *un = alloc(c, (size_t)st->n_pairs, 1);
-    for (int q = 0; q < st->n_pairs && !c->st; q++) {
-        gb_pair *p = &st->p[q];
+    if (integer(c, 0, 1) && un) *un = alloc(c, (size_t)n_pairs, 1);
+    for (int q = 0; q < n_pairs && !c->st; q++) {
+        gb_pair *p = &st->pairs.p[q];
         p->i = (int)integer(c, 0, n - 1);
         p->j = (int)integer(c, np > 0 ? GB_PARTICLE_J(np - 1) : -GB_N_WALLS, n - 1);
         p->nx = num(c), p->ny = num(c), p->d = num(c), p->pn = num(c), p->pt = num(c), p->mr = num(c);
@@ -437,9 +433,9 @@ static void get_state(cursor *c, const gb_sim *sim, const char *name, gb_sim_sta
     }
     expect(c, "particles");
     for (int k = 0; k < np && !c->st; k++)
-        st->bp_xy[2 * k] = num(c), st->bp_xy[2 * k + 1] = num(c), st->px0[2 * k] = num(c), st->px0[2 * k + 1] = num(c);
+        st->bp_x[k] = num(c), st->bp_y[k] = num(c), st->pairs.px0[2 * k] = num(c), st->pairs.px0[2 * k + 1] = num(c);
     expect(c, "host");
-    for (int k = 0; k < hm && !c->st; k++) st->host_u[k] = num(c), st->host_f0[k] = num(c);
+    for (int k = 0; k < hm && !c->st; k++) st->host.u[k] = num(c), st->host.f0[k] = num(c);
 }
 
 /* The step in progress (put_step); checked against the scene and the last completed step. */
@@ -475,8 +471,8 @@ static void get_step(cursor *c, const gb_sim *sim, extras *x)
     if (!strcmp(w, "inf")) x->damping.best = INFINITY;
     else if (gb_parse_finite(w, &x->damping.best) != GB_NUMBER_OK) fail(c, "expected a number or inf");
     expect(c, "moves");
-    x->dX = alloc(c, 3 * (size_t)sim->n, sizeof(double));
-    for (int k = 0; k < 3 * sim->n && !c->st; k++) x->dX[k] = num(c);
+    x->dX = alloc(c, 3 * (size_t)sim->state.n, sizeof(double));
+    for (int k = 0; k < 3 * sim->state.n && !c->st; k++) x->dX[k] = num(c);
     get_state(c, sim, "step_start", &x->start, &x->gen[1], NULL);
     if (s->cuts > 0) get_state(c, sim, "substep", &x->sub, &x->gen[2], NULL);
 }
@@ -493,7 +489,7 @@ static void read_body(cursor *c, const gb_sim *sim, extras *x)
     x->pos.resume = 1;
     expect(c, "counts");
     long long n_grains = integer(c, 0, 1 << 30), n_particles = integer(c, 0, 1 << 30), n_host = integer(c, 0, 1 << 30);
-    if (n_grains != sim->n || n_particles != sim->bp.n || n_host != (sim->host ? sim->host->m : 0))
+    if (n_grains != sim->state.n || n_particles != sim->bp.n || n_host != (sim->host ? sim->host->m : 0))
         fail(c, "the checkpoint's grains or host differ from the scene's");
     double acc[3];
     nums(c, "reference", x->ref, 2);
@@ -515,13 +511,13 @@ static void read_body(cursor *c, const gb_sim *sim, extras *x)
  * was built for decides whether the pattern and its flags are kept. */
 static void new_generations(gb_sim *sim, extras *x)
 {
-    gb_sim_state *st[3] = {&x->now, &x->start, &x->sub};
+    gb_state *st[3] = {&x->now, &x->start, &x->sub};
     for (int a = 0; a < 3; a++) {
         if (!st[a]->g) continue; /* not in the checkpoint */
-        st[a]->generation = 0;
+        st[a]->pairs.generation = 0;
         for (int b = 0; b < a; b++)
-            if (x->gen[b] == x->gen[a] && st[b]->g) st[a]->generation = st[b]->generation;
-        if (!st[a]->generation) st[a]->generation = ++sim->pairs.generations;
+            if (x->gen[b] == x->gen[a] && st[b]->g) st[a]->pairs.generation = st[b]->pairs.generation;
+        if (!st[a]->pairs.generation) st[a]->pairs.generation = ++sim->search.generations;
     }
 }
 
@@ -542,12 +538,12 @@ gb_status gb_checkpoint_read(const char *dir, gb_sim *sim, uint64_t scene_hash, 
     if (!c.st) read_body(&c, sim, &x);
     /* Everything read: now into the simulation (the pair list grown first to hold every state's
      * list, so that restoring any of them needs no memory). */
-    int need = x.now.n_pairs > x.start.n_pairs ? x.now.n_pairs : x.start.n_pairs;
-    if (x.sub.n_pairs > need) need = x.sub.n_pairs;
-    if (!c.st && need > sim->pairs.cap) {
-        gb_pair *p = realloc(sim->pairs.p, (size_t)need * sizeof *p);
+    int need = x.now.pairs.n > x.start.pairs.n ? x.now.pairs.n : x.start.pairs.n;
+    if (x.sub.pairs.n > need) need = x.sub.pairs.n;
+    if (!c.st && need > sim->state.pairs.cap) {
+        gb_pair *p = realloc(sim->state.pairs.p, (size_t)need * sizeof *p);
         if (!p) c.st = gb_fail(err, GB_ENOMEM, "out of memory for %d pairs", need);
-        else sim->pairs.p = p, sim->pairs.cap = need;
+        else sim->state.pairs.p = p, sim->state.pairs.cap = need;
     }
     if (!c.st) {
         new_generations(sim, &x);
@@ -560,9 +556,9 @@ gb_status gb_checkpoint_read(const char *dir, gb_sim *sim, uint64_t scene_hash, 
         memcpy(d->history, x.damping.history, sizeof d->history);
         sim->pos = x.pos;
         if (x.cur.active) {
-            gb_sim_state_free(&sim->saved), sim->saved = x.start, memset(&x.start, 0, sizeof x.start);
-            if (x.cur.cuts > 0) gb_sim_state_free(&sim->substep), sim->substep = x.sub, memset(&x.sub, 0, sizeof x.sub);
-            memcpy(sim->scratch.dX, x.dX, 3 * (size_t)sim->n * sizeof(double));
+            gb_state_free(&sim->saved), sim->saved = x.start, memset(&x.start, 0, sizeof x.start);
+            if (x.cur.cuts > 0) gb_state_free(&sim->substep), sim->substep = x.sub, memset(&x.sub, 0, sizeof x.sub);
+            memcpy(sim->scratch.dX, x.dX, 3 * (size_t)sim->state.n * sizeof(double));
             x.cur.work0 = gb_solver_work_minus(gb_solver_work_done(sim), x.work);
             sim->cur = x.cur;
             sim->attempt = x.attempt, d->since = x.damping.since, d->best = x.damping.best;
@@ -570,7 +566,7 @@ gb_status gb_checkpoint_read(const char *dir, gb_sim *sim, uint64_t scene_hash, 
         /* for the restored pair list (its count and rebuilds) */
         c.st = gb_solver_resume(sim, x.unloading, err);
     }
-    gb_sim_state_free(&x.now), gb_sim_state_free(&x.start), gb_sim_state_free(&x.sub);
+    gb_state_free(&x.now), gb_state_free(&x.start), gb_state_free(&x.sub);
     free(x.unloading), free(x.dX);
     free(text);
     return c.st;

@@ -23,7 +23,8 @@ static void write_particles(FILE *f, const void *data)
         /* bp_F = (K u + f0) - (force of the grains on the particle) */
         double gx = h->force[2 * k] - sim->scratch.bp_F[2 * k], gy = h->force[2 * k + 1] - sim->scratch.bp_F[2 * k + 1];
         fprintf(f, "%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", e, h->mesh.mid[2 * e],
-                h->mesh.mid[2 * e + 1], sim->bp.r[k], sim->bp.nx[k], sim->bp.ny[k], h->u[2 * k], h->u[2 * k + 1],
+                h->mesh.mid[2 * e + 1], sim->bp.r[k], sim->bp.nx[k], sim->bp.ny[k], sim->state.host.u[2 * k],
+                sim->state.host.u[2 * k + 1],
                 h->force[2 * k], h->force[2 * k + 1], gx, gy);
     }
 }
@@ -48,9 +49,8 @@ gb_status gb_host_write_outputs(const char *dir, const gb_sim *sim, gb_error *er
     snprintf(path, sizeof path, "%s/host_particles.csv", dir);
     if ((st = gb_atomic_write(path, write_particles, sim, err))) return st;
     gb_bem_solution sol;
-    memset(&sol, 0, sizeof sol);
-    if ((st = gb_bem_solve_group_displacement(&h->mesh, &h->sys, &h->prob, h->cavity, h->u, NULL, &sol, err)))
-        return st;
+    gb_bem_problem now = gb_host_problem(h, &sim->state.host);
+    if ((st = gb_host_solve(h, &sim->state.host, &sol, err))) return st;
     /* An interior grid over the body's bounding box: points closer to the boundary than a fifth of
      * the mean element length are left out (constant elements are inaccurate there). */
     double xmin = HUGE_VAL, xmax = -HUGE_VAL, ymin = HUGE_VAL, ymax = -HUGE_VAL, lmean = 0;
@@ -82,7 +82,7 @@ gb_status gb_host_write_outputs(const char *dir, const gb_sim *sim, gb_error *er
             grid.pt_inside[q] = gb_bem_mesh_inside(&h->mesh, x, y) && gb_bem_mesh_distance(&h->mesh, x, y) > 0.2 * lmean;
             if (grid.pt_inside[q]) inside_xy[2 * nin] = x, inside_xy[2 * nin + 1] = y, nin++;
         }
-    if ((st = gb_bem_interior(&h->mesh, &h->sys.material, &h->prob, &sol, nin, inside_xy, uin, sin_, err))) goto done;
+    if ((st = gb_bem_interior(&h->mesh, &h->sys.material, &now, &sol, nin, inside_xy, uin, sin_, err))) goto done;
     for (int q = 0, k = 0; q < NG * NG; q++)
         if (grid.pt_inside[q]) {
             memcpy(&u[2 * q], &uin[2 * k], 2 * sizeof(double));
@@ -119,11 +119,12 @@ gb_status gb_host_write_step(FILE *f, int step, const gb_sim *sim, gb_error *err
     const gb_host *h = sim->host;
     for (int g = 0; g < h->mesh.n_groups; g++) {
         double force[2], disp[2];
-        gb_host_group_resultant(h, g, force, disp);
+        gb_host_group_resultant(h, &sim->state.host, g, force, disp);
         fprintf(f, "%d,%s,%s,%.17g,%.17g,%.17g,%.17g", step, h->mesh.group_name[g],
                 g == h->cavity ? "cavity" : condition_name(h->prob.bc[g].kind), disp[0], disp[1], force[0], force[1]);
         if (h->mesh.unbounded)
-            fprintf(f, ",%.17g,%.17g,%.17g", h->prob.remote_stress[0], h->prob.remote_stress[1], h->prob.remote_stress[2]);
+            fprintf(f, ",%.17g,%.17g,%.17g", sim->state.host.remote[0], sim->state.host.remote[1],
+                    sim->state.host.remote[2]);
         fputc('\n', f);
     }
     return fflush(f) == 0 ? GB_OK : gb_fail(err, GB_EIO, "host_steps.csv: write failed");

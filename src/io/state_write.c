@@ -74,25 +74,26 @@ static void write_host_csv(FILE *f, const void *data)
     const gb_host *h = sim->host;
     fprintf(f, "element,x,y,ux,uy\n");
     for (int k = 0; k < h->m / 2; k++)
-        fprintf(f, "%d,%.17g,%.17g,%.17g,%.17g\n", h->K.elem[k], sim->bp.x[k], sim->bp.y[k], h->u[2 * k],
-                h->u[2 * k + 1]);
+        fprintf(f, "%d,%.17g,%.17g,%.17g,%.17g\n", h->K.elem[k], sim->bp.x[k], sim->bp.y[k], sim->state.host.u[2 * k],
+                sim->state.host.u[2 * k + 1]);
 }
 
 static void write_host_yaml(FILE *f, const gb_sim *sim)
 {
     const gb_host *h = sim->host;
+    gb_bem_problem now = gb_host_problem(h, &sim->state.host);
     fprintf(f, "host:   # where the host was: checked against the scene's mesh and conditions when read\n"
                "  elements: %d\n  cavity_elements: %d\n  particles: state_host.csv\n  boundary:%s\n",
             h->mesh.n, h->m / 2, h->mesh.n_groups > 1 ? "" : " {}");
     for (int g = 0; g < h->mesh.n_groups; g++) {
         if (g == h->cavity) continue;
         fprintf(f, "    %s: ", h->mesh.group_name[g]);
-        write_bc(f, &h->prob.bc[g]);
+        write_bc(f, &now.bc[g]);
         fprintf(f, "\n");
     }
     if (h->mesh.unbounded)
-        fprintf(f, "  remote_stress: [%.17g, %.17g, %.17g]\n", h->prob.remote_stress[0], h->prob.remote_stress[1],
-                h->prob.remote_stress[2]);
+        fprintf(f, "  remote_stress: [%.17g, %.17g, %.17g]\n", now.remote_stress[0], now.remote_stress[1],
+                now.remote_stress[2]);
 }
 
 gb_status gb_state_write(const char *dir, const gb_sim *sim, gb_error *err)

@@ -18,11 +18,11 @@ void gb_tensor2_principal(gb_tensor2 *t)
 
 /* du_t of the whole step (K 25) in the tangent at the start, its elastic part dpt/kt (K 26), the
  * slip (K 27) times the mean tangential force, zero if either end is zero (K 28). */
-double gb_micro_step_dissipation(const gb_sim_state *start, const gb_sim *sim)
+double gb_micro_step_dissipation(const gb_state *start, const gb_sim *sim)
 {
-    const gb_pair *a = start->p, *b = sim->pairs.p;
-    int na = start->n_pairs, nb = sim->pairs.n, ia = 0;
-    const gb_box *b0 = &start->box, *b1 = &sim->box;
+    const gb_pair *a = start->pairs.p, *b = sim->state.pairs.p;
+    int na = start->pairs.n, nb = sim->state.pairs.n, ia = 0;
+    const gb_box *b0 = &start->box, *b1 = &sim->state.box;
     double wall_dx[GB_N_WALLS][2] = {{b1->left - b0->left, 0}, {b1->right - b0->right, 0},
                                      {0, b1->bottom - b0->bottom}, {0, b1->top - b0->top}};
     double total = 0;
@@ -35,10 +35,10 @@ double gb_micro_step_dissipation(const gb_sim_state *start, const gb_sim *sim)
         if (!(p->d > 0) || p->pt == 0) continue;
         const gb_material *mat = gb_sim_material(sim, q->j);
         if (!(mat->kt > 0) || GB_IS_PARTICLE(q->j)) continue; /* particles: not in a start state */
-        const gb_grain *g0 = &start->g[q->i], *g1 = &sim->g[q->i];
+        const gb_grain *g0 = &start->g[q->i], *g1 = &sim->state.g[q->i];
         double dx = g1->x - g0->x, dy = g1->y - g0->y, rot = g1->r * (g1->rot - g0->rot);
         if (q->j >= 0) {
-            const gb_grain *h0 = &start->g[q->j], *h1 = &sim->g[q->j];
+            const gb_grain *h0 = &start->g[q->j], *h1 = &sim->state.g[q->j];
             dx -= h1->x - h0->x, dy -= h1->y - h0->y, rot += h1->r * (h1->rot - h0->rot);
         } else {
             dx -= wall_dx[-1 - q->j][0], dy -= wall_dx[-1 - q->j][1];
@@ -52,11 +52,11 @@ double gb_micro_step_dissipation(const gb_sim_state *start, const gb_sim *sim)
 void gb_micro_measure(const gb_sim *sim, gb_micro *m)
 {
     memset(m, 0, sizeof *m);
-    const gb_box *b = &sim->box;
+    const gb_box *b = &sim->state.box;
     m->area = (b->right - b->left) * (b->top - b->bottom);
     double max_diss = 0;
-    for (int k = 0; k < sim->pairs.n; k++) {
-        const gb_pair *p = &sim->pairs.p[k];
+    for (int k = 0; k < sim->state.pairs.n; k++) {
+        const gb_pair *p = &sim->state.pairs.p[k];
         if (p->diss > max_diss) max_diss = p->diss;
         if (!(p->d > 0) || !(p->pn > 0)) continue;
         const gb_material *mat = gb_sim_material(sim, p->j);
@@ -71,7 +71,7 @@ void gb_micro_measure(const gb_sim *sim, gb_micro *m)
         m->energy.yy += times * e * p->ny * p->ny;
         m->energy.xy += times * e * p->nx * p->ny;
     }
-    int n = sim->n;
+    int n = sim->state.n;
     m->coordination = (2.0 * (m->n_contacts - m->n_wall_contacts) + m->n_wall_contacts) / n;
     m->fabric.xx /= n, m->fabric.yy /= n, m->fabric.xy /= n;
     m->energy.xx /= 2 * m->area, m->energy.yy /= 2 * m->area, m->energy.xy /= 2 * m->area;
@@ -81,22 +81,22 @@ void gb_micro_measure(const gb_sim *sim, gb_micro *m)
     m->work_walls = sim->work_walls;
     m->work_body = sim->work_body;
     m->work = sim->work_walls + sim->work_body;
-    m->dissipation = sim->acc.dissipation;
-    m->dissipation_step = sim->acc.dissipation_step;
-    m->p_max = sim->acc.dissipation_step > 0 ? max_diss / sim->acc.dissipation_step : 0;
+    m->dissipation = sim->state.acc.dissipation;
+    m->dissipation_step = sim->state.acc.dissipation_step;
+    m->p_max = sim->state.acc.dissipation_step > 0 ? max_diss / sim->state.acc.dissipation_step : 0;
     m->dissipation_step_k28 = NAN; /* of a step: gb_step_measure, from its start */
     m->balance = m->work - m->dissipation - (m->elastic_energy - sim->energy0);
-    m->work_walls_iter = sim->acc.work_walls_iter;
-    m->relaxation = sim->acc.relaxation;
-    m->balance_iter = sim->acc.work_walls_iter + sim->work_body - m->dissipation - sim->acc.relaxation -
+    m->work_walls_iter = sim->state.acc.work_walls_iter;
+    m->relaxation = sim->state.acc.relaxation;
+    m->balance_iter = sim->state.acc.work_walls_iter + sim->work_body - m->dissipation - sim->state.acc.relaxation -
                       (m->elastic_energy - sim->energy0);
 }
 
 void gb_micro_rose(const gb_sim *sim, int nbins, double *count, double *energy)
 {
     for (int b = 0; b < nbins; b++) count[b] = energy[b] = 0;
-    for (int k = 0; k < sim->pairs.n; k++) {
-        const gb_pair *p = &sim->pairs.p[k];
+    for (int k = 0; k < sim->state.pairs.n; k++) {
+        const gb_pair *p = &sim->state.pairs.p[k];
         if (!(p->d > 0) || !(p->pn > 0)) continue;
         const gb_material *mat = gb_sim_material(sim, p->j);
         double e = gb_spring_energy(p->pn, p->pt, p->mr, mat);

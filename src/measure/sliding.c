@@ -7,8 +7,8 @@
 int gb_measure_sliding(const gb_sim *sim, gb_sliding_contact *out, int cap)
 {
     int count = 0;
-    for (int k = 0; k < sim->pairs.n; k++) {
-        const gb_pair *p = &sim->pairs.p[k];
+    for (int k = 0; k < sim->state.pairs.n; k++) {
+        const gb_pair *p = &sim->state.pairs.p[k];
         if (!(p->d > 0) || !(p->pn > 0)) continue;
         const gb_material *mat = gb_sim_material(sim, p->j);
         double limit = p->pn * gb_sim_tan_phi(sim, p->j) + mat->cohesion;

@@ -15,10 +15,10 @@ static void zone_free(gb_zone_measures *z)
     gb_triangulation_free(&z->t);
 }
 
-static gb_status zone_measure(const gb_sim_state *start, const gb_sim *sim, gb_zone_measures *z, gb_error *err)
+static gb_status zone_measure(const gb_state *start, const gb_sim *sim, gb_zone_measures *z, gb_error *err)
 {
     memset(z, 0, sizeof *z);
-    int n = z->n = sim->n;
+    int n = z->n = sim->state.n;
     size_t m = (size_t)(n > 0 ? n : 1);
     z->x0 = malloc(2 * m * sizeof(double)), z->x1 = malloc(2 * m * sizeof(double)), z->r = malloc(m * sizeof(double));
     z->grain = malloc(m * sizeof *z->grain), z->grain_tri = malloc(m * sizeof(int)), z->d2 = calloc(m, sizeof *z->d2);
@@ -27,8 +27,8 @@ static gb_status zone_measure(const gb_sim_state *start, const gb_sim *sim, gb_z
     double dmax = 0;
     for (int i = 0; i < n; i++) {
         z->x0[2 * i] = start->g[i].x, z->x0[2 * i + 1] = start->g[i].y;
-        z->x1[2 * i] = sim->g[i].x, z->x1[2 * i + 1] = sim->g[i].y;
-        z->r[i] = sim->g[i].r;
+        z->x1[2 * i] = sim->state.g[i].x, z->x1[2 * i + 1] = sim->state.g[i].y;
+        z->r[i] = sim->state.g[i].r;
         dmax = fmax(dmax, 2 * z->r[i]);
     }
     /* The triangulation drops edges with a gap wider than the largest diameter (gap < 0). A zone
@@ -57,7 +57,7 @@ static gb_status zone_measure(const gb_sim_state *start, const gb_sim *sim, gb_z
     return n > 0 && dmax > 0 ? gb_d2min_points(n, z->x0, z->x1, z->d2_range, z->d2, err) : GB_OK;
 }
 
-gb_status gb_step_measure(const gb_sim_state *start, const gb_sim *end, int step, int fields, gb_step_measures *m,
+gb_status gb_step_measure(const gb_state *start, const gb_sim *end, int step, int fields, gb_step_measures *m,
                           gb_error *err)
 {
     memset(m, 0, sizeof *m);

@@ -56,7 +56,7 @@ void gb_host_measures_free(gb_host_measures *m);
 
 /* The step's dissipation as the paper computes it from the step's start and end states alone
  * (K 25-28): NaN-free, 0 without sliding. */
-double gb_micro_step_dissipation(const gb_sim_state *start, const gb_sim *end);
+double gb_micro_step_dissipation(const gb_state *start, const gb_sim *end);
 
 /* The granular zone's strain over a step: the grains' centres at the start triangulated, each
  * triangle's strain to the end, averaged at the grains, their D2min and the localisation index. */
@@ -86,7 +86,7 @@ typedef struct {
     gb_host_measures host;
 } gb_step_measures;
 
-gb_status gb_step_measure(const gb_sim_state *start, const gb_sim *end, int step, int fields, gb_step_measures *m,
+gb_status gb_step_measure(const gb_state *start, const gb_sim *end, int step, int fields, gb_step_measures *m,
                           gb_error *err);
 void gb_step_measures_free(gb_step_measures *m);
 

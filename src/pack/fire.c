@@ -40,7 +40,8 @@ static int blocks(long m) { return (int)((m + BLOCK - 1) / BLOCK); }
 typedef struct {
     const gb_fire_world *w;
     gb_world world;
-    gb_pair_list L;
+    gb_pair_set L;      /* the candidate pairs */
+    gb_pair_search search;
     double scale;       /* the radii's factor */
     double scale0;      /* at the last rebuild */
     double r0max;
@@ -151,7 +152,7 @@ static double forces(fire_state *S, double *f, const double *v, double *power, g
 /* Rebuilds the list, its packed copies and their chunks. */
 static gb_status rebuild(fire_state *S, gb_error *err)
 {
-    gb_status st = gb_pairs_rebuild(&S->L, &S->world, err);
+    gb_status st = gb_pairs_rebuild(&S->L, &S->search, &S->world, err);
     if (st) return st;
     int n = S->w->n, np = S->L.n;
     if (np > S->cap) {
@@ -204,7 +205,7 @@ static void set_scale(fire_state *S, double scale)
 static gb_status refresh(fire_state *S, double drift2, gb_error *err)
 {
     double grain = sqrt(drift2) + fmax(0, S->scale - S->scale0) * S->r0max;
-    if (!gb_pairs_drift_stale(&S->L, grain, 0)) return GB_OK;
+    if (!gb_pairs_drift_stale(&S->search, grain, 0)) return GB_OK;
     S->scale0 = S->scale;
     return rebuild(S, err);
 }
@@ -243,7 +244,7 @@ gb_status gb_fire_relax_scaled(const gb_fire_world *w, const gb_fire_goal *goal,
     /* a skin of half the smallest radius: the growth's steps of 1 % of a radius rebuild the list
      * every few iterations with less (0.2 rmin: a third more CPU time at 1e4 discs, 0.5 and 1.0
      * about the same); the pairs apart cost little in the force loop */
-    S.L.skin = 0.5 * rmin;
+    S.search.skin = 0.5 * rmin;
     if ((st = rebuild(&S, err))) goto done;
 
     const double dt_max = DT_MAX * sqrt(m / kn), dt_min = DT_MIN_MD / DT_MAX_MD * dt_max;
@@ -342,7 +343,7 @@ gb_status gb_fire_relax_scaled(const gb_fire_world *w, const gb_fire_goal *goal,
                          goal->tol, goal->max_iter, worst);
     }
 done:
-    gb_pairs_free(&S.L);
+    gb_pair_set_free(&S.L), gb_pair_search_free(&S.search);
     free(S.gg), free(S.other), free(S.chunk), free(S.part);
     free(v), free(f);
     return st;

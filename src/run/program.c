@@ -18,21 +18,21 @@ static void save_state(gb_sim *sim, gb_error *err, gb_status *st)
 
 /* External work of a converged step, as a quasi-static test measures it: the walls' mean force at
  * the start and the end of the step times their inward displacement, and the body forces times
- * the grains' displacement (the saved state is the start of the step; sim->wall_force and
+ * the grains' displacement (the saved state is the start of the step; sim->state.wall_force and
  * sim->saved.wall_force hold the converged forces). */
 static void add_step_work(gb_sim *sim)
 {
-    const gb_box *a = &sim->saved.box, *b = &sim->box;
+    const gb_box *a = &sim->saved.box, *b = &sim->state.box;
     double inward[GB_N_WALLS] = {b->left - a->left, a->right - b->right, b->bottom - a->bottom, a->top - b->top};
     for (int w = 0; w < GB_N_WALLS; w++)
-        sim->work_walls += 0.5 * (sim->saved.wall_force[w] + sim->wall_force[w]) * inward[w];
-    for (int i = 0; i < sim->n; i++)
-        sim->work_body += sim->body[2 * i] * (sim->g[i].x - sim->saved.g[i].x) +
-                          sim->body[2 * i + 1] * (sim->g[i].y - sim->saved.g[i].y);
+        sim->work_walls += 0.5 * (sim->saved.wall_force[w] + sim->state.wall_force[w]) * inward[w];
+    for (int i = 0; i < sim->state.n; i++)
+        sim->work_body += sim->body[2 * i] * (sim->state.g[i].x - sim->saved.g[i].x) +
+                          sim->body[2 * i + 1] * (sim->state.g[i].y - sim->saved.g[i].y);
 }
 
 /* Back to a saved state, with its forces. */
-static void restore_state(gb_sim *sim, const gb_sim_state *state)
+static void restore_state(gb_sim *sim, const gb_state *state)
 {
     gb_sim_state_restore(sim, state);
     gb_gem_forces(sim);
@@ -42,8 +42,8 @@ static void restore_state(gb_sim *sim, const gb_sim_state *state)
 static gb_status impose_strain(gb_sim *sim, double de1, double de2, gb_error *err)
 {
     gb_gem_forces(sim); /* the walls' forces before the move, for their work */
-    sim->acc.half_pending = 0;
-    memset(sim->scratch.dX, 0, (size_t)sim->n * 3 * sizeof(double));
+    sim->state.acc.half_pending = 0;
+    memset(sim->scratch.dX, 0, (size_t)sim->state.n * 3 * sizeof(double));
     if (sim->bp.n) memset(sim->bp.dx, 0, 2 * (size_t)sim->bp.n * sizeof(double));
     memset(sim->scratch.wall_dx, 0, sizeof sim->scratch.wall_dx);
     double dy = 0.5 * de1 * sim->ref_height, dx = 0.5 * de2 * sim->ref_width;
@@ -56,16 +56,16 @@ static gb_status impose_strain(gb_sim *sim, double de1, double de2, gb_error *er
          * starts with the increment spread over the packing instead of concentrated at the walls
          * (FIRE-jammed 1e3 discs, 1 % oedometric in 20 steps: 7.7 iterations a step against 8.3,
          * docs/solver/research.md). */
-        const gb_box *b = &sim->box;
+        const gb_box *b = &sim->state.box;
         double xc = 0.5 * (b->left + b->right), yc = 0.5 * (b->bottom + b->top);
         double sx = 2 * dx / (b->right - b->left), sy = 2 * dy / (b->top - b->bottom);
-        for (int i = 0; i < sim->n; i++) {
-            sim->scratch.dX[3 * i] = -sx * (sim->g[i].x - xc);
-            sim->scratch.dX[3 * i + 1] = -sy * (sim->g[i].y - yc);
+        for (int i = 0; i < sim->state.n; i++) {
+            sim->scratch.dX[3 * i] = -sx * (sim->state.g[i].x - xc);
+            sim->scratch.dX[3 * i + 1] = -sy * (sim->state.g[i].y - yc);
         }
         /* a move of the grains like an iteration's: the fixing forces' work, by the trapezoid rule */
-        sim->acc.relaxation -= 0.5 * gb_gem_fixing_work(sim);
-        sim->acc.half_pending = 1;
+        sim->state.acc.relaxation -= 0.5 * gb_gem_fixing_work(sim);
+        sim->state.acc.half_pending = 1;
     }
     return gb_gem_apply_moves(sim, err);
 }
@@ -89,8 +89,8 @@ static void fill_report(gb_sim *sim, gb_step_report *r, double residual)
     r->ev = r->e1 + r->e2;
     double sum = r->s1 + r->s2;
     r->stress_ratio = sum != 0 ? (r->s1 - r->s2) / sum : 0;
-    r->width = sim->box.right - sim->box.left;
-    r->height = sim->box.top - sim->box.bottom;
+    r->width = sim->state.box.right - sim->state.box.left;
+    r->height = sim->state.box.top - sim->state.box.bottom;
 }
 
 /* Whether a stage's walls are under stress control, where their residual is part of the test. */
@@ -104,18 +104,18 @@ static int stress_controlled(gb_stage_kind k)
 static gb_status apply_loads(gb_sim *sim, const gb_stage *sg, double h, gb_error *err)
 {
     gb_status st = GB_OK;
-    sim->acc.dissipation_step = 0;
-    for (int q = 0; q < sim->pairs.n; q++) sim->pairs.p[q].diss = 0;
+    sim->state.acc.dissipation_step = 0;
+    for (int q = 0; q < sim->state.pairs.n; q++) sim->state.pairs.p[q].diss = 0;
     switch (sg->kind) {
     case GB_STAGE_HOST_DISPLACEMENT:
     case GB_STAGE_HOST_LOAD:
         for (int q = 0; q < sg->n_host_groups && !st; q++) {
             double inc[2] = {h * sg->host_increment[q][0], h * sg->host_increment[q][1]};
-            st = gb_host_add_load(sim->host, sg->host_group[q], inc, err);
+            st = gb_host_add_load(sim->host, &sim->state.host, sg->host_group[q], inc, err);
         }
         double remote[3] = {h * sg->host_remote_increment[0], h * sg->host_remote_increment[1],
                             h * sg->host_remote_increment[2]};
-        if (!st && sim->host->mesh.unbounded) st = gb_host_add_remote(sim->host, remote, err);
+        if (!st && sim->host->mesh.unbounded) st = gb_host_add_remote(sim->host, &sim->state.host, remote, err);
         return st;
     case GB_STAGE_STRAIN: return impose_strain(sim, h * sg->de1, h * sg->de2, err);
     case GB_STAGE_SHEAR_MEAN: return impose_strain(sim, 0.5 * h * sg->d_shear, -0.5 * h * sg->d_shear, err);
@@ -301,7 +301,7 @@ gb_status gb_sim_run(gb_sim *sim, gb_run_output *out, gb_step_fn on_step, void *
     memset(&rep, 0, sizeof rep);
     rep.stage = -1;
     rep.total_steps = gb_scene_total_steps(sc);
-    gb_sim_resolve_accuracy(sim, sim->pairs.p, sim->pairs.n, 0);
+    gb_sim_resolve_accuracy(sim, sim->state.pairs.p, sim->state.pairs.n, 0);
     fill_report(sim, &rep, NAN);
     /* A resumed run (src/io/checkpoint.c) continues after the checkpoint's step, or within the step
      * in progress (sim->cur, whose start is in sim->saved): its outputs, energy0 and the stage's
@@ -324,8 +324,8 @@ gb_status gb_sim_run(gb_sim *sim, gb_run_output *out, gb_step_fn on_step, void *
         if (within) memcpy(start, sim->cur.start, sizeof start);
         else if (first == 1) {
             if (sg->reset_strain) {
-                sim->ref_width = sim->box.right - sim->box.left;
-                sim->ref_height = sim->box.top - sim->box.bottom;
+                sim->ref_width = sim->state.box.right - sim->state.box.left;
+                sim->ref_height = sim->state.box.top - sim->state.box.bottom;
             }
             gb_gem_forces(sim);
             gb_gem_stress(sim, &start[0], &start[1]);
@@ -343,7 +343,7 @@ gb_status gb_sim_run(gb_sim *sim, gb_run_output *out, gb_step_fn on_step, void *
             }
             within = 0;
             /* from the step's start, which a step resumed within has from its checkpoint */
-            gb_sim_resolve_accuracy(sim, sim->saved.p, sim->saved.n_pairs, s);
+            gb_sim_resolve_accuracy(sim, sim->saved.pairs.p, sim->saved.pairs.n, s);
             if (!(sim->accuracy > 0))
                 st = gb_fail(err, GB_ENUMERIC, "the relative accuracy has no force scale: the step starts with no "
                              "contact force, and no body force or stress target loads the grains; give "

@@ -174,9 +174,10 @@ static gb_status admit_host(gb_scene *s, const gb_bem_mesh *mesh, unsigned char 
  * touch one another in touch[]. */
 static gb_status admit_pairs(gb_scene *s, unsigned char *touch, gb_error *err)
 {
-    gb_pair_list L = {0};
+    gb_pair_set L = {0};
+    gb_pair_search S = {0};
     gb_world w = {s->grains, s->n_grains, NULL, NULL};
-    gb_status st = gb_pairs_rebuild(&L, &w, err);
+    gb_status st = gb_pairs_rebuild(&L, &S, &w, err);
     int first = -1, beyond = 0; /* the first pair beyond the tolerance, and how many are */
     double f = s->max_overlap;
     for (int k = 0; !st && k < L.n; k++) {
@@ -206,7 +207,7 @@ static gb_status admit_pairs(gb_scene *s, unsigned char *touch, gb_error *err)
         st = grain_fail(s, p->j, err, "overlaps grain %d by %g (%.3g of the smaller radius); expected at most "
                                       "grains.max_overlap = %g of it%s: %s", p->i, p->d, ratio, f, pairs, fix);
     }
-    gb_pairs_free(&L);
+    gb_pair_set_free(&L), gb_pair_search_free(&S);
     return st;
 }
 

@@ -33,7 +33,7 @@ static double rolling_k(const gb_global *gl, const gb_sim *sim, const gb_pair *p
 /* The tangent stiffness of every contact and the diagonal blocks of grains and particles. Unlike
  * the reference iteration, which keeps kt in S (K 8), a contact at its Coulomb limit (K 13) gets no
  * tangential stiffness: it slides, and Newton's method converges when its tangent is the true one. */
-gb_status gb_global_pair_buffers(gb_global *gl, const gb_pair_list *P, gb_error *err)
+gb_status gb_global_pair_buffers(gb_global *gl, const gb_pair_set *P, gb_error *err)
 {
     if (P->n <= gl->kt_cap) return GB_OK;
     double *kt = realloc(gl->kt, (size_t)P->cap * sizeof(double));
@@ -55,8 +55,8 @@ void gb_global_tangents(gb_global *gl, const gb_sim *sim)
     int exact = gl->set->newton == GB_NEWTON_LINE_SEARCH;
     memset(gl->S, 0, 6 * (size_t)gl->n * sizeof(double));
     memset(gl->Sp, 0, 3 * (size_t)gl->np * sizeof(double));
-    for (int k = 0; k < sim->pairs.n; k++) {
-        const gb_pair *p = &sim->pairs.p[k];
+    for (int k = 0; k < sim->state.pairs.n; k++) {
+        const gb_pair *p = &sim->state.pairs.p[k];
         gl->kt[k] = 0;
         if (!(p->d > 0)) continue;
         const gb_material *m = gb_sim_material(sim, p->j);
@@ -71,10 +71,10 @@ void gb_global_tangents(gb_global *gl, const gb_sim *sim)
         gl->slide[k] = !(kt > 0) && exact && p->pt != 0 && (p->j >= 0 || GB_IS_PARTICLE(p->j)) ? (p->pt > 0 ? 1 : -1) * kn * gb_sim_tan_phi(sim, p->j) : 0;
         double c = p->nx, s = p->ny;
         double s00 = kn * c * c + kt * s * s, s01 = (kn - kt) * c * s, s11 = kn * s * s + kt * c * c;
-        double *S = &gl->S[6 * p->i], kr = rolling_k(gl, sim, p, k, m), ri = sim->g[p->i].r;
+        double *S = &gl->S[6 * p->i], kr = rolling_k(gl, sim, p, k, m), ri = sim->state.g[p->i].r;
         S[0] += s00, S[1] += s01, S[2] += -kt * s, S[3] += s11, S[4] += kt * c, S[5] += kt + kr / (ri * ri);
         if (p->j >= 0) {
-            double rj = sim->g[p->j].r;
+            double rj = sim->state.g[p->j].r;
             S = &gl->S[6 * p->j];
             S[0] += s00, S[1] += s01, S[2] += kt * s, S[3] += s11, S[4] += -kt * c, S[5] += kt + kr / (rj * rj);
         } else if (GB_IS_PARTICLE(p->j)) {
@@ -108,12 +108,13 @@ static void add_exact_diagonal(gb_global *gl, const gb_sim *sim, const gb_pair *
             for (int b = 0; b < nb; b++)
                 if (!held[dj + a] && !held[dj + b]) add(gl, j, b, qj, a, sl * q2[a] * q1[b]);
     }
-    double rj = p->j >= 0 ? sim->g[p->j].r : sim->bp.r[GB_PARTICLE_OF(p->j)];
+    double rj = p->j >= 0 ? sim->state.g[p->j].r : sim->bp.r[GB_PARTICLE_OF(p->j)];
     const gb_material *m = gb_sim_material(sim, p->j);
     if (p->j >= 0 && m->kr > 0 && rolling_k(gl, sim, p, k, m) == 0 && p->mr != 0) {
         /* A rolling moment at its cap follows the overlap: mr = +-eta R* kn d, d(d)/dx_i = n = -d(d)/dx_j;
          * on i the fixing force's third row is -mr / r_i, on j +mr / r_j (docs/method.md section 3.1). */
-        double g = (p->mr > 0 ? 1 : -1) * m->eta * gb_pair_rolling_radius(p, &sim->world) * m->kn, ri = sim->g[i].r;
+        double g = (p->mr > 0 ? 1 : -1) * m->eta * gb_pair_rolling_radius(p, &sim->world) * m->kn;
+        double ri = sim->state.g[i].r;
         double nn[2] = {c, s};
         for (int b = 0; b < 2; b++) {
             if (!held[3 * i + 2] && !held[3 * i + b]) add(gl, i, b, qi, 2, -g * nn[b] / ri);
@@ -122,7 +123,7 @@ static void add_exact_diagonal(gb_global *gl, const gb_sim *sim, const gb_pair *
             if (!held[dj + 2] && !held[dj + b]) add(gl, j, b, qj, 2, -g * nn[b] / rj);
         }
     }
-    double len = sim->g[i].r + rj - p->d, t[2] = {-s, c};
+    double len = sim->state.g[i].r + rj - p->d, t[2] = {-s, c};
     double u[2] = {(p->pn * t[0] - p->pt * c) / len, (p->pn * t[1] - p->pt * s) / len};
     for (int a = 0; a < 2; a++)
         for (int b = 0; b < 2; b++) {
@@ -182,8 +183,8 @@ void gb_global_assemble(gb_global *gl, const gb_sim *sim, double shift)
         }
     }
     double kww[NW] = {0, 0, 0};
-    for (int k = 0; k < sim->pairs.n; k++) {
-        const gb_pair *p = &sim->pairs.p[k];
+    for (int k = 0; k < sim->state.pairs.n; k++) {
+        const gb_pair *p = &sim->state.pairs.p[k];
         if (!(p->d > 0)) continue;
         int i = p->i;
         const gb_material *mat = gb_sim_material(sim, p->j);
@@ -217,7 +218,7 @@ void gb_global_assemble(gb_global *gl, const gb_sim *sim, double shift)
         double kr = p->j >= 0 ? rolling_k(gl, sim, p, k, mat) : 0;
         if (kr > 0 && !held[3 * i + 2] && !held[gl->dof0[j] + 2]) {
             /* Rolling: F_i's third row holds -mr / r_i, F_j's +mr / r_j, mr -= kr (dw_i - dw_j). */
-            double v = -kr / (sim->g[i].r * sim->g[p->j].r);
+            double v = -kr / (sim->state.g[i].r * sim->state.g[p->j].r);
             add(gl, j, 2, gl->pos_ij[k], 2, v);
             add(gl, i, 2, gl->pos_ji[k], 2, v);
         }

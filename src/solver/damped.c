@@ -28,9 +28,9 @@ static const double LM_STALL_FACTOR = 0.5;
  * (its block stays regular). */
 void gb_solver_mark_system(gb_solver *s, const gb_sim *sim)
 {
-    for (int i = 0; i < sim->n; i++) s->in_system[i] = sim->scratch.nc[i] >= 2 ? GB_IN_SYSTEM : 0;
-    for (int k = 0; k < sim->pairs.n; k++) {
-        const gb_pair *p = &sim->pairs.p[k];
+    for (int i = 0; i < sim->state.n; i++) s->in_system[i] = sim->scratch.nc[i] >= 2 ? GB_IN_SYSTEM : 0;
+    for (int k = 0; k < sim->state.pairs.n; k++) {
+        const gb_pair *p = &sim->state.pairs.p[k];
         if (!(p->d > 0)) continue;
         int ends[2] = {p->i, p->j >= 0 ? p->j : -1};
         for (int e = 0; e < 2; e++) {
@@ -69,8 +69,8 @@ gb_status gb_solver_damped_move(gb_solver *s, gb_sim *sim, const gb_wall_control
         s->work.trials++;
         gb_status st = gb_global_moves(s->global, sim, s->in_system, wc, d->mu, err);
         if (st) return st;
-        sim->acc.relaxation -= 0.5 * gb_gem_fixing_work(sim);
-        sim->acc.half_pending = 1;
+        sim->state.acc.relaxation -= 0.5 * gb_gem_fixing_work(sim);
+        sim->state.acc.half_pending = 1;
         if ((st = gb_gem_move_and_forces(sim, err))) return st;
         double m1 = gb_gem_merit(sim, s->in_system, gb_gem_wall_moves(sim, wc));
         if (m1 <= bound || trial == MAX_TRIALS || d->mu >= MU_MAX) {

@@ -94,7 +94,7 @@ static int cmp_int(const void *a, const void *b)
 static int couples(unsigned char touch, int w) { return w == W_X ? (touch & 1) : w == W_Y ? (touch & 2) >> 1 : touch != 0; }
 
 /* The pattern of the candidate pairs: it changes only when the pair list is rebuilt. */
-static gb_status build_pattern(gb_global *gl, const gb_pair_list *P, gb_error *err)
+static gb_status build_pattern(gb_global *gl, const gb_pair_set *P, gb_error *err)
 {
     int n = gl->n, np = gl->np, nodes = gl->nodes;
     memset(gl->touch, 0, (size_t)n);
@@ -304,8 +304,8 @@ static int factor_solve(gb_global *gl, gb_error *err, gb_status *st)
 static void wall_residuals(gb_global *gl, const gb_sim *sim, const gb_wall_control *wc)
 {
     int d = gl->dof0[wall_node(gl, 0)];
-    const double *f = sim->wall_force;
-    const gb_box *b = &sim->box;
+    const double *f = sim->state.wall_force;
+    const gb_box *b = &sim->state.box;
     double W = b->right - b->left, H = b->top - b->bottom;
     for (int w = 0; w < NW; w++) gl->held[d + w] = 1, gl->rhs[d + w] = 0;
     if (!sim->world.box) return;
@@ -460,19 +460,19 @@ static gb_status solve_system(gb_global *gl, const gb_sim *sim, const unsigned c
 
 /* A resumed run: the checkpoint's flags replace the zeros of the new pattern if the pair list is the
  * one they were saved for (no rebuild since), as if the pattern had never been lost. */
-static void resume_unloading(gb_global *gl, const gb_pair_list *P)
+static void resume_unloading(gb_global *gl, const gb_pair_set *P)
 {
     if (gl->resumed_of == P->generation && P->n) memcpy(gl->unloading, gl->resumed, (size_t)P->n);
     free(gl->resumed), free(gl->lp), free(gl->li);
     gl->resumed = NULL;
 }
 
-const unsigned char *gb_global_unloading(const gb_global *gl, const gb_pair_list *P)
+const unsigned char *gb_global_unloading(const gb_global *gl, const gb_pair_set *P)
 {
     return gl->pattern_of == P->generation && P->n ? gl->unloading : NULL;
 }
 
-gb_status gb_global_resume(gb_global *gl, const gb_pair_list *P, const unsigned char *unloading, gb_error *err)
+gb_status gb_global_resume(gb_global *gl, const gb_pair_set *P, const unsigned char *unloading, gb_error *err)
 {
     free(gl->resumed), free(gl->lp), free(gl->li);
     gl->resumed = NULL;
@@ -495,18 +495,18 @@ gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const unsigned char *in_sy
     }
     double t0 = gb_clock_seconds();
     gl->stats.moves++;
-    int new_pattern = gl->pattern_of != sim->pairs.generation;
+    int new_pattern = gl->pattern_of != sim->state.pairs.generation;
     if (new_pattern) {
-        if ((st = build_pattern(gl, &sim->pairs, err))) return st;
-        gl->pattern_of = sim->pairs.generation;
+        if ((st = build_pattern(gl, &sim->state.pairs, err))) return st;
+        gl->pattern_of = sim->state.pairs.generation;
     }
     int n = gl->n, np = gl->np;
-    if ((st = gb_global_pair_buffers(gl, &sim->pairs, err))) return st;
-    if (new_pattern && sim->pairs.n) memset(gl->unloading, 0, (size_t)sim->pairs.n);
-    if (gl->resumed) resume_unloading(gl, &sim->pairs);
+    if ((st = gb_global_pair_buffers(gl, &sim->state.pairs, err))) return st;
+    if (new_pattern && sim->state.pairs.n) memset(gl->unloading, 0, (size_t)sim->state.pairs.n);
+    if (gl->resumed) resume_unloading(gl, &sim->state.pairs);
     /* A grain with a single contact in the system keeps that contact's kt (see gb_solver_mark_system). */
-    for (int k = 0; k < sim->pairs.n; k++) {
-        const gb_pair *p = &sim->pairs.p[k];
+    for (int k = 0; k < sim->state.pairs.n; k++) {
+        const gb_pair *p = &sim->state.pairs.p[k];
         int single_i = in_system[p->i] >= GB_IN_SYSTEM_NO_ROTATION; /* NO_ROTATION or SINGLE */
         int single_j = p->j >= 0 && in_system[p->j] >= GB_IN_SYSTEM_NO_ROTATION;
         gl->stick[k] = p->d > 0 && (gl->unloading[k] || single_i || single_j);
@@ -524,8 +524,8 @@ gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const unsigned char *in_sy
      * load step, 43 s instead of 61 s; 1e4: even). They keep kt until a solution loads them again
      * in their sliding direction. */
     int unloaded = 0;
-    for (int k = 0; k < sim->pairs.n; k++) {
-        const gb_pair *p = &sim->pairs.p[k];
+    for (int k = 0; k < sim->state.pairs.n; k++) {
+        const gb_pair *p = &sim->state.pairs.p[k];
         if (!(p->d > 0) || !(gb_sim_material(sim, p->j)->kt > 0) || p->pt == 0) continue;
         if (p->j < 0 && !GB_IS_PARTICLE(p->j)) continue; /* walls: moved by their own DOFs */
         if (gl->kt[k] > 0 && !gl->unloading[k]) continue;
@@ -550,7 +550,7 @@ gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const unsigned char *in_sy
      * max_move (a share of its radius), and the reference cases for the held grains. */
     const gb_solver_settings *sv = gl->set;
     double worst = 0;
-    for (int i = 0; i < n; i++) worst = fmax(worst, hypot(gl->x[3 * i], gl->x[3 * i + 1]) / sim->g[i].r);
+    for (int i = 0; i < n; i++) worst = fmax(worst, hypot(gl->x[3 * i], gl->x[3 * i + 1]) / sim->state.g[i].r);
     for (int e = 0; e < np; e++) {
         const double *x = &gl->x[gl->dof0[n + e]];
         worst = fmax(worst, hypot(x[0], x[1]) / sim->bp.r[e]);

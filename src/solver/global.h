@@ -34,10 +34,10 @@ gb_status gb_global_moves(gb_global *gl, struct gb_sim *sim, const unsigned char
 /* What the solver carries from one load step to the next (for checkpoints): the sliding contacts
  * that a solution unloaded, one flag per pair of P, while the sparsity pattern is P's; NULL when the
  * next move builds a new pattern (and starts with no flag set). */
-const unsigned char *gb_global_unloading(const gb_global *gl, const gb_pair_list *P);
+const unsigned char *gb_global_unloading(const gb_global *gl, const gb_pair_set *P);
 /* A resumed run: the flags (or NULL) that gb_global_unloading gave for P when the checkpoint was
  * written. The pattern and its analysis are built again at the next move. */
-gb_status gb_global_resume(gb_global *gl, const gb_pair_list *P, const unsigned char *unloading, gb_error *err);
+gb_status gb_global_resume(gb_global *gl, const gb_pair_set *P, const unsigned char *unloading, gb_error *err);
 
 const gb_global_stats *gb_global_statistics(const gb_global *gl);
 

@@ -89,7 +89,7 @@ static inline void add(gb_global *gl, int col, int b, int q, int a, double v)
 /* The length that converts wall DOF w into the inward displacement of wall `wall`. */
 double gb_global_wall_lever(const gb_sim *sim, int w, int wall);
 /* Per-pair buffers for a pair list of P->cap pairs. */
-gb_status gb_global_pair_buffers(gb_global *gl, const gb_pair_list *P, gb_error *err);
+gb_status gb_global_pair_buffers(gb_global *gl, const gb_pair_set *P, gb_error *err);
 /* The tangent of every contact (gl->kt, gl->slide) and the diagonal blocks gl->S, gl->Sp. */
 void gb_global_tangents(gb_global *gl, const gb_sim *sim);
 /* The matrix into gl->Ax, with the relative diagonal shift `shift`. */

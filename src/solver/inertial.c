@@ -60,7 +60,7 @@ gb_status gb_solver_inertial(gb_solver *s, gb_sim *sim, const gb_wall_control *w
                              gb_error *err)
 {
     /* The DOFs: grains' (3 each), then the boundary particles' (2 each) unless the host is rigid. */
-    int n = sim->n, np = sim->host && !sim->scene->host.rigid ? sim->bp.n : 0, dofs = 3 * n + 2 * np;
+    int n = sim->state.n, np = sim->host && !sim->scene->host.rigid ? sim->bp.n : 0, dofs = 3 * n + 2 * np;
     double *v = s->velocity, *acc = s->acceleration, inv_alpha = 1 / s->set->alpha;
     memset(v, 0, (size_t)dofs * sizeof(double));
     memset(sim->scratch.dX, 0, 3 * (size_t)n * sizeof(double));
@@ -94,7 +94,7 @@ gb_status gb_solver_inertial(gb_solver *s, gb_sim *sim, const gb_wall_control *w
                 vv += v[q] * v[q], aa += acc[q] * acc[q];
             }
         }
-        sim->acc.relaxation -= 0.5 * work;
+        sim->state.acc.relaxation -= 0.5 * work;
         for (int e = 0; e < np; e++) {
             const double *F = &sim->scratch.bp_F[2 * e];
             balanced &= F[0] * F[0] + F[1] * F[1] <= a2;
@@ -118,7 +118,7 @@ gb_status gb_solver_inertial(gb_solver *s, gb_sim *sim, const gb_wall_control *w
         for (int i = 0; i < n; i++) { /* semi-implicit Euler */
             double *vi = &v[3 * i], *d = &sim->scratch.dX[3 * i];
             for (int k = 0; k < 3; k++) vi[k] += dt * acc[3 * i + k];
-            advance(vi, d, 3, dt, max_move * sim->g[i].r);
+            advance(vi, d, 3, dt, max_move * sim->state.g[i].r);
             for (int k = 0; k < 3; k++) work += sim->scratch.F[3 * i + k] * d[k];
         }
         for (int e = 0; e < np; e++) {
@@ -127,13 +127,13 @@ gb_status gb_solver_inertial(gb_solver *s, gb_sim *sim, const gb_wall_control *w
             advance(vp, &sim->bp.dx[2 * e], 2, dt, max_move * sim->bp.r[e]);
         }
         s->work.sweeps++;
-        sim->acc.relaxation -= 0.5 * work;
+        sim->state.acc.relaxation -= 0.5 * work;
         if ((st = gb_gem_move_and_forces(sim, err))) break;
     }
-    if (step == max_steps) sim->acc.relaxation -= 0.5 * gb_gem_fixing_work(sim);
+    if (step == max_steps) sim->state.acc.relaxation -= 0.5 * gb_gem_fixing_work(sim);
     memset(sim->scratch.dX, 0, 3 * (size_t)n * sizeof(double));
     if (sim->bp.n) memset(sim->bp.dx, 0, 2 * (size_t)sim->bp.n * sizeof(double));
     memset(sim->scratch.wall_dx, 0, sizeof sim->scratch.wall_dx);
-    sim->acc.half_pending = 0;
+    sim->state.acc.half_pending = 0;
     return st;
 }

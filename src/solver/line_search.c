@@ -33,7 +33,7 @@ static const double SMOOTHED = 1e-6;  /* the smoother stops when the merit (squa
  * by their whole reference move (global.c). */
 static void set_move(const gb_solver *s, gb_sim *sim, const double *dir, double alpha)
 {
-    int n = sim->n, np = sim->bp.n;
+    int n = sim->state.n, np = sim->bp.n;
     for (int i = 0; i < n; i++) {
         double f = s->in_system[i] ? alpha : 1;
         for (int q = 0; q < 3; q++) sim->scratch.dX[3 * i + q] = f * dir[3 * i + q];
@@ -45,8 +45,8 @@ static void set_move(const gb_solver *s, gb_sim *sim, const double *dir, double 
 /* Applies the move in sim->scratch.dX, bp.dx and wall_dx, and evaluates the forces after it. */
 static gb_status take_move(gb_sim *sim, gb_error *err)
 {
-    sim->acc.relaxation -= 0.5 * gb_gem_fixing_work(sim);
-    sim->acc.half_pending = 1;
+    sim->state.acc.relaxation -= 0.5 * gb_gem_fixing_work(sim);
+    sim->state.acc.half_pending = 1;
     return gb_gem_move_and_forces(sim, err);
 }
 
@@ -76,7 +76,7 @@ static gb_status backtrack(gb_solver *s, gb_sim *sim, const gb_wall_control *wc,
 gb_status gb_solver_line_search_move(gb_solver *s, gb_sim *sim, const gb_wall_control *wc, double m0,
                                      gb_error *err)
 {
-    int n = sim->n, np = sim->bp.n, found;
+    int n = sim->state.n, np = sim->bp.n, found;
     /* The smallest damping: Newton's direction (the system regularises only a singular matrix). */
     gb_status st = gb_global_moves(s->global, sim, s->in_system, wc, 0, err);
     if (st) return st;

@@ -11,7 +11,7 @@ void gb_solver_free(gb_solver *s)
     if (!s) return;
     gb_global_free(s->global);
     free(s->in_system);
-    gb_sim_state_free(&s->trial), gb_sim_state_free(&s->smoothed);
+    gb_state_free(&s->trial), gb_state_free(&s->smoothed);
     free(s->direction), free(s->velocity), free(s->acceleration);
     free(s);
 }
@@ -31,11 +31,11 @@ gb_status gb_solver_create(gb_sim *sim, const gb_solver_settings *set, gb_error 
         memcpy(s->damping.history, from->history, sizeof s->damping.history);
         s->damping.next = from->next;
     }
-    size_t n = (size_t)sim->n + 1, np = (size_t)sim->bp.n;
+    size_t n = (size_t)sim->state.n + 1, np = (size_t)sim->bp.n;
     gb_status st = GB_OK;
     int ok = 1;
     if (set->method == GB_METHOD_GLOBAL) {
-        st = gb_global_create(set, sim->n, sim->bp.n, &s->global, err);
+        st = gb_global_create(set, sim->state.n, sim->bp.n, &s->global, err);
         ok = (s->in_system = calloc(n, 1)) != NULL;
         if (set->newton == GB_NEWTON_LINE_SEARCH) {
             s->direction = malloc((3 * n + 2 * np + 2 * GB_N_WALLS) * sizeof(double));
@@ -44,7 +44,7 @@ gb_status gb_solver_create(gb_sim *sim, const gb_solver_settings *set, gb_error 
             ok = ok && s->direction && s->velocity && s->acceleration;
         }
     }
-    if (!st && !ok) st = gb_fail(err, GB_ENOMEM, "out of memory for the global solver of %d grains", sim->n);
+    if (!st && !ok) st = gb_fail(err, GB_ENOMEM, "out of memory for the global solver of %d grains", sim->state.n);
     if (st) {
         gb_solver_free(s);
         return st;
@@ -70,7 +70,8 @@ static void report_iteration(gb_sim *sim, long it, double max_force, double wall
 {
     const gb_solver *s = sim->solver;
     double move = 0;
-    for (int i = 0; i < sim->n; i++) move = fmax(move, hypot(sim->scratch.dX[3 * i], sim->scratch.dX[3 * i + 1]) / sim->g[i].r);
+    for (int i = 0; i < sim->state.n; i++)
+        move = fmax(move, hypot(sim->scratch.dX[3 * i], sim->scratch.dX[3 * i + 1]) / sim->state.g[i].r);
     int global = s->global != NULL, line_search = s->set->newton == GB_NEWTON_LINE_SEARCH;
     gb_iteration_report r = {sim->pos.step + 1, sim->attempt, it, max_force, wall_residual, move,
                              global && !line_search ? s->damping.mu : 0, global && line_search ? s->length : 0};
@@ -133,10 +134,10 @@ int gb_solver_predicts_strain(const gb_sim *sim)
 
 const unsigned char *gb_solver_unloading(const gb_sim *sim)
 {
-    return sim->solver->global ? gb_global_unloading(sim->solver->global, &sim->pairs) : NULL;
+    return sim->solver->global ? gb_global_unloading(sim->solver->global, &sim->state.pairs) : NULL;
 }
 
 gb_status gb_solver_resume(gb_sim *sim, const unsigned char *unloading, gb_error *err)
 {
-    return sim->solver->global ? gb_global_resume(sim->solver->global, &sim->pairs, unloading, err) : GB_OK;
+    return sim->solver->global ? gb_global_resume(sim->solver->global, &sim->state.pairs, unloading, err) : GB_OK;
 }

@@ -16,8 +16,8 @@ struct gb_solver {
     const gb_solver_settings *set;
     gb_global *global;          /* the global system, NULL for the reference iteration */
     unsigned char *in_system;   /* per grain: moved by the global system in this iteration (GB_IN_SYSTEM...) */
-    gb_sim_state trial;         /* the configuration before a trial move */
-    gb_sim_state smoothed;      /* newton: line_search: the smoother's, while shorter steps are tried */
+    gb_state trial;         /* the configuration before a trial move */
+    gb_state smoothed;      /* newton: line_search: the smoother's, while shorter steps are tried */
     gb_solver_damping damping;  /* newton: damped */
     double *direction;          /* newton: line_search: the Newton direction of grains, particles, walls */
     double *velocity, *acceleration; /* its smoother's: 3 per grain, 2 per boundary particle */

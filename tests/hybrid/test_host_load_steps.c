@@ -72,20 +72,21 @@ static gb_status check(void *user, const gb_sim *sim, const gb_step_report *r, g
 {
     run_log *log = user;
     gb_host *h = sim->host;
+    const gb_host_vars *v = &sim->state.host;
     int m = h->m;
     gb_bem_problem p;
     expected_problem(sim, r->step, &p);
     for (int g = 0; g < h->mesh.n_groups; g++)
         for (int c = 0; c < 2; c++)
-            CHECK_NEAR(h->prob.bc[g].value[c], p.bc[g].value[c], 1e-12 * fabs(p.bc[g].value[c]));
-    for (int c = 0; c < 3; c++) CHECK_NEAR(h->prob.remote_stress[c], p.remote_stress[c], 1e-12 * fabs(p.remote_stress[c]));
+            CHECK_NEAR(v->bc[g][c], p.bc[g].value[c], 1e-12 * fabs(p.bc[g].value[c]));
+    for (int c = 0; c < 3; c++) CHECK_NEAR(v->remote[c], p.remote_stress[c], 1e-12 * fabs(p.remote_stress[c]));
 
     /* f0 against a fresh condensation */
     gb_bem_stiffness k;
     gb_status st = gb_bem_condense(&h->mesh, &h->sys, &p, h->cavity, NULL, &k, err);
     if (st) return st;
     double f0max = max_abs(k.f0, m), df0 = 0;
-    for (int q = 0; q < m; q++) df0 = fmax(df0, fabs(k.f0[q] - h->K.f0[q]));
+    for (int q = 0; q < m; q++) df0 = fmax(df0, fabs(k.f0[q] - v->f0[q]));
     CHECK(df0 <= 1e-10 * f0max);
     if (r->step == 0) { /* the state as placed is not in equilibrium */
         gb_bem_stiffness_free(&k);
@@ -97,8 +98,8 @@ static gb_status check(void *user, const gb_sim *sim, const gb_step_report *r, g
     double *grain = calloc(mm, sizeof(double)), *host = malloc(mm * sizeof(double));
     if (!grain || !host) return gb_fail(err, GB_ENOMEM, "out of memory");
     int n_bp_contacts = 0;
-    for (int q = 0; q < sim->pairs.n; q++) {
-        const gb_pair *pr = &sim->pairs.p[q];
+    for (int q = 0; q < sim->state.pairs.n; q++) {
+        const gb_pair *pr = &sim->state.pairs.p[q];
         if (!(pr->d > 0) || !GB_IS_PARTICLE(pr->j)) continue;
         int e = GB_PARTICLE_OF(pr->j);
         grain[2 * e] += pr->nx * pr->pn - pr->ny * pr->pt;
@@ -107,7 +108,7 @@ static gb_status check(void *user, const gb_sim *sim, const gb_step_report *r, g
     }
     for (int q = 0; q < m; q++) {
         host[q] = k.f0[q];
-        for (int j = 0; j < m; j++) host[q] += k.K[q + (size_t)j * m] * h->u[j];
+        for (int j = 0; j < m; j++) host[q] += k.K[q + (size_t)j * m] * v->u[j];
     }
     double scale = fmax(max_abs(host, m), f0max), dforce = 0;
     for (int q = 0; q < m; q++) dforce = fmax(dforce, fabs(grain[q] - host[q]));
@@ -116,14 +117,14 @@ static gb_status check(void *user, const gb_sim *sim, const gb_step_report *r, g
 
     /* the host's whole state: its cavity tractions are K u + f0; the grains' total body force */
     gb_bem_solution sol, ref;
-    if ((st = gb_host_solve(h, &sol, err))) return st;
+    if ((st = gb_host_solve(h, v, &sol, err))) return st;
     double dcav = 0, cav[2] = {0, 0}, body[2] = {0, 0};
     for (int q = 0; q < m; q++) {
         int e = h->K.elem[q / 2];
         dcav = fmax(dcav, fabs(sol.t[2 * e + q % 2] * h->mesh.length[e] - host[q]));
         cav[q % 2] += host[q];
     }
-    for (int i = 0; i < sim->n; i++) body[0] += sim->body[2 * i], body[1] += sim->body[2 * i + 1];
+    for (int i = 0; i < sim->state.n; i++) body[0] += sim->body[2 * i], body[1] += sim->body[2 * i + 1];
     CHECK(dcav <= 1e-8 * scale);
     CHECK(hypot(cav[0] + body[0], cav[1] + body[1]) <= 1e-8 * scale);
     free(grain);
@@ -142,12 +143,12 @@ static gb_status check(void *user, const gb_sim *sim, const gb_step_report *r, g
     double dres_f = 0, dres_u = 0;
     for (int g = 0; g < h->mesh.n_groups; g++) {
         double f[2], u[2];
-        gb_host_group_resultant(h, g, f, u);
+        gb_host_group_resultant(h, v, g, f, u);
         for (int c = 0; c < 2; c++)
             dres_f = fmax(dres_f, fabs(f[c] - gf[g][c])), dres_u = fmax(dres_u, fabs(u[c] - gu[g][c]));
     }
     CHECK(dres_f <= 1e-10 * fmax(fmaxg, scale));
-    CHECK(dres_u <= 1e-10 * fmax(umaxg, max_abs(h->u, m)));
+    CHECK(dres_u <= 1e-10 * fmax(umaxg, max_abs(v->u, m)));
     CHECK(hypot(total[0], total[1]) <= (h->mesh.unbounded ? 1e-8 * scale : 0.02 * fmaxg));
 
     /* an empty granular zone: the module's own solution with a traction-free cavity */
@@ -160,7 +161,7 @@ static gb_status check(void *user, const gb_sim *sim, const gb_step_report *r, g
             int e = h->K.elem[q];
             for (int c = 0; c < 2; c++) {
                 umax = fmax(umax, fabs(ref.u[2 * e + c]));
-                du = fmax(du, fabs(ref.u[2 * e + c] - h->u[2 * q + c]));
+                du = fmax(du, fabs(ref.u[2 * e + c] - v->u[2 * q + c]));
             }
         }
         for (int g = 0; g < h->mesh.n_groups; g++) {
@@ -192,10 +193,12 @@ static gb_status record(run_log *log, const gb_sim *sim)
         log->rec = realloc(log->rec, (size_t)log->cap * (size_t)log->per_step * sizeof(double));
     }
     double *rec = log->rec + (size_t)log->n_steps++ * (size_t)log->per_step;
-    memcpy(rec, h->u, (size_t)m * sizeof(double));
-    memcpy(rec + m, h->K.f0, (size_t)m * sizeof(double));
-    for (int i = 0; i < sim->n; i++) rec[2 * m + 3 * i] = sim->g[i].x, rec[2 * m + 3 * i + 1] = sim->g[i].y,
-                                       rec[2 * m + 3 * i + 2] = sim->g[i].rot;
+    memcpy(rec, sim->state.host.u, (size_t)m * sizeof(double));
+    memcpy(rec + m, sim->state.host.f0, (size_t)m * sizeof(double));
+    for (int i = 0; i < sim->state.n; i++) {
+        const gb_grain *g = &sim->state.g[i];
+        rec[2 * m + 3 * i] = g->x, rec[2 * m + 3 * i + 1] = g->y, rec[2 * m + 3 * i + 2] = g->rot;
+    }
     return GB_OK;
 }
 
@@ -215,7 +218,7 @@ static int run(const char *path, int line_search, run_log *log)
         return 1;
     }
     memset(log, 0, sizeof *log);
-    log->per_step = 2 * sim->host->m + 3 * sim->n;
+    log->per_step = 2 * sim->host->m + 3 * sim->state.n;
     gb_status st = gb_sim_run(sim, NULL, check, log, &err);
     if (st) fprintf(stderr, "%s\n", err.msg);
     CHECK(st == GB_OK);

@@ -18,7 +18,7 @@ static gb_status check(void *user, const gb_sim *sim, const gb_step_report *r, g
     if (r->step == 0) return GB_OK;
     gb_host *h = sim->host;
     /* The module alone: the same body, cavity traction-free, top displaced as far. */
-    gb_bem_problem pr = h->prob;
+    gb_bem_problem pr = gb_host_problem(h, &sim->state.host);
     pr.bc[h->cavity].kind = GB_BEM_BC_FREE;
     gb_bem_solution sol;
     memset(&sol, 0, sizeof sol);
@@ -29,12 +29,13 @@ static gb_status check(void *user, const gb_sim *sim, const gb_step_report *r, g
         int e = h->K.elem[k];
         for (int c = 0; c < 2; c++) {
             umax = fmax(umax, fabs(sol.u[2 * e + c]));
-            diff = fmax(diff, fabs(sol.u[2 * e + c] - h->u[2 * k + c]));
+            diff = fmax(diff, fabs(sol.u[2 * e + c] - sim->state.host.u[2 * k + c]));
         }
     }
     gb_bem_solution_free(&sol);
     double ft[2], fb[2], dt[2], db[2];
-    if ((st = gb_host_group_force(h, "top", ft, dt, err)) || (st = gb_host_group_force(h, "bottom", fb, db, err)))
+    if ((st = gb_host_group_force(h, &sim->state.host, "top", ft, dt, err)) ||
+        (st = gb_host_group_force(h, &sim->state.host, "bottom", fb, db, err)))
         return st;
     if (r->step == 1) first_force = ft[1];
     printf("step %d: top at %.4g cm carries %.6g kgf, bottom %.6g kgf; cavity moves %.4g cm, coupled - alone %.3g\n",

@@ -146,9 +146,9 @@ static gb_status check_host_step(void *user, const gb_sim *sim, const gb_step_re
     c->steps_seen++;
     const gb_host *h = sim->host;
     double ft[2], dt[2];
-    if ((st = gb_host_group_force(h, "top", ft, dt, err))) return st;
+    if ((st = gb_host_group_force(h, &sim->state.host, "top", ft, dt, err))) return st;
     double s_ref = hypot(ft[0], ft[1]) / 10;
-    gb_bem_problem pr = h->prob;
+    gb_bem_problem pr = gb_host_problem(h, &sim->state.host);
     pr.bc[h->cavity].kind = GB_BEM_BC_FREE;
     gb_bem_solution sol;
     memset(&sol, 0, sizeof sol);
@@ -295,9 +295,9 @@ static void check_affine(const char *dir)
         return;
     }
     const double A[4] = {0.01, 0.003, -0.002, -0.015}, b[2] = {0.01, -0.02};
-    for (int i = 0; i < sim->n; i++) {
+    for (int i = 0; i < sim->state.n; i++) {
         double X = sim->saved.g[i].x, Y = sim->saved.g[i].y;
-        sim->g[i].x = X + A[0] * X + A[1] * Y + b[0], sim->g[i].y = Y + A[2] * X + A[3] * Y + b[1];
+        sim->state.g[i].x = X + A[0] * X + A[1] * Y + b[0], sim->state.g[i].y = Y + A[2] * X + A[3] * Y + b[1];
     }
     gb_step_measures m;
     CHECK(gb_step_measure(&sim->saved, sim, 0, 1, &m, &err) == GB_OK);

@@ -6,11 +6,11 @@
 #include "contact/pairs.h"
 #include "scene_fixture.h"
 
-static int compare(const gb_pair_list *L, const gb_grain *g, int n)
+static int compare(const gb_pair_set *L, double skin, const gb_grain *g, int n)
 {
     int cap = 40 * n;
     int *bi = malloc((size_t)cap * sizeof(int)), *bj = malloc((size_t)cap * sizeof(int));
-    int m = gb_pairs_brute_force(g, n, L->skin, bi, bj, cap);
+    int m = gb_pairs_brute_force(g, n, skin, bi, bj, cap);
     int k = 0, same = 1, grains_in_list = 0;
     for (int q = 0; q < L->n; q++) {
         if (L->p[q].j < 0) continue;
@@ -38,18 +38,19 @@ int main(void)
             g[i].rot = 0;
         }
         gb_box box = {-0.1, side + 0.1, -0.1, side + 0.1};
-        gb_pair_list L = {0};
-        L.skin = 0.02;
+        gb_pair_set L = {0};
+        gb_pair_search S = {0};
+        S.skin = 0.02;
         gb_error err;
         gb_world w = {g, n, &box, NULL};
-        CHECK(gb_pairs_rebuild(&L, &w, &err) == GB_OK);
-        CHECK(compare(&L, g, n));
+        CHECK(gb_pairs_rebuild(&L, &S, &w, &err) == GB_OK);
+        CHECK(compare(&L, S.skin, g, n));
         /* Wall pairs: exactly the grains within r + skin of a wall. */
         int walls = 0, want = 0;
         for (int q = 0; q < L.n; q++) walls += L.p[q].j < 0;
         for (int i = 0; i < n; i++) {
             double gap[4] = {g[i].x - box.left, box.right - g[i].x, g[i].y - box.bottom, box.top - g[i].y};
-            for (int w = 0; w < 4; w++) want += gap[w] < g[i].r + L.skin;
+            for (int w = 0; w < 4; w++) want += gap[w] < g[i].r + S.skin;
         }
         CHECK(walls == want);
         /* Move every grain, rebuild, compare again: pairs persist, the list stays exact. */
@@ -57,11 +58,11 @@ int main(void)
             g[i].x += 0.05 * (fixture_random(&seed) - 0.5);
             g[i].y += 0.05 * (fixture_random(&seed) - 0.5);
         }
-        CHECK(gb_pairs_stale(&L, &w));
-        CHECK(gb_pairs_rebuild(&L, &w, &err) == GB_OK);
-        CHECK(compare(&L, g, n));
-        CHECK(!gb_pairs_stale(&L, &w));
-        gb_pairs_free(&L);
+        CHECK(gb_pairs_stale(&L, &S, &w));
+        CHECK(gb_pairs_rebuild(&L, &S, &w, &err) == GB_OK);
+        CHECK(compare(&L, S.skin, g, n));
+        CHECK(!gb_pairs_stale(&L, &S, &w));
+        gb_pair_set_free(&L), gb_pair_search_free(&S);
         free(g);
     }
     TEST_END();

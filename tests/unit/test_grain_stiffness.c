@@ -38,7 +38,7 @@ int main(void)
         gb_sim *t;
         gb_sim_create(&s, &t, &err);
         gb_gem_forces(t);
-        for (int k = 0; k < 3 * t->n; k++) t->scratch.dX[k] = 0;
+        for (int k = 0; k < 3 * t->state.n; k++) t->scratch.dX[k] = 0;
         t->scratch.dX[c] = dh;
         CHECK(gb_gem_apply_moves(t, &err) == GB_OK);
         gb_gem_forces(t);

@@ -25,8 +25,8 @@ static const double KN = 1e8, KT = 7e7;
 
 static gb_pair *pair_of(gb_sim *sim, int i, int j)
 {
-    for (int k = 0; k < sim->pairs.n; k++)
-        if (sim->pairs.p[k].i == i && sim->pairs.p[k].j == j) return &sim->pairs.p[k];
+    for (int k = 0; k < sim->state.pairs.n; k++)
+        if (sim->state.pairs.p[k].i == i && sim->state.pairs.p[k].j == j) return &sim->state.pairs.p[k];
     return NULL;
 }
 
@@ -34,7 +34,7 @@ static gb_pair *pair_of(gb_sim *sim, int i, int j)
 static void move(gb_sim *sim, int g, const double d[3])
 {
     gb_error err;
-    memset(sim->scratch.dX, 0, 3 * (size_t)sim->n * sizeof(double));
+    memset(sim->scratch.dX, 0, 3 * (size_t)sim->state.n * sizeof(double));
     memcpy(&sim->scratch.dX[3 * g], d, 3 * sizeof(double));
     CHECK(gb_gem_apply_moves(sim, &err) == GB_OK);
     gb_gem_forces(sim);
@@ -201,7 +201,7 @@ static void sheared_disc(int solver, double kr, double eta, double tol_w)
     gb_status st = gb_solver_relax(sim, &wc, 100000, &it, &mf, &wr, &err);
     CHECK(st == GB_OK);
     if (st) fprintf(stderr, "%s: %s\n", NAMES[solver], err.msg);
-    double pn = KN * delta, u = sim->g[0].x - 5, w = sim->g[0].rot;
+    double pn = KN * delta, u = sim->state.g[0].x - 5, w = sim->state.g[0].rot;
     double w_el = kr > 0 ? -KT * shear * r / (2 * (KT * r * r + kr)) : -shear / (2 * r);
     double limit = eta * r * pn, w_want = w_el, mr_want = -kr * w_el;
     if (kr > 0 && kr * fabs(w_el) > limit) /* at the limit: mr = +-limit, the rest on the springs kt */
@@ -238,9 +238,9 @@ static void single_contact(int solver)
     CHECK(gb_solver_relax(sim, &wc, 100000, &it, &mf, &wr, &err) == GB_OK);
     gb_pair *p = pair_of(sim, 0, -1 - GB_WALL_BOTTOM);
     printf("single contact with a moment, %s: %ld iterations, w %.10g (analytic %.10g), mr %.3g, pt %.3g\n",
-           solver ? "global" : "reference", it, sim->g[0].rot, m0 / kr, p->mr, p->pt);
-    CHECK_NEAR(sim->g[0].rot, m0 / kr, 1e-3 * m0 / kr);
-    CHECK_NEAR(sim->g[0].x - 5, -r * m0 / kr, 1e-3 * r * m0 / kr);
+           solver ? "global" : "reference", it, sim->state.g[0].rot, m0 / kr, p->mr, p->pt);
+    CHECK_NEAR(sim->state.g[0].rot, m0 / kr, 1e-3 * m0 / kr);
+    CHECK_NEAR(sim->state.g[0].x - 5, -r * m0 / kr, 1e-3 * r * m0 / kr);
     CHECK_NEAR(p->mr, 0, 1e-3 * m0);
     gb_sim_free(sim);
 }
