@@ -17,6 +17,8 @@
 #   [LAMMPS_DT=0.2] [LAMMPS_ZETA=0.5] [LAMMPS_TDAMP=1] [LAMMPS_VISCOUS=0.01]
 #   [LAMMPS_MAX_STEPS=20000000] [MAX_ITERATIONS=1000] [REF_MAX_ITERATIONS=1000000]
 #   [REF_MAX_N=10000] [RUNS="lammps line_search damped reference"] [SWEEP=1]
+#   [RANKS=1] (LAMMPS on RANKS MPI processes: mpirun, Debian's openmpi-bin) [THREADS=1] (gembem's
+#   solver.threads)
 #   tools/bench_peer.sh [BUILD_DIR] [N ...]        (default: build, 1000 10000 100000)
 #
 # Set-up (this script's own; tools/setup.sh and the tests do not need LAMMPS): `lmp` and
@@ -73,6 +75,8 @@ done
 LAMMPS_DT=${LAMMPS_DT:-0.2} LAMMPS_ZETA=${LAMMPS_ZETA:-0.5} LAMMPS_TDAMP=${LAMMPS_TDAMP:-1}
 LAMMPS_VISCOUS=${LAMMPS_VISCOUS:-0.01} LAMMPS_MAX_STEPS=${LAMMPS_MAX_STEPS:-20000000}
 REF_MAX_N=${REF_MAX_N:-10000} RUNS=${RUNS:-lammps line_search damped reference}
+RANKS=${RANKS:-1}
+export THREADS=${THREADS:-1} # read by tools/solver_packing.sh
 export MAX_ITERATIONS=${MAX_ITERATIONS:-1000} REF_MAX_ITERATIONS=${REF_MAX_ITERATIONS:-1000000}
 export OPENBLAS_NUM_THREADS=${OPENBLAS_NUM_THREADS:-1} OMP_NUM_THREADS=${OMP_NUM_THREADS:-1}
 py=/usr/bin/python3
@@ -81,6 +85,7 @@ py=/usr/bin/python3
 need=()
 command -v lmp > /dev/null || need+=(lammps)
 [ -x /usr/bin/time ] || need+=(time)
+[ "$RANKS" = 1 ] || command -v mpirun > /dev/null || need+=(openmpi-bin)
 if [ ${#need[@]} -gt 0 ]; then
   sudo=""; [ "$(id -u)" -eq 0 ] || sudo="sudo"
   echo "bench_peer.sh: installing ${need[*]} (apt-get)" >&2
@@ -100,7 +105,13 @@ if ! law=$($py "$root/tools/lammps_peer.py" lawcheck "$top/lawcheck" 2>&1); then
 fi
 
 echo "machine: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), $(nproc --all) cores, $(free -g | awk '/Mem:/ {print $2}') GiB; $(date -u '+%Y-%m-%d %H:%M UTC'); load average $(cut -d' ' -f1-3 /proc/loadavg)"
-echo "threads: OPENBLAS_NUM_THREADS=$OPENBLAS_NUM_THREADS, OMP_NUM_THREADS=$OMP_NUM_THREADS; LAMMPS serial (one process, no mpirun)"
+lmp_cmd=(lmp) lmp_label="LAMMPS gran/hooke/history (explicit DEM)" gb_label=""
+if [ "$RANKS" != 1 ]; then # Open MPI refuses root unless told
+  lmp_cmd=(mpirun -np "$RANKS" $([ "$(id -u)" -ne 0 ] || echo --allow-run-as-root) lmp)
+  lmp_label="$lmp_label, $RANKS MPI ranks"
+fi
+[ "$THREADS" = 1 ] || gb_label=", solver.threads $THREADS"
+echo "threads: OPENBLAS_NUM_THREADS=$OPENBLAS_NUM_THREADS, OMP_NUM_THREADS=$OMP_NUM_THREADS; gembem solver.threads $THREADS; LAMMPS ${lmp_cmd[*]}"
 echo "gembem $(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo '?'); LAMMPS ${lmp_version:-?} (Debian $(dpkg-query -W -f='${Version}' lammps 2>/dev/null || echo '?'))"
 echo "LAMMPS: dt $LAMMPS_DT sqrt(m_min/kn), zeta_n $LAMMPS_ZETA, tangential damping $LAMMPS_TDAMP, viscous $LAMMPS_VISCOUS sqrt(kn/m_min) m; contact law check: $(echo "$law" | tail -1)"
 echo "problem: 25 deg between discs, frictionless fixed walls, kn 1e8, kt 7e7 dyn/cm; static criterion: every disc's largest fixing force <= 100 dyn (tools/check_equilibrium.py)"
@@ -139,7 +150,7 @@ lammps_run() {
   $py "$root/tools/lammps_peer.py" input "$top/n$n/packing.csv" "$top/n$n/packing.box.yaml" "$d" \
     --dt-factor "$3" --zeta-n "$4" --tangential-damping "$5" --viscous "$6" \
     --max-steps "$LAMMPS_MAX_STEPS" > /dev/null
-  timed "$d/lmp" "$d" lmp -nocite -in in.relax -log log.lammps -screen none
+  timed "$d/lmp" "$d" "${lmp_cmd[@]}" -nocite -in in.relax -log log.lammps -screen none
   code=$?
   read -r lmp_secs lmp_mb < <(secs_mb "$d/lmp")
   lmp_ok=0 lmp_steps="" lmp_force=- lmp_contacts="" lmp_stress=""
@@ -198,16 +209,16 @@ for n in $sizes; do
   lmp_secs="" lmp_ok=0
   if [[ " $RUNS " == *" lammps "* ]]; then
     lammps_run "$n" "$d/lammps" "$LAMMPS_DT" "$LAMMPS_ZETA" "$LAMMPS_TDAMP" "$LAMMPS_VISCOUS"
-    echo "| $n | LAMMPS gran/hooke/history (explicit DEM) | $lmp_status | $lmp_steps | $lmp_secs | $lmp_mb | $lmp_force | 1 | $lmp_contacts | $lmp_stress |"
+    echo "| $n | $lmp_label | $lmp_status | $lmp_steps | $lmp_secs | $lmp_mb | $lmp_force | 1 | $lmp_contacts | $lmp_stress |"
   fi
   for variant in line_search damped reference; do
     [[ " $RUNS " == *" $variant "* ]] || continue
     case $variant in
-      line_search) env=(SOLVER=global LINEAR=umfpack NEWTON=line_search) label="gembem global, newton line_search, UMFPACK" scene=relax_friction;;
-      damped) env=(SOLVER=global LINEAR=cholmod NEWTON=damped) label="gembem global, damped, CHOLMOD" scene=relax_friction;;
+      line_search) env=(SOLVER=global LINEAR=umfpack NEWTON=line_search) label="gembem global, newton line_search, UMFPACK$gb_label" scene=relax_friction;;
+      damped) env=(SOLVER=global LINEAR=cholmod NEWTON=damped) label="gembem global, damped, CHOLMOD$gb_label" scene=relax_friction;;
       reference)
         [ "$n" -le "$REF_MAX_N" ] || continue
-        env=(SOLVER=reference) label="gembem reference iteration" scene=relax_friction_reference;;
+        env=(SOLVER=reference) label="gembem reference iteration$gb_label" scene=relax_friction_reference;;
     esac
     v=$d/$variant
     env "${env[@]}" PACKING="$d/packing.csv" "$root/tools/solver_packing.sh" "$build" "$v" "$n" 1 > /dev/null 2>&1 || {

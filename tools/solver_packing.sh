@@ -13,7 +13,7 @@
 #     vertical compression; compression positive) with the side walls fixed: oedometric.
 #
 #   [KEEP=1] [PACKING=FILE.csv] [PERTURB=f] [SOLVER=global|reference] [LINEAR=cholmod|umfpack]
-#   [NEWTON=damped|line_search]
+#   [NEWTON=damped|line_search] [THREADS=1] (solver.threads: the contacts' updates on THREADS cores)
 #   [MAX_ITERATIONS=1000] [PATH_MAX_ITERATIONS=500] [REF_MAX_ITERATIONS=1000000]
 #   tools/solver_packing.sh BUILD_DIR OUT_DIR N SEED [STATE_RUN_DIR]
 #
@@ -31,7 +31,7 @@ source "$(dirname "$0")/lib.sh"
 [ $# -ge 4 ] && [ $# -le 5 ] || {
   echo "usage: tools/solver_packing.sh BUILD_DIR OUT_DIR N SEED [STATE_RUN_DIR]" >&2; exit 2; }
 build=$1 out=$2 n=$3 seed=$4 state=${5:-${STATE:-}}
-solver=${SOLVER:-global} linear=${LINEAR:-cholmod} newton=${NEWTON:-damped}
+solver=${SOLVER:-global} linear=${LINEAR:-cholmod} newton=${NEWTON:-damped} threads=${THREADS:-1}
 case $newton in damped|line_search) ;; *) echo "solver_packing.sh: NEWTON must be damped or line_search" >&2; exit 2;; esac
 [ "$newton" = damped ] || [ "$linear" = umfpack ] || { echo "solver_packing.sh: NEWTON=line_search needs LINEAR=umfpack" >&2; exit 2; }
 case $solver in global|reference) ;; *) echo "solver_packing.sh: SOLVER must be global or reference" >&2; exit 2;; esac
@@ -72,9 +72,9 @@ box=$(grep '^box:' "$out/packing.box.yaml")
 # solver: line for a method and an iteration cap (linear only for the global solver)
 solver_line() {
   if [ "$1" = global ]; then
-    echo "solver: {method: global, linear: $linear, newton: $newton, accuracy: 100, max_iterations: $2}"
+    echo "solver: {method: global, linear: $linear, newton: $newton, threads: $threads, accuracy: 100, max_iterations: $2}"
   else
-    echo "solver: {method: reference, accuracy: 100, max_iterations: $2}"
+    echo "solver: {method: reference, threads: $threads, accuracy: 100, max_iterations: $2}"
   fi
 }
 # A relaxation scene: friction, method, cap, file
