@@ -1,6 +1,12 @@
 #include "contact/pairs.h"
 
 #include <math.h>
+#ifdef _OPENMP
+#include <omp.h>
+static int gb_pairs_thread(void) { return omp_get_thread_num(); }
+#else
+static int gb_pairs_thread(void) { return 0; }
+#endif
 #include <stdlib.h>
 #include <string.h>
 
@@ -17,7 +23,9 @@ void gb_pair_search_free(gb_pair_search *S)
     free(S->tmp);
     free(S->cell_head);
     free(S->cell_next);
-    free(S->cand);
+    for (int t = 0; t < GB_PAIRS_MAX_THREADS; t++) free(S->tcand[t]);
+    free(S->count);
+    free(S->old_start);
     free(S->pcell_head);
     free(S->pcell_next);
     memset(S, 0, sizeof *S);
@@ -119,12 +127,6 @@ double gb_pair_update(gb_pair *p, const gb_world *w, const double *dX, const dou
     return diss;
 }
 
-static int cmp_int(const void *a, const void *b)
-{
-    int x = *(const int *)a, y = *(const int *)b;
-    return (x > y) - (x < y);
-}
-
 static gb_status grow(void **buf, int *cap, int need, size_t size, gb_error *err)
 {
     if (need <= *cap) return GB_OK;
@@ -135,6 +137,85 @@ static gb_status grow(void **buf, int *cap, int need, size_t size, gb_error *err
     *buf = q;
     *cap = c;
     return GB_OK;
+}
+
+/* The cell grid of a rebuild: cells of side h from (x0, y0), nx by ny. */
+typedef struct {
+    double x0, y0, h;
+    int nx, ny;
+} gb_grid;
+
+static void cell_of(const gb_grid *G, double x, double y, int *cx, int *cy)
+{
+    int a = (int)((x - G->x0) / G->h), b = (int)((y - G->y0) / G->h);
+    *cx = a < 0 ? 0 : a >= G->nx ? G->nx - 1 : a;
+    *cy = b < 0 ? 0 : b >= G->ny ? G->ny - 1 : b;
+}
+
+/* Insertion sort: a grain's candidates are a dozen or two (qsort's calls cost more). */
+static void sort_ints(int *a, int n)
+{
+    for (int k = 1; k < n; k++) {
+        int v = a[k], q = k;
+        for (; q > 0 && a[q - 1] > v; q--) a[q] = a[q - 1];
+        a[q] = v;
+    }
+}
+
+/* Appends one candidate to thread t's buffer at position at; 0, or -1 out of memory. */
+static int push(gb_pair_search *S, int t, int at, int j)
+{
+    if (at >= S->tcand_cap[t]) {
+        int c = S->tcand_cap[t] ? 2 * S->tcand_cap[t] : 1024;
+        int *q = realloc(S->tcand[t], (size_t)c * sizeof(int));
+        if (!q) return -1;
+        S->tcand[t] = q, S->tcand_cap[t] = c;
+    }
+    S->tcand[t][at] = j;
+    return 0;
+}
+
+/* Grain i's candidates appended to thread t's buffer at position at: the boundary particles and
+ * walls within reach (their indices are negative), then the grains j > i, each part sorted, so
+ * that the list is sorted by (i, j). Returns their count, or -1 out of memory. */
+static int candidates(gb_pair_search *S, const gb_grid *G, const gb_world *w, int i, int t, int at)
+{
+    const gb_grain *g = w->g, *a = &g[i];
+    const gb_box *box = w->box;
+    const gb_particles *bp = w->bp;
+    int np = bp ? bp->n : 0, nc = 0, cx, cy;
+    cell_of(G, a->x, a->y, &cx, &cy);
+    for (int y = cy - 1; np > 0 && y <= cy + 1; y++) {
+        if (y < 0 || y >= G->ny) continue;
+        for (int x = cx - 1; x <= cx + 1; x++) {
+            if (x < 0 || x >= G->nx) continue;
+            for (int e = S->pcell_head[y * G->nx + x]; e >= 0; e = S->pcell_next[e]) {
+                double dx = bp->x[e] - a->x, dy = bp->y[e] - a->y, reach = a->r + bp->r[e] + S->skin;
+                if (dx * dx + dy * dy >= reach * reach) continue;
+                if (push(S, t, at + nc++, GB_PARTICLE_J(e))) return -1;
+            }
+        }
+    }
+    for (int wl = GB_N_WALLS - 1; box && wl >= 0; wl--) {
+        double gap[GB_N_WALLS] = {a->x - box->left, box->right - a->x, a->y - box->bottom, box->top - a->y};
+        if (gap[wl] < a->r + S->skin && push(S, t, at + nc++, -1 - wl)) return -1;
+    }
+    int first_grain = nc;
+    for (int y = cy - 1; y <= cy + 1; y++) {
+        if (y < 0 || y >= G->ny) continue;
+        for (int x = cx - 1; x <= cx + 1; x++) {
+            if (x < 0 || x >= G->nx) continue;
+            for (int j = S->cell_head[y * G->nx + x]; j >= 0; j = S->cell_next[j]) {
+                if (j <= i) continue;
+                double dx = g[j].x - a->x, dy = g[j].y - a->y, reach = a->r + g[j].r + S->skin;
+                if (dx * dx + dy * dy >= reach * reach) continue;
+                if (push(S, t, at + nc++, j)) return -1;
+            }
+        }
+    }
+    sort_ints(S->tcand[t] + at, first_grain);
+    sort_ints(S->tcand[t] + at + first_grain, nc - first_grain);
+    return nc;
 }
 
 gb_status gb_pairs_rebuild(gb_pair_set *P, gb_pair_search *S, const gb_world *w, gb_error *err)
@@ -165,6 +246,7 @@ gb_status gb_pairs_rebuild(gb_pair_set *P, gb_pair_search *S, const gb_world *w,
     if (span / h > 4.0 * sqrt((double)n) + 4) h = span / (4.0 * sqrt((double)n) + 4);
     int ncx = (int)((xmax - xmin) / h) + 1, ncy = (int)((ymax - ymin) / h) + 1;
     int ncells = ncx * ncy;
+    const gb_grid G = {xmin, ymin, h, ncx, ncy};
     if ((st = grow((void **)&S->cell_head, &S->n_cells_cap, ncells, sizeof(int), err))) return st;
     if (!S->cell_next && !(S->cell_next = malloc((size_t)(n > 0 ? n : 1) * sizeof(int))))
         return gb_fail(err, GB_ENOMEM, "out of memory for the cell list");
@@ -177,79 +259,72 @@ gb_status gb_pairs_rebuild(gb_pair_set *P, gb_pair_search *S, const gb_world *w,
             return st;
         for (int c = 0; c < ncells; c++) S->pcell_head[c] = -1;
         for (int e = np - 1; e >= 0; e--) {
-            int cx = (int)((bp->x[e] - xmin) / h), cy = (int)((bp->y[e] - ymin) / h);
-            cx = cx < 0 ? 0 : cx >= ncx ? ncx - 1 : cx;
-            cy = cy < 0 ? 0 : cy >= ncy ? ncy - 1 : cy;
+            int cx, cy;
+            cell_of(&G, bp->x[e], bp->y[e], &cx, &cy);
             S->pcell_next[e] = S->pcell_head[cy * ncx + cx];
             S->pcell_head[cy * ncx + cx] = e;
         }
     }
     /* Insert in reverse so that each cell lists its grains in increasing order. */
     for (int i = n - 1; i >= 0; i--) {
-        int cx = (int)((g[i].x - xmin) / h), cy = (int)((g[i].y - ymin) / h);
-        cx = cx < 0 ? 0 : cx >= ncx ? ncx - 1 : cx;
-        cy = cy < 0 ? 0 : cy >= ncy ? ncy - 1 : cy;
+        int cx, cy;
+        cell_of(&G, g[i].x, g[i].y, &cx, &cy);
         S->cell_next[i] = S->cell_head[cy * ncx + cx];
         S->cell_head[cy * ncx + cx] = i;
     }
 
-    int m = 0, old = 0;
+    /* The candidates in two passes over the grains, each thread on one contiguous range of them
+     * (the same in both): their sorted candidates into the thread's buffer, then, after the
+     * offsets, the pairs merged with the old list into theirs. The list is the same whatever the
+     * number of threads: the thread count only splits the work. */
+    int T = S->threads > 1 && n >= GB_PAIRS_PARALLEL ? S->threads : 1;
+    if (T > GB_PAIRS_MAX_THREADS) T = GB_PAIRS_MAX_THREADS;
+    if ((st = grow((void **)&S->count, &S->count_cap, n + 1, sizeof(int), err)) ||
+        (st = grow((void **)&S->old_start, &S->old_start_cap, n + 1, sizeof(int), err)))
+        return st;
+    int failed = 0;
+#pragma omp parallel num_threads(T) if (T > 1) reduction(|| : failed)
+    {
+        int t = T > 1 ? gb_pairs_thread() : 0, i0 = (int)((long)n * t / T), i1 = (int)((long)n * (t + 1) / T);
+        int at = 0;
+        for (int i = i0; i < i1 && !failed; i++) {
+            int nc = candidates(S, &G, w, i, t, at);
+            if (nc < 0) failed = 1;
+            else S->count[i] = nc, at += nc;
+        }
+    }
+    if (failed) return gb_fail(err, GB_ENOMEM, "out of memory for the candidate pairs");
+    int m = 0;
     for (int i = 0; i < n; i++) {
-        const gb_grain *a = &g[i];
-        int nc = 0;
-        int cx = (int)((a->x - xmin) / h), cy = (int)((a->y - ymin) / h);
-        cx = cx < 0 ? 0 : cx >= ncx ? ncx - 1 : cx;
-        cy = cy < 0 ? 0 : cy >= ncy ? ncy - 1 : cy;
-        /* Boundary particles and walls first: their indices are negative. */
-        for (int y = cy - 1; np > 0 && y <= cy + 1; y++) {
-            if (y < 0 || y >= ncy) continue;
-            for (int x = cx - 1; x <= cx + 1; x++) {
-                if (x < 0 || x >= ncx) continue;
-                for (int e = S->pcell_head[y * ncx + x]; e >= 0; e = S->pcell_next[e]) {
-                    double dx = bp->x[e] - a->x, dy = bp->y[e] - a->y, reach = a->r + bp->r[e] + S->skin;
-                    if (dx * dx + dy * dy >= reach * reach) continue;
-                    if ((st = grow((void **)&S->cand, &S->cand_cap, nc + 1, sizeof(int), err))) return st;
-                    S->cand[nc++] = GB_PARTICLE_J(e);
+        int c = S->count[i];
+        S->count[i] = m, m += c; /* now each grain's offset */
+    }
+    S->count[n] = m;
+    for (int k = 0, i = 0; i <= n; i++) { /* the old list's first pair of each grain */
+        while (k < P->n && P->p[k].i < i) k++;
+        S->old_start[i] = k;
+    }
+    if ((st = grow((void **)&S->tmp, &S->tmp_cap, m, sizeof(gb_pair), err))) return st;
+#pragma omp parallel num_threads(T) if (T > 1)
+    {
+        int t = T > 1 ? gb_pairs_thread() : 0, i0 = (int)((long)n * t / T), i1 = (int)((long)n * (t + 1) / T);
+        const int *c = S->tcand[t];
+        for (int i = i0; i < i1; i++) {
+            int old = S->old_start[i], end = S->old_start[i + 1];
+            for (int k = S->count[i]; k < S->count[i + 1]; k++) {
+                int j = *c++;
+                /* Merge: the old list is sorted by (i, j) as well. */
+                while (old < end && P->p[old].j < j) old++;
+                gb_pair *q = &S->tmp[k];
+                if (old < end && P->p[old].j == j) {
+                    *q = P->p[old++];
+                } else {
+                    memset(q, 0, sizeof *q);
+                    q->i = i;
+                    q->j = j;
+                    gb_pair_geometry(q, w);
+                    q->d = 0; /* not yet a contact: its forces start at the next update */
                 }
-            }
-        }
-        for (int wl = GB_N_WALLS - 1; box && wl >= 0; wl--) {
-            double gap[GB_N_WALLS] = {a->x - box->left, box->right - a->x, a->y - box->bottom, box->top - a->y};
-            if (gap[wl] < a->r + S->skin) {
-                if ((st = grow((void **)&S->cand, &S->cand_cap, nc + 1, sizeof(int), err))) return st;
-                S->cand[nc++] = -1 - wl;
-            }
-        }
-        if (nc > 1) qsort(S->cand, (size_t)nc, sizeof(int), cmp_int);
-        int first_grain = nc;
-        for (int y = cy - 1; y <= cy + 1; y++) {
-            if (y < 0 || y >= ncy) continue;
-            for (int x = cx - 1; x <= cx + 1; x++) {
-                if (x < 0 || x >= ncx) continue;
-                for (int j = S->cell_head[y * ncx + x]; j >= 0; j = S->cell_next[j]) {
-                    if (j <= i) continue;
-                    double dx = g[j].x - a->x, dy = g[j].y - a->y, reach = a->r + g[j].r + S->skin;
-                    if (dx * dx + dy * dy >= reach * reach) continue;
-                    if ((st = grow((void **)&S->cand, &S->cand_cap, nc + 1, sizeof(int), err))) return st;
-                    S->cand[nc++] = j;
-                }
-            }
-        }
-        if (nc - first_grain > 1) qsort(S->cand + first_grain, (size_t)(nc - first_grain), sizeof(int), cmp_int);
-        if ((st = grow((void **)&S->tmp, &S->tmp_cap, m + nc, sizeof(gb_pair), err))) return st;
-        for (int k = 0; k < nc; k++) {
-            int j = S->cand[k];
-            /* Merge: the old list is sorted by (i, j) as well. */
-            while (old < P->n && (P->p[old].i < i || (P->p[old].i == i && P->p[old].j < j))) old++;
-            gb_pair *q = &S->tmp[m++];
-            if (old < P->n && P->p[old].i == i && P->p[old].j == j) {
-                *q = P->p[old++];
-            } else {
-                memset(q, 0, sizeof *q);
-                q->i = i;
-                q->j = j;
-                gb_pair_geometry(q, w);
-                q->d = 0; /* not yet a contact: its forces start at the next update */
             }
         }
     }

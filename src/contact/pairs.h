@@ -56,6 +56,9 @@ typedef struct {
     long generation;
 } gb_pair_set;
 
+/* A rebuild runs on threads from this many grains; at most this many threads. */
+enum { GB_PAIRS_PARALLEL = 4096, GB_PAIRS_MAX_THREADS = 64 };
+
 /* How pairs are found: the skin and the search's buffers, which no state needs. */
 typedef struct {
     double skin;          /* extra distance covered by the list */
@@ -63,8 +66,11 @@ typedef struct {
     int tmp_cap;
     int *pcell_head, *pcell_next, n_pcells_cap, n_particles_cap; /* boundary particles by cell */
     int *cell_head, *cell_next, n_cells_cap;
-    int *cand;            /* per-grain candidate buffer */
-    int cand_cap;
+    int threads;          /* OpenMP threads of a rebuild (1 if 0); the list is the same on any count */
+    int *tcand[GB_PAIRS_MAX_THREADS]; /* each thread's candidates, grain after grain */
+    int tcand_cap[GB_PAIRS_MAX_THREADS];
+    int *count, count_cap;         /* per grain: its candidates, then its first pair's index */
+    int *old_start, old_start_cap; /* per grain: its first pair in the old list */
     long generations;     /* of the lists built in this process (gb_pair_set.generation) */
 } gb_pair_search;
 

@@ -150,6 +150,7 @@ gb_status gb_gem_problem_create(const gb_scene *scene, gb_sim **out, gb_error *e
     sim->tan_phi_gb = tan(scene->grain_boundary.friction_deg * PI / 180);
     /* The skin trades list length against rebuilds; a fifth of the mean radius keeps both small. */
     sim->search.skin = 0.2 * rsum / n;
+    sim->search.threads = scene->solver.threads;
     sim->world.g = sim->state.g;
     sim->world.n = n;
     sim->world.box = &sim->state.box;

@@ -221,6 +221,7 @@ gb_status gb_fire_relax_scaled(const gb_fire_world *w, const gb_fire_goal *goal,
     S.w = w, S.world = (gb_world){w->g, n, w->box, w->bp};
     double *v = calloc(len, sizeof(double)), *f = calloc(len, sizeof(double));
     S.threads = w->threads > 1 ? w->threads : 1; /* a world made without it: one */
+    S.search.threads = S.threads;
     S.par = n >= PARALLEL && S.threads > 1;
     gb_status st = GB_OK;
     if (!v || !f) {
