@@ -29,6 +29,12 @@ def read_yaml(path):
         raise ValueError(f"{path}: not YAML: {e}") from None
 
 
+def parse_yaml(text):
+    """YAML text (e.g. a value given on a command line, `{kn: 1e3, kt: 500}`) as Python objects,
+    numbers as read_yaml reads them."""
+    return yaml.load(text, Loader=Loader)
+
+
 def dump_yaml(data, block=False):
     """YAML text of plain Python objects, maps in their order, short maps and lists on one line
     (block: one line per key); floats written by repr, the shortest text that reads back to the
