@@ -134,7 +134,7 @@ class Scene:
         """The scene as YAML text: short maps and lists on one line, floats exact (shortest repr).
         comment: what the scene is, written first as '#' lines (one per line of the text)."""
         lines = (comment.splitlines() if comment else []) + ["a gembem scene written by the gembem Python package"]
-        return "".join(f"# {line}".rstrip() + "\n" for line in lines) + dump_yaml(self.to_dict(grains_file))
+        return "".join(f"# {line}".rstrip() + "\n" for line in lines) + dump_yaml(self.to_dict(grains_file), short=100)
 
     def write(self, path, grains_file=None, comment=None):
         """Writes the scene to PATH (its directory created); returns the path.
