@@ -96,7 +96,10 @@ def edit_scene(scene, edits):
                 value = parse_yaml(text)
             except Exception as e:  # yaml.YAMLError: the value's own message
                 raise SceneEditError(f"--{op} {key}: the value is not YAML: {e}") from None
-            scene = scene.with_value(key, value)
+            try:
+                scene = scene.with_value(key, value)
+            except (AttributeError, IndexError, TypeError, ValueError):   # a missing list item, or a value no map
+                raise SceneEditError(f"--{op} {key}: a key on the way is neither a map nor a list's item") from None
     return scene
 
 

@@ -6,7 +6,7 @@ directory) edited and written to another directory: a set (a word and a YAML flo
 delete of a loading stage; `gembem run` reads the written scene (its mesh still found) and its
 run_info.yaml settings, every setting as gembem's reader took it, hold the edited values. A key the
 scene has not is refused for --set and --delete, one it has for --add: exit status 2, the key
-named, no scene written.
+named, no scene written; so are a key through a value that is no map and a value that is not YAML.
 """
 import os
 import pathlib
@@ -67,6 +67,8 @@ class SceneCommand(RunDirTest):
                             (("--set", "box.left=0"), "box"),
                             (("--delete", "solver.threads"), "solver.threads"),
                             (("--add", "solver.linear=cholmod"), "solver.linear"),
+                            (("--add", "solver.linear.kind=cholmod"), "solver.linear.kind"),
+                            (("--set", "solver.linear={cholmod"), "not YAML"),
                             (("--set", "solver.linear"), "KEY=VALUE")):
             with self.subTest(args=args):
                 out = f"{self.tmp}/refused.yaml"
