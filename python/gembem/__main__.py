@@ -1,4 +1,4 @@
-"""The standard figures of a run directory, from the command line.
+"""The standard figures of a run directory, and a scene edited by its keys, from the command line.
 
     PYTHONPATH=python /usr/bin/python3 -m gembem figures RUN_DIR [OUT_DIR]
 
@@ -6,6 +6,16 @@ Draws what the run has (force chains of the final state, the stress ratio agains
 strain (box scenes), the convergence of its slowest load step, the last contact rose and strain map, the host's
 stress field and load-displacement curve) into OUT_DIR (default RUN_DIR/figures) and prints each
 file with a line on what it shows.
+
+    PYTHONPATH=python /usr/bin/python3 -m gembem scene IN.yaml -o OUT.yaml [--set KEY=VALUE]
+        [--add KEY=VALUE] [--delete KEY] ...
+
+Writes IN's scene to OUT with the edits applied in the order given, through gembem.Scene (its file
+names made absolute, so OUT may be written anywhere). KEY is dotted, list items by index
+(`loading.0.relax.steps`); VALUE is YAML flow (`{kn: 1000, kt: 500}`, `[0, 0]`, `cholmod`).
+--set replaces a value that IN has, --add creates one it has not (maps on the way created),
+--delete removes one it has: a key that is not (or, for --add, is already) there is refused with
+exit status 2 and its name, so that an edit cannot silently do nothing.
 """
 import argparse
 import os
@@ -15,6 +25,8 @@ import numpy as np
 
 from . import figures
 from .rundir import Run
+from .scene import Scene
+from .yamlfile import parse_yaml
 
 
 def standard_figures(run, out):
@@ -57,13 +69,79 @@ def standard_figures(run, out):
         figures.load_displacement(run, group, axis, path=path)
         yield path, f"force on the host's '{group}' against its displacement along {axis} (the loaded group)"
 
+class SceneEditError(ValueError):
+    """An edit the scene refuses: a key it has not (--set, --delete) or has already (--add)."""
+
+
+def edit_scene(scene, edits):
+    """scene with edits applied in order: (op, arg) with op "set", "add" (arg KEY=VALUE) or
+    "delete" (arg KEY); SceneEditError naming the edit and its key when one cannot apply."""
+    for op, arg in edits:
+        key, eq, text = arg.partition("=")
+        if op != "delete" and not eq:
+            raise SceneEditError(f"--{op} {arg}: expected KEY=VALUE")
+        if op == "add":
+            if scene.has(key):
+                raise SceneEditError(f"--add {key}: the scene has '{key}' already (--set replaces it)")
+        else:
+            try:
+                scene.value(key)
+            except KeyError as e:
+                hint = " (--add creates it)" if op == "set" else ""
+                raise SceneEditError(f"--{op} {key}: the scene has no '{e.args[0]}'{hint}") from None
+        if op == "delete":
+            scene = scene.without(key)
+        else:
+            try:
+                value = parse_yaml(text)
+            except Exception as e:  # yaml.YAMLError: the value's own message
+                raise SceneEditError(f"--{op} {key}: the value is not YAML: {e}") from None
+            try:
+                scene = scene.with_value(key, value)
+            except (AttributeError, IndexError, TypeError, ValueError):   # a missing list item, or a value no map
+                raise SceneEditError(f"--{op} {key}: a key on the way is neither a map nor a list's item") from None
+    return scene
+
+
+class _Edit(argparse.Action):
+    """--set/--add/--delete, kept in the order given."""
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        getattr(namespace, self.dest).append((option_string.lstrip("-"), values))
+
+
+def scene_command(a):
+    """gembem scene: IN edited and written to OUT; the exit status (2: a refused edit or bad IN)."""
+    try:
+        scene = edit_scene(Scene.load(a.scene), a.edits)
+        lines = " ".join(f"--{op} {arg}" for op, arg in a.edits)
+        scene.write(a.output, comment=f"{os.path.abspath(a.scene)} edited by python3 -m gembem scene" +
+                    (f":\n{lines}" if lines else ""))
+    except SceneEditError as e:
+        print(f"gembem scene: {a.scene}: {e}", file=sys.stderr)
+        return 2
+    except (OSError, ValueError) as e:
+        print(f"gembem scene: {e}", file=sys.stderr)
+        return 2
+    return 0
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(prog="python3 -m gembem", description=__doc__.split("\n")[0])
     sub = ap.add_subparsers(dest="command", required=True)
     f = sub.add_parser("figures", help="the standard figures of a run directory")
     f.add_argument("run_dir")
     f.add_argument("out_dir", nargs="?")
+    s = sub.add_parser("scene", help="a scene edited by its keys (--set, --add, --delete), written to -o OUT")
+    s.add_argument("scene", help="the scene read (IN.yaml)")
+    s.add_argument("-o", "--output", required=True, help="the scene written (OUT.yaml; may be IN)")
+    s.set_defaults(edits=[])
+    s.add_argument("--set", dest="edits", action=_Edit, metavar="KEY=VALUE", help="replace the value IN has at KEY")
+    s.add_argument("--add", dest="edits", action=_Edit, metavar="KEY=VALUE", help="create KEY, which IN has not")
+    s.add_argument("--delete", dest="edits", action=_Edit, metavar="KEY", help="remove KEY, which IN has")
     a = ap.parse_args(argv)
+    if a.command == "scene":
+        return scene_command(a)
     try:
         run = Run(a.run_dir)
         for path, what in standard_figures(run, a.out_dir or os.path.join(a.run_dir, "figures")):

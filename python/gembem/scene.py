@@ -77,6 +77,41 @@ class Scene:
             setattr(new, keys[0], _set(getattr(new, keys[0]), keys[1:], value) if len(keys) > 1 else value)
         return new
 
+    def value(self, dotted):
+        """The value at a dotted key (as with_value names it); KeyError naming the first key on the
+        way that the scene does not have (a section left None counts as absent)."""
+        keys = dotted.split(".")
+        node = getattr(self, keys[0]) if keys[0] in _SECTIONS else self.extra.get(keys[0])
+        if node is None and (keys[0] in _SECTIONS or keys[0] not in self.extra):
+            raise KeyError(keys[0])
+        for i, k in enumerate(keys[1:], 1):
+            node = _child(node, k, ".".join(keys[:i + 1]))
+        return node
+
+    def has(self, dotted):
+        """Whether the scene has a value at the dotted key."""
+        try:
+            self.value(dotted)
+        except KeyError:
+            return False
+        return True
+
+    def without(self, dotted):
+        """A copy with the value at a dotted key removed (a list item by index: the item, the others
+        moving up); KeyError naming the first missing key on the way if there is none."""
+        self.value(dotted)
+        keys = dotted.split(".")
+        new = copy.deepcopy(self)
+        if len(keys) == 1:
+            if keys[0] in _SECTIONS:
+                setattr(new, keys[0], None)
+            else:
+                del new.extra[keys[0]]
+            return new
+        parent = new.value(".".join(keys[:-1]))
+        del parent[int(keys[-1]) if isinstance(parent, list) else keys[-1]]
+        return new
+
     def to_dict(self, grains_file=None):
         """The scene as plain Python objects, in the order docs/scene.md lists the sections.
 
@@ -99,7 +134,7 @@ class Scene:
         """The scene as YAML text: short maps and lists on one line, floats exact (shortest repr).
         comment: what the scene is, written first as '#' lines (one per line of the text)."""
         lines = (comment.splitlines() if comment else []) + ["a gembem scene written by the gembem Python package"]
-        return "".join(f"# {line}".rstrip() + "\n" for line in lines) + dump_yaml(self.to_dict(grains_file))
+        return "".join(f"# {line}".rstrip() + "\n" for line in lines) + dump_yaml(self.to_dict(grains_file), short=100)
 
     def write(self, path, grains_file=None, comment=None):
         """Writes the scene to PATH (its directory created); returns the path.
@@ -126,6 +161,18 @@ def write_grains_csv(path, grains):
         f.write("x,y,r,rotation\n" if g.shape[1] == 4 else "x,y,r\n")
         for row in g:
             f.write(",".join(repr(float(v)) for v in row) + "\n")
+
+
+_SECTIONS = {f.name for f in dataclasses.fields(Scene)} - {"extra", "version"}
+
+
+def _child(node, key, where):
+    """node[key] (a list's item by index); KeyError(where) if node has no such key or item."""
+    if isinstance(node, dict) and key in node:
+        return node[key]
+    if isinstance(node, list) and key.lstrip("-").isdigit() and -len(node) <= int(key) < len(node):
+        return node[int(key)]
+    raise KeyError(where)
 
 
 def _set(node, keys, value):

@@ -6,6 +6,7 @@
 # the killed and resumed processes.
 gembem=$(cd "$(dirname "$1")" && pwd)/$(basename "$1"); root=$(cd "$(dirname "$0")/../.." && pwd)
 source "$root/tests/csv.sh"
+source "$root/tests/scene.sh"
 source "$root/tools/lib.sh"
 gb_test_begin
 # The test's end: its outputs removed if it passed; its exit status.
@@ -90,17 +91,19 @@ kill_case() { # NAME SCENE ATTEMPTS MAX_N [TIMED_DELAYS]
   else bad "$name: run_info.yaml: $(grep -E '^(status|interrupted):' "$info" | tr '\n' ' '), $items resumes listed"; fi
 }
 
-# The scenes, written next to the files they read.
+# The scenes, written next to the files they read (initial_state: the copy of test_state/ here,
+# which run_resume.sh changes to see a resume refused).
 mkdir -p "$out/scenes"
 cp -r "$root/validation/biaxial122/test_state" "$out/scenes/"
-sed -e 's/steps: 20/steps: 7/' "$root/validation/biaxial122/test_shear.yaml" > "$out/scenes/ref.yaml"
-sed -e 's/solver: {/solver: {method: global, linear: cholmod, /' -e 's/steps: 20/steps: 7/' \
-  "$root/validation/biaxial122/test_shear.yaml" > "$out/scenes/global.yaml"
+shear=$root/validation/biaxial122/test_shear.yaml   # loading: 0 shear_mean_stress (20 steps)
+scene_edit "$shear" -o "$out/scenes/ref.yaml" --set initial_state=test_state/state.yaml \
+  --set loading.0.shear_mean_stress.steps=7
+scene_edit "$shear" -o "$out/scenes/global.yaml" --set initial_state=test_state/state.yaml \
+  --add solver.method=global --add solver.linear=cholmod --set loading.0.shear_mean_stress.steps=7
 # strain-controlled: the pair list is rebuilt within steps, and sliding contacts are held stuck across them
-sed -e 's/solver: {/solver: {method: global, linear: cholmod, /' \
-  -e 's/  - shear_mean_stress: .*/  - strain: {de1: 0.0006, de2: -0.0006, steps: 4}/' \
-  "$root/validation/biaxial122/test_shear.yaml" > "$out/scenes/global_strain.yaml"
-sed -e "s|\.\./\.\./meshes|$root/meshes|" "$root/tests/hybrid/load_grains.yaml" > "$out/scenes/hybrid.yaml"
-sed -e "s|\.\./\.\./meshes|$root/meshes|" -e 's/linear: umfpack/linear: cholmod/' \
-  -e 's/grain_boundary: {kn: 1000, kt: 0, friction_deg: 0}/grain_boundary: {kn: 1000, kt: 500, friction_deg: 20}/' \
-  "$root/tests/hybrid/load_grains_remote.yaml" > "$out/scenes/hybrid_remote.yaml"
+scene_edit "$shear" -o "$out/scenes/global_strain.yaml" --set initial_state=test_state/state.yaml \
+  --add solver.method=global --add solver.linear=cholmod \
+  --set 'loading.0={strain: {de1: 0.0006, de2: -0.0006, steps: 4}}'
+scene_edit "$root/tests/hybrid/load_grains.yaml" -o "$out/scenes/hybrid.yaml"
+scene_edit "$root/tests/hybrid/load_grains_remote.yaml" -o "$out/scenes/hybrid_remote.yaml" --set solver.linear=cholmod \
+  --set 'materials.grain_boundary={kn: 1000, kt: 500, friction_deg: 20}'

@@ -11,6 +11,7 @@ set -u
 gembem=$1
 root=$(cd "$(dirname "$0")/../.." && pwd)
 source "$root/tests/csv.sh"
+source "$root/tests/scene.sh"
 source "$root/tools/lib.sh"
 gb_test_begin
 cell() { # cell FILE NAME ROW: the value of column NAME in data row ROW (0 = step 0)
@@ -21,7 +22,7 @@ same() {
   local name=$1 scene=$2
   "$gembem" run "$scene" -o "$out/$name.rel" --quiet || { bad "$name: the relative run failed"; return; }
   local a; a=$(cell "$out/$name.rel/steps.csv" accuracy 1)
-  sed "s/accuracy: {relative: 1e-4}/accuracy: $a/" "$scene" > "${scene%.yaml}.abs.yaml"
+  scene_edit "$scene" -o "${scene%.yaml}.abs.yaml" --set solver.accuracy="$a"
   "$gembem" run "${scene%.yaml}.abs.yaml" -o "$out/$name.abs" --quiet || { bad "$name: the absolute run failed"; return; }
   if diff -r -x run_info.yaml -x steps.csv -x scene.yaml -I "^# A scene starts from it" "$out/$name.rel" "$out/$name.abs" > "$out/diff" &&
      cmp -s <(csv_awk '{ $col("seconds") = "" } 1' OFS=, "$out/$name.rel/steps.csv") \
@@ -38,16 +39,17 @@ scale() {
     ok "$1: force scale $got = $2" || bad "$1: force scale $got, expected $2"
 }
 
+# case1's loading: 0 isotropic (10 steps), 1 shear_mean_stress (100 steps)
+case1=$root/validation/three_discs/case1.yaml; relative=(--set 'solver.accuracy={relative: 1e-4}')
 # 1. The three discs' first step: isotropic 1.5e5 dyn/cm on discs of diameter 2 cm: 3e5 dyn.
-sed -e 's/  accuracy: 100 .*/  accuracy: {relative: 1e-4}/' -e 's/steps: 10}/steps: 1}/' -e '/shear_mean_stress/d' -e '/^output:/,$d' \
-  "$root/validation/three_discs/case1.yaml" > "$out/iso.yaml"
+scene_edit "$case1" -o "$out/iso.yaml" "${relative[@]}" --set loading.0.isotropic.steps=1 --delete loading.1 \
+  --delete output
 same iso "$out/iso.yaml"
 scale iso 3e5
 # 2. A shear step from the prepared three discs: the scale is their mean normal force.
 "$gembem" run "$out/iso.abs.yaml" -o "$out/prep" --quiet || bad "the preparation failed"
-sed -e 's/  accuracy: 100 .*/  accuracy: {relative: 1e-4}/' -e 's/steps: 100,/steps: 1,/' -e '/isotropic:/d' \
-  -e '/^grains:/,/^box:/d' -e '/^output:/,$d' "$root/validation/three_discs/case1.yaml" > "$out/shear.yaml"
-echo "initial_state: $out/prep/state.yaml" >> "$out/shear.yaml"
+scene_edit "$case1" -o "$out/shear.yaml" "${relative[@]}" --set loading.1.shear_mean_stress.steps=1 --delete loading.0 \
+  --delete grains --delete box --delete output --add initial_state="$out/prep/state.yaml"
 same shear "$out/shear.yaml"
 mean_pn() { /usr/bin/python3 -c "
 import csv; p = [float(r['pn']) for r in csv.DictReader(open('$1')) if float(r['overlap']) > 0]
@@ -55,9 +57,9 @@ print(repr(sum(p) / len(p)))"; }
 scale shear "$(mean_pn "$out/prep/state_contacts.csv")"
 # 3. A host's 27 grains relaxed from their overlapping placement (global solver, the coupling): the
 # scale is the mean normal force of the placement's contacts, grains' and boundary particles'.
-sed -e "s|mesh: ../../meshes|mesh: $root/meshes|" -e 's/accuracy: 1.0e-9/accuracy: {relative: 1e-4}/' \
-  -e '/host_load/d' "$root/tests/hybrid/load_grains.yaml" > "$out/host.yaml"
-echo "output: {contacts_every: 1}" >> "$out/host.yaml"
+#    (load_grains.yaml's loading: 0 relax, 1 and 2 host_load)
+scene_edit "$root/tests/hybrid/load_grains.yaml" -o "$out/host.yaml" "${relative[@]}" --delete loading.2 \
+  --delete loading.1 --add 'output={contacts_every: 1}'
 same host "$out/host.yaml"
 scale host "$(mean_pn "$out/host.rel/contacts/contacts_000000.csv")"
 gb_test_end

@@ -11,13 +11,14 @@
 set -u
 gembem=$1; root=$(cd "$(dirname "$0")/../.." && pwd)
 source "$root/tests/csv.sh"
+source "$root/tests/scene.sh"
 out=$(mktemp -d); fail=0; passed=0
 ok() { echo "ok   $1"; passed=$((passed + 1)); }
 bad() { echo "FAIL $1"; fail=$((fail + 1)); }
-scene() { # STEPS CAP [CUTBACKS] > yaml
-  sed -e '/shear_mean_stress/d' -e "s/steps: 10}/steps: $1}/" -e 's/snapshot_steps: \[10, 110\]/snapshot_every: 0/' \
-      -e "s/max_iterations: 100000/max_iterations: $2${3:+\\n  cutbacks: $3}/" \
-      "$root/validation/three_discs/case1.yaml"
+scene() { # OUT.yaml STEPS CAP [CUTBACKS]: case1's isotropic stage (loading 0) alone
+  scene_edit "$root/validation/three_discs/case1.yaml" -o "$1" --delete loading.1 --set loading.0.isotropic.steps="$2" \
+    --delete output.snapshot_steps --add output.snapshot_every=0 --set solver.max_iterations="$3" \
+    ${4:+--add solver.cutbacks="$4"}
 }
 last() { csv_awk -v n="$2" '{ v = $col(n) } END { print v }' "$1/steps.csv"; } # RUN COLUMN: its value in the last row
 same_end() { # RUN_A RUN_B LABEL: width and height of the last rows to 1e-12 relative
@@ -26,10 +27,10 @@ same_end() { # RUN_A RUN_B LABEL: width and height of the last rows to 1e-12 rel
     d = 0; for (c = 1; c <= 2; c++) { e = (x[c] - y[c]) / y[c]; if (e < 0) e = -e; if (e > d) d = e }
     printf "%s: width and height differ by %.3g (relative)\n", l, d; exit d > 1e-12 }'
 }
-for s in "2 100000" "4 100000"; do scene $s > "$out/split${s%% *}.yaml"; "$gembem" run "$out/split${s%% *}.yaml" -o "$out/split${s%% *}" --quiet || bad "split run $s"; done
+for s in "2 100000" "4 100000"; do scene "$out/split${s%% *}.yaml" $s; "$gembem" run "$out/split${s%% *}.yaml" -o "$out/split${s%% *}" --quiet || bad "split run $s"; done
 its2=$(csv_awk '{ print $col("iterations") }' "$out/split2/steps.csv" | tail -n 2 | awk '{ s += $1 } END { print s }')
 
-scene 1 39 > "$out/cap39.yaml"
+scene "$out/cap39.yaml" 1 39
 if "$gembem" run "$out/cap39.yaml" -o "$out/cap39" --quiet; then
   r=$(last "$out/cap39" substeps); i=$(last "$out/cap39" iterations)
   [ "$r" = 2 ] && ok "cap 39: 2 sub-steps" || bad "cap 39: $r sub-steps, expected 2"
@@ -38,19 +39,19 @@ if "$gembem" run "$out/cap39.yaml" -o "$out/cap39" --quiet; then
   same_end "$out/cap39" "$out/split2" "cap 39 against two steps" && ok "cap 39 ends where two steps end" || bad "cap 39 end"
 else bad "cap 39: the cut-back step did not converge"; fi
 
-scene 1 35 > "$out/cap35.yaml"
+scene "$out/cap35.yaml" 1 35
 if "$gembem" run "$out/cap35.yaml" -o "$out/cap35" --quiet; then
   r=$(last "$out/cap35" substeps)
   [ "$r" = 4 ] && ok "cap 35: 4 sub-steps" || bad "cap 35: $r sub-steps, expected 4"
   same_end "$out/cap35" "$out/split4" "cap 35 against four steps" && ok "cap 35 ends where four steps end" || bad "cap 35 end"
 else bad "cap 35: the cut-back step did not converge"; fi
 
-scene 1 39 0 > "$out/nocut.yaml"
+scene "$out/nocut.yaml" 1 39 0
 msg=$("$gembem" run "$out/nocut.yaml" -o "$out/nocut" 2>&1 >/dev/null); code=$?
 [ $code -eq 3 ] && ok "cutbacks 0: exit 3" || bad "cutbacks 0: exit $code, expected 3"
 case "$msg" in *"did not converge in 39 iterations"*"(accuracy a = 100); the outputs hold the 0 completed steps"*)
   ok "cutbacks 0: no sub-step in the message";; *) bad "cutbacks 0: message: $msg";; esac
-scene 1 35 1 > "$out/onecut.yaml"
+scene "$out/onecut.yaml" 1 35 1
 msg=$("$gembem" run "$out/onecut.yaml" -o "$out/onecut" 2>&1 >/dev/null); code=$?
 [ $code -eq 3 ] && ok "cutbacks 1, cap 35: exit 3" || bad "cutbacks 1, cap 35: exit $code, expected 3"
 case "$msg" in *"nor in sub-steps down to 1/2 of the step; the outputs hold the 0 completed steps"*)

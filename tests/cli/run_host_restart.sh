@@ -23,6 +23,7 @@
 set -u
 gembem=$1; root=$(cd "$(dirname "$0")/../.." && pwd)
 source "$root/tests/csv.sh"
+source "$root/tests/scene.sh"
 source "$root/tools/lib.sh"
 gb_test_begin
 
@@ -47,14 +48,15 @@ cmp_csv() { # a b tol label [floors]
           exit (worst > tol || words > 0 || seen != rows) }' "$1" "$2"
 }
 
-# one scene, split after stage 1's first `split` steps into two runs
-restart_case() { # name scene sed-for-all sed-for-stage1 sed-for-stage2 one-go-first-row-of-stage2 [floors]
-  local name=$1 scene=$2 all=$3 s1=$4 s2=$5 first=$6 floors=${7:-} d=$out/$1
+# one scene, split after stage 1's first `split` steps into two runs: the scene edits (scene_edit
+# arguments) of the arrays all (the one-go run and both stages), s1 (stage 1) and s2 (stage 2, whose
+# grains come from stage 1's state instead)
+restart_case() { # name scene one-go-first-row-of-stage2 [floors]
+  local name=$1 scene=$2 first=$3 floors=${4:-} d=$out/$1
   mkdir -p "$d"
-  sed -e "s|\.\./\.\./meshes|$root/meshes|" -e "$all" "$scene" > "$d/one.yaml"
-  sed -e "$s1" "$d/one.yaml" > "$d/s1.yaml"
-  sed -e '/^grains:/,/^solver:/{/^solver:/!d}' -e 's|^solver:|initial_state: stage1/state.yaml\nsolver:|' -e "$s2" \
-      "$d/one.yaml" > "$d/s2.yaml"
+  scene_edit "$scene" -o "$d/one.yaml" "${all[@]}"
+  scene_edit "$d/one.yaml" -o "$d/s1.yaml" "${s1[@]}"
+  scene_edit "$d/one.yaml" -o "$d/s2.yaml" --delete grains --add initial_state=stage1/state.yaml "${s2[@]}"
   "$gembem" run "$d/one.yaml" -o "$d/one" --quiet || { bad "$name: the one-go run failed"; return; }
   "$gembem" run "$d/s1.yaml" -o "$d/stage1" --quiet || { bad "$name: stage 1 failed"; return; }
   "$gembem" run "$d/s2.yaml" -o "$d/stage2" --quiet || { bad "$name: the restart failed"; return; }
@@ -91,13 +93,14 @@ restart_case() { # name scene sed-for-all sed-for-stage1 sed-for-stage2 one-go-f
 }
 
 # 1. A confining pressure (stage 2 of 3: the relax, pressure steps in stage 1; the push in stage 2).
-restart_case pressure "$root/tests/hybrid/load_grains.yaml" '' '/increments: {top:/d' \
-  '/relax:/d; /increments: {left:/d' 3
+#    loading: 0 relax, 1 host_load left/right (the pressure), 2 host_load top (the push)
+all=(); s1=(--delete loading.2); s2=(--delete loading.1 --delete loading.0)
+restart_case pressure "$root/tests/hybrid/load_grains.yaml" 3
 # 2. An infinite plane: host_load of 3 steps split into 2 and 1; tangential forces on particles.
-restart_case remote "$root/tests/hybrid/load_grains_remote.yaml" \
-  's/grain_boundary: {kn: 1000, kt: 0, friction_deg: 0}/grain_boundary: {kn: 1000, kt: 500, friction_deg: 20}/' \
-  's/host_load: {steps: 3,/host_load: {steps: 2,/' '/relax:/d; s/host_load: {steps: 3,/host_load: {steps: 1,/' 3 \
-  ux:1e-4,uy:1e-4,fx:1,fy:1
+#    loading: 0 relax, 1 host_load (3 steps of remote stress)
+all=(--set 'materials.grain_boundary={kn: 1000, kt: 500, friction_deg: 20}')
+s1=(--set loading.1.host_load.steps=2); s2=(--set loading.1.host_load.steps=1 --delete loading.0)
+restart_case remote "$root/tests/hybrid/load_grains_remote.yaml" 3 ux:1e-4,uy:1e-4,fx:1,fy:1
 csv_awk 'NR > 1 && $col("j") ~ /^p/ && $col("pt") != 0 { n++ } END { exit !(n > 0) }' "$out/remote/stage1/state_contacts.csv" \
   && ok "remote: the state carries tangential forces on boundary particles" || bad "remote: no tangential force on a particle"
 # the scene's grains.max_overlap (0.7: the packing overlaps by up to 0.61) goes to its state, whose
@@ -113,19 +116,19 @@ refuse() { # label scene expected-message-regex
   if [ $code -eq 2 ] && [[ $msg =~ $3 ]] && [ ! -e "$d/refused" ]; then ok "$1: refused: $msg"
   else bad "$1: exit $code, '$msg', expected /$3/"; fi
 }
-sed 's/cavity: 24}/cavity: 25}/' "$d/s2.yaml" > "$d/r_elements.yaml"
+scene_edit "$d/s2.yaml" -o "$d/r_elements.yaml" --set host.elements.cavity=25
 refuse "another mesh" "$d/r_elements.yaml" \
   "stage1/state.yaml:[0-9]+:[0-9]+: host.elements: the state's host has 44 elements, the scene's mesh .* has 45"
-sed 's/left: {pressure: 0}/left: {traction: [0, 0]}/' "$d/s2.yaml" > "$d/r_kind.yaml"
+scene_edit "$d/s2.yaml" -o "$d/r_kind.yaml" --set 'host.boundary.left={traction: [0, 0]}'
 refuse "another condition" "$d/r_kind.yaml" \
   "stage1/state.yaml:[0-9]+:[0-9]+: host.boundary.left: the state's condition is pressure, the scene's traction"
 cp -r "$d/stage1" "$d/moved"; csv_awk 'NR == 3 { $col("x") = 1.5 } 1' OFS=, "$d/stage1/state_host.csv" > "$d/moved/state_host.csv"
-sed 's|stage1/state.yaml|moved/state.yaml|' "$d/s2.yaml" > "$d/r_moved.yaml"
+scene_edit "$d/s2.yaml" -o "$d/r_moved.yaml" --set initial_state=moved/state.yaml
 refuse "a particle off its element" "$d/r_moved.yaml" "moved/state_host.csv:3:[0-9]+: .*particle's centre on the element's midpoint"
 cp -r "$d/stage1" "$d/nohost"; sed -i '/^host:/,/^solver_state/{/^solver_state/!d}' "$d/nohost/state.yaml"
-sed 's|stage1/state.yaml|nohost/state.yaml|' "$d/s2.yaml" > "$d/r_nohost.yaml"
+scene_edit "$d/s2.yaml" -o "$d/r_nohost.yaml" --set initial_state=nohost/state.yaml
 refuse "a state without a host" "$d/r_nohost.yaml" "nohost/state.yaml:[0-9]+:[0-9]+: the state has no host"
-sed '/^host:/,/^  cavity: cavity/d' "$d/s2.yaml" > "$d/r_noscenehost.yaml"
+scene_edit "$d/s2.yaml" -o "$d/r_noscenehost.yaml" --delete host
 refuse "a scene without a host" "$d/r_noscenehost.yaml" "stage1/state.yaml:[0-9]+:[0-9]+: host: the state comes from a run with a host"
 
 # 4. A restart after the cavity has moved: stage 1's grains, particles and cavity displacements
@@ -141,7 +144,7 @@ lowest=$(csv_awk 'NR > 1 && (m == "" || $col("y") - $col("r") < m) { m = $col("y
   "$d/down/state_grains.csv")
 bottom=$(csv_awk 'NR > 1 && (m == "" || $col("y") - $col("uy") < m) { m = $col("y") - $col("uy") } END { print m }' \
   "$d/down/state_host.csv")
-sed 's|stage1/state.yaml|down/state.yaml|' "$d/s2.yaml" | sed 's/max_iterations: [0-9]*/max_iterations: 50/' > "$d/r_down.yaml"
+scene_edit "$d/s2.yaml" -o "$d/r_down.yaml" --set initial_state=down/state.yaml --set solver.max_iterations=50
 msg=$("$gembem" run "$d/r_down.yaml" -o "$d/down_run" --quiet 2>&1 >/dev/null); code=$?
 if [ $code -ne 2 ] && ! grep -q "outside" <<< "$msg" && awk -v l="$lowest" -v b="$bottom" 'BEGIN { exit !(l < b) }'; then
   ok "moved cavity: a restart with grains below the cavity at rest (lowest edge $lowest, cavity's rest bottom $bottom) runs (exit $code)"
@@ -150,7 +153,7 @@ else
 fi
 cp -r "$d/down" "$d/into_host"
 csv_awk 'BEGIN { OFS = ","; CONVFMT = "%.17g" } NR == 2 { $col("x") += 5 } 1' "$d/down/state_grains.csv" > "$d/into_host/state_grains.csv"
-sed 's|stage1/state.yaml|into_host/state.yaml|' "$d/s2.yaml" > "$d/r_into_host.yaml"
+scene_edit "$d/s2.yaml" -o "$d/r_into_host.yaml" --set initial_state=into_host/state.yaml
 refuse "a grain in the host after the cavity moved" "$d/r_into_host.yaml" "into_host/state_grains.csv:2:[0-9]+: grain 0 .* has its centre outside the host's cavity"
 
 gb_test_end

@@ -10,6 +10,7 @@
 set -u
 gembem=$1; root=$(cd "$(dirname "$0")/../.." && pwd)
 source "$root/tests/csv.sh"
+source "$root/tests/scene.sh"
 source "$root/tools/lib.sh"
 gb_test_begin
 
@@ -47,7 +48,7 @@ grep -q '^measures_every: 3 ' "$out/discs3/run_info.yaml" && ok "discs3: run_inf
 # 2. A host: the wall-only host measure of the rows equals the full one.
 host=$root/tests/hybrid/host_loading.yaml
 for k in 2 0; do
-  sed "s|\.\./\.\./meshes|$root/meshes|; \$a output: {measures_every: $k}" "$host" > "$out/host$k.yaml"
+  scene_edit "$host" -o "$out/host$k.yaml" --add output.measures_every=$k
   "$gembem" run "$out/host$k.yaml" -o "$out/host$k" --quiet || bad "host, k = $k: did not run"
 done
 "$gembem" run "$host" -o "$out/host1" --quiet || bad "host, default: did not run"

@@ -6,6 +6,7 @@
 set -u
 gembem=$1; root=$(cd "$(dirname "$0")/../.." && pwd)
 source "$root/tests/csv.sh"
+source "$root/tests/scene.sh"
 out=$(mktemp -d); fail=0
 case1=$root/validation/three_discs/case1.yaml
 
@@ -22,10 +23,12 @@ grep -q "status: not converged" "$out/capped/run_info.yaml" || { echo "FAIL: run
 
 # 2. Restart: one run, then the same in two runs.
 "$gembem" run "$case1" -o "$out/whole" --quiet || fail=1
-sed '/shear_mean_stress/d; s/snapshot_steps: \[10, 110\]/snapshot_every: 0/' "$case1" > "$out/prep.yaml"
+# case1's loading: 0 isotropic, 1 shear_mean_stress; its output: snapshot_steps only
+no_snapshots=(--delete output.snapshot_steps --add output.snapshot_every=0)
+scene_edit "$case1" -o "$out/prep.yaml" --delete loading.1 "${no_snapshots[@]}"
 "$gembem" run "$out/prep.yaml" -o "$out/prep" --quiet || fail=1
-sed -e '/^grains:/,/^box:/d' -e '/isotropic:/d' -e 's/snapshot_steps: \[10, 110\]/snapshot_every: 0/' \
-    -e 's|^solver:|initial_state: prep/state.yaml\nsolver:|' "$case1" > "$out/shear.yaml"
+scene_edit "$case1" -o "$out/shear.yaml" --delete grains --delete box --delete loading.0 "${no_snapshots[@]}" \
+  --add initial_state=prep/state.yaml
 "$gembem" run "$out/shear.yaml" -o "$out/shear" --quiet || fail=1
 # Compare the stress ratio of the last 100 rows (the shear) of both.
 shear_curve() { csv_awk '{ print $col("e1_minus_e2") "," $col("stress_ratio") }' "$1" | tail -n 100; }

@@ -17,7 +17,9 @@
 # exit 4, and the run resumes from its last checkpoint to the uninterrupted result.
 set -u
 source "$(dirname "$0")/resume_lib.sh"
-printf 'output: {snapshot_every: 3, contacts_every: 2, checkpoint_every: 3}\n' >> "$out/scenes/ref.yaml"
+# initial_state kept relative: the refusals below copy the scene and its test_state/ elsewhere
+scene_edit "$out/scenes/ref.yaml" -o "$out/scenes/ref.yaml" --set initial_state=test_state/state.yaml \
+  --add 'output={snapshot_every: 3, contacts_every: 2, checkpoint_every: 3}'
 
 kill_case reference "$out/scenes/ref.yaml" 10 25 "0.3 0.6"
 kill_case global "$out/scenes/global.yaml" 8 20
@@ -65,7 +67,7 @@ else bad "the run to refuse resumes of was not interrupted mid-way"; fi
 
 # A disk that fills: the file size limit stops micromechanics.csv at 24 KB (step 50 of 110).
 d=$out/full; mkdir -p "$d"; cd "$d"
-sed -e 's/snapshot_steps: \[10, 110\]/snapshot_every: 0/' "$root/validation/three_discs/case1.yaml" > scene.yaml
+scene_edit "$root/validation/three_discs/case1.yaml" -o scene.yaml --delete output.snapshot_steps --add output.snapshot_every=0
 mkdir ref cut; (cd ref && "$gembem" run ../scene.yaml -o run --quiet) || bad "disk full: the uninterrupted run failed"
 cd cut
 msg=$( (trap '' XFSZ; ulimit -f 24; "$gembem" run ../scene.yaml -o run --quiet) 2>&1); code=$?

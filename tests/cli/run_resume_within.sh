@@ -25,12 +25,11 @@
 set -u
 source "$(dirname "$0")/resume_lib.sh"
 
-sed -e 's/solver: {/solver: {history: true, /' -e 's/steps: 7/steps: 4/' "$out/scenes/ref.yaml" > "$out/scenes/ref_history.yaml"
-sed -e 's/max_iterations: 1000000/max_iterations: 1200/' -e 's/steps: 7/steps: 4/' "$out/scenes/ref.yaml" \
-  > "$out/scenes/cutback.yaml"
-sed -e 's/solver: {/solver: {history: true, /' "$out/scenes/hybrid.yaml" > "$out/scenes/hybrid_history.yaml"
-sed -e 's/max_iterations: 1000000/max_iterations: 60/' -e 's/steps: 7/steps: 4/' "$out/scenes/global.yaml" \
-  > "$out/scenes/global_cutback.yaml"
+steps4=(--set loading.0.shear_mean_stress.steps=4)   # of 7 in resume_lib.sh's ref and global
+scene_edit "$out/scenes/ref.yaml" -o "$out/scenes/ref_history.yaml" --add solver.history=true "${steps4[@]}"
+scene_edit "$out/scenes/ref.yaml" -o "$out/scenes/cutback.yaml" --set solver.max_iterations=1200 "${steps4[@]}"
+scene_edit "$out/scenes/hybrid.yaml" -o "$out/scenes/hybrid_history.yaml" --add solver.history=true
+scene_edit "$out/scenes/global.yaml" -o "$out/scenes/global_cutback.yaml" --set solver.max_iterations=60 "${steps4[@]}"
 
 # Before a resume: the checkpoint's step in progress, if any, as "STEP H CUTS PHASE" in $d/within.
 on_resume() {

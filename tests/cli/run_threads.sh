@@ -9,13 +9,19 @@
 set -u
 gembem=$1 packgen=$2; root=$(cd "$(dirname "$0")/../.." && pwd)
 source "$root/tests/csv.sh"
+source "$root/tests/scene.sh"
 out=$(mktemp -d); fail=0
 trap 'rm -rf "$out"' EXIT
 "$packgen" --method push --n 800 --diameters 0.6,0.9,1.2 --porosity 0.18 --max-overlap 0.015 --seed 3 \
   --out "$out/threads_grains.csv" > /dev/null || { echo "FAIL gb_packgen"; exit 1; }
 box=$(grep '^box:' "$out/threads_grains.box.yaml" | sed 's/^box: //')
+# tests/cli/scenes/threads.yaml with the packing's grains file and box, and THREADS threads
+threads_scene() { # OUT.yaml THREADS
+  scene_edit "$root/tests/cli/scenes/threads.yaml" -o "$1" --set grains.file="$out/threads_grains.csv" --set "box=$box" \
+    --set solver.threads="$2"
+}
 for t in 1 2; do
-  sed -e "s|box: BOX|box: $box|" -e "s|threads: THREADS|threads: $t|" "$root/tests/cli/scenes/threads.yaml" > "$out/t$t.yaml"
+  threads_scene "$out/t$t.yaml" $t
   OMP_NUM_THREADS=2 "$gembem" run "$out/t$t.yaml" -o "$out/t$t" --quiet || { echo "FAIL the run with $t threads"; fail=1; }
 done
 # every column of steps.csv but the wall-clock seconds, and the final state
@@ -26,7 +32,7 @@ for f in steps1.csv:steps2.csv t1/state_grains.csv:t2/state_grains.csv t1/state_
 done
 steps=$(csv_awk 'NR > 1 { n++ } END { print n }' "$out/t2/steps.csv")
 [ "$steps" = 5 ] && echo "ok   5 rows (the initial state, the relaxation, 3 steps)" || { echo "FAIL $steps rows"; fail=1; }
-sed -e "s|box: BOX|box: $box|" -e "s|threads: THREADS|threads: 0|" "$root/tests/cli/scenes/threads.yaml" > "$out/t0.yaml"
+threads_scene "$out/t0.yaml" 0
 msg=$("$gembem" run "$out/t0.yaml" -o "$out/t0" --quiet 2>&1); rc=$?
 if [ $rc = 2 ] && [ ! -e "$out/t0" ] && grep -q 'threads' <<< "$msg"; then echo "ok   threads: 0 refused ($msg)"
 else echo "FAIL threads: 0: exit $rc, $msg"; fail=1; fi

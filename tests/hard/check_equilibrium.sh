@@ -13,7 +13,7 @@ source "$(dirname "$0")/path_scene.sh"
 source "$(dirname "$0")/../csv.sh"
 rm -rf "$out"; mkdir -p "$out"
 for method in reference global line_search; do
-  path_scene $method "$jammed" "$out/$method.yaml" ", history: true" $'output: {contacts_every: 1}\n'
+  path_scene $method "$jammed" "$out/$method.yaml" --add solver.history=true --add 'output={contacts_every: 1}'
   OPENBLAS_NUM_THREADS=1 "$gembem" run "$out/$method.yaml" -o "$out/$method" --quiet > /dev/null
   if /usr/bin/python3 "$check" "$out/$method"; then ok "$method: the final state is an equilibrium"
   else bad "$method: the final state is not an equilibrium"; fi

@@ -19,10 +19,10 @@ gembem=$1 jammed=$2 out=$3
 source "$(dirname "$0")/path_scene.sh"
 source "$(dirname "$0")/../csv.sh"
 rm -rf "$out"; mkdir -p "$out"
-rolling="rolling: {kr: 2.5e6, eta: 0.1}"
+rolling="{kr: 2.5e6, eta: 0.1}"
 for method in reference global line_search; do
-  path_scene $method "$jammed" "$out/$method.yaml" "" "" \
-    -e "s|friction_deg: 25}|friction_deg: 25, $rolling}|" -e "s|friction_deg: 0}|friction_deg: 0, $rolling}|"
+  path_scene $method "$jammed" "$out/$method.yaml" \
+    --add "materials.grain_grain.rolling=$rolling" --add "materials.grain_wall.rolling=$rolling"
   grep -q "grain_wall: .*rolling" "$out/$method.yaml" || { echo "the scene has no rolling key"; exit 1; }
   OPENBLAS_NUM_THREADS=1 "$gembem" run "$out/$method.yaml" -o "$out/$method" --quiet > /dev/null
   if /usr/bin/python3 "$check" "$out/$method"; then ok "$method: the final state is an equilibrium with rolling moments"
@@ -48,7 +48,8 @@ sys.exit(0 if nonzero > len(rows) / 2 and at_limit > 0 else 1)
 EOF
 then ok "rolling moments on most contacts, some at their limit"; else bad "too few rolling moments"; fi
 # Rolling changes the answer: the stresses of the same path without it differ.
-sed -e "s|, $rolling||" "$out/reference.yaml" > "$out/none.yaml"
+scene_edit "$out/reference.yaml" -o "$out/none.yaml" --delete materials.grain_grain.rolling \
+  --delete materials.grain_wall.rolling
 OPENBLAS_NUM_THREADS=1 "$gembem" run "$out/none.yaml" -o "$out/none" --quiet > /dev/null
 last_s() { csv_awk '{ s = $col("s1") " " $col("s2") } END { print s }' "$1/steps.csv"; }
 s_with=$(last_s "$out/reference"); s_none=$(last_s "$out/none")
@@ -72,8 +73,8 @@ if /usr/bin/python3 "$check" "$out/limit" > "$out/limit.log" || ! grep -q "rolli
   bad "a rolling moment of 0.05 pn (the limit is at most 0.1 x 0.225 pn) passed"
 else ok "a rolling moment past its limit fails"; fi
 # Read back exactly: relax from the state; it is an equilibrium, so nothing moves and mr is unchanged.
-sed -e '/^grains:/d' -e '/^box:/d' -e '/^loading:/,$d' "$out/reference.yaml" > "$out/restart.yaml"
-printf 'initial_state: reference/state.yaml\nloading:\n  - relax: {steps: 1}\n' >> "$out/restart.yaml"
+scene_edit "$out/reference.yaml" -o "$out/restart.yaml" --delete grains --delete box \
+  --add initial_state=reference/state.yaml --set 'loading=[{relax: {steps: 1}}]'
 OPENBLAS_NUM_THREADS=1 "$gembem" run "$out/restart.yaml" -o "$out/restart" --quiet > /dev/null 2> "$out/restart.log"
 cols() { csv_awk '{ print $col("i"), $col("j"), $col("pn"), $col("pt"), $col("mr") }' "$1"; }
 if [ "$(cols "$out/reference/state_contacts.csv")" = "$(cols "$out/restart/state_contacts.csv")" ] &&
@@ -82,7 +83,7 @@ if [ "$(cols "$out/reference/state_contacts.csv")" = "$(cols "$out/restart/state
 else bad "the restarted state's contacts differ"; fi
 # And through a checkpoint (format 3 carries mr): killed at its 25th output write (GB_TEST_KILL_AT,
 # tests/cli/run_resume.sh), resumed to the end, the same final contacts byte for byte.
-sed -e 's/^loading:/output: {checkpoint_every: 1}\nloading:/' "$out/reference.yaml" > "$out/ck.yaml"
+scene_edit "$out/reference.yaml" -o "$out/ck.yaml" --add 'output={checkpoint_every: 1}'
 OPENBLAS_NUM_THREADS=1 "$gembem" run "$out/ck.yaml" -o "$out/ck_full" --quiet > /dev/null 2>&1
 (GB_TEST_KILL_AT=25 OPENBLAS_NUM_THREADS=1 "$gembem" run "$out/ck.yaml" -o "$out/ck_kill" --quiet > /dev/null 2>&1) 2> /dev/null || true
 for k in 1 2 3 4 5; do

@@ -8,9 +8,9 @@
 set -u
 valgrind=$1 gembem=$2
 root=$(cd "$(dirname "$0")/../.." && pwd)
+source "$root/tests/scene.sh"
 work=$(mktemp -d)
-sed -e "s|\.\./\.\./meshes|$root/meshes|" -e 's/linear: umfpack/linear: cholmod/' "$root/tests/hybrid/load_grains.yaml" \
-  > "$work/scene.yaml"
+scene_edit "$root/tests/hybrid/load_grains.yaml" -o "$work/scene.yaml" --set solver.linear=cholmod
 grep -q 'linear: cholmod' "$work/scene.yaml" || { echo "FAIL the scene does not use CHOLMOD"; exit 1; }
 # valgrind does not run AVX-512: a forced OpenBLAS kernel (OPENBLAS_CORETYPE=SkylakeX) would stop
 # at an illegal instruction, so OpenBLAS picks its kernel from the CPU valgrind emulates.

@@ -9,6 +9,7 @@ set -u
 gembem=$1; gmsh=$2; python=$3; dir=$(cd "$(dirname "$0")" && pwd); root=$dir/../..
 out=$(mktemp -d); fail=0
 trap 'rm -rf "$out"' EXIT
+source "$dir/../scene.sh"
 check() { "$python" "$dir/check_pack.py" "$@" || fail=$((fail + 1)); }
 run() { "$gembem" "$@" --quiet || { echo "FAIL gembem $*"; fail=$((fail + 1)); }; }
 cp "$dir"/*.yaml "$out/"
@@ -25,7 +26,7 @@ done
 strip() { grep -v -e '^made:' -e '^seconds:' -e '^command:' "$1"; }
 [ "$(strip deposition/pack_info.yaml)" = "$(strip deposition2/pack_info.yaml)" ] ||
   { echo "FAIL pack_info.yaml differs between two runs of one seed"; fail=$((fail + 1)); }
-sed -i 's/seed: 3/seed: 4/' cavity_deposition.yaml
+scene_edit cavity_deposition.yaml -o cavity_deposition.yaml --set pack.seed=4   # of 3
 run pack cavity_deposition.yaml -o deposition3
 cmp -s deposition/state_grains.csv deposition3/state_grains.csv && { echo "FAIL another seed, the same grains"; fail=$((fail + 1)); }
 run run cavity_run.yaml -o cavity_run
@@ -48,8 +49,8 @@ PY
 # give the same bytes (src/pack/fire.c's fixed decomposition); FIRE calls no BLAS, so only its own loops'
 # thread count differs between the two runs
 for t in 1 2; do
-  sed -e "s/count: 300/count: 4500/; s/right: 10,/right: 38,/; s/top: 10}/top: 38}/" \
-      -e "s/^solver: {/solver: {threads: $t, /" box_growth.yaml > threads$t.yaml
+  scene_edit box_growth.yaml -o threads$t.yaml --set pack.count=4500 --set box.right=38 --set box.top=38 \
+    --add solver.threads=$t   # of 300 grains in 10 x 10
   run pack threads$t.yaml -o threads$t
 done
 for f in state_grains.csv state_contacts.csv; do

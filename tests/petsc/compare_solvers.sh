@@ -16,6 +16,7 @@ set -euo pipefail
 mpiexec=$1 gembem=$2 build=$3 work=$4 case=$5
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
+source "$root/tests/scene.sh"
 rm -rf "$work"
 mkdir -p "$work"
 # One BLAS thread per rank (2 ranks on 2 cores); Open MPI as root in containers and CI.
@@ -24,25 +25,25 @@ launch=("$mpiexec" -np 2)
 "$mpiexec" --version 2>&1 | grep -q "Open MPI" && launch+=(--oversubscribe)
 if [ "$case" = jammed ]; then
   "$root/tools/jammed_packing.sh" "$build" "$work/pack" 10000 1 10 > /dev/null
-  scene() { # LINEAR OUT: the packing's scene with the global solver and a linear solver
-    sed -e "s/^solver: .*/solver: {method: global, $1, accuracy: 100, max_iterations: 2000000}/" \
-        -e 's/  - isotropic: {stress: 1.5e5, steps: 1}/  - isotropic: {stress: 6.0e5, steps: 2}/' \
-        "$work/pack/scene.yaml" > "$work/pack/$2.yaml"
+  scene() { # OUT LINEAR [PETSC]: the packing's scene with the global solver and a linear solver
+    scene_edit "$work/pack/scene.yaml" -o "$work/pack/$1.yaml" \
+      --set "solver={method: global, linear: $2, accuracy: 100, max_iterations: 2000000}" ${3:+--add "solver.petsc=$3"} \
+      --set 'loading.0.isotropic={stress: 6.0e5, steps: 2}'   # of 1.5e5 in 1 step
   }
   dir=$work/pack tols=(2.6 1e-5)
   # CG + GAMG took 348 s on this packing (a poor case for algebraic multigrid, docs/scaling.md):
   # it is compared on the hybrid scene only
   solvers=mumps
 else
-  scene() {
-    sed -e "s|\.\./\.\./meshes|$root/meshes|" -e "s/linear: umfpack/$1/" "$root/tests/hybrid/load_grains.yaml" \
-      > "$work/$2.yaml"
+  scene() { # OUT LINEAR [PETSC]
+    scene_edit "$root/tests/hybrid/load_grains.yaml" -o "$work/$1.yaml" --set solver.linear="$2" \
+      ${3:+--add "solver.petsc=$3"}
   }
   dir=$work tols=(1 1 1e-6) solvers="mumps gamg"
 fi
-scene "linear: cholmod" cholmod
-scene "linear: petsc" mumps
-[ "$case" = hybrid ] && scene "linear: petsc, petsc: {ksp: cg, pc: gamg}" gamg
+scene cholmod cholmod
+scene mumps petsc
+[ "$case" = hybrid ] && scene gamg petsc "{ksp: cg, pc: gamg}"
 GB_DUMP_FIRST_SOLVE=$work/x_cholmod "$gembem" run "$dir/cholmod.yaml" -o "$work/cholmod" --quiet
 fail=0
 for s in $solvers; do
@@ -53,12 +54,12 @@ for s in $solvers; do
     "${tols[@]}" || fail=1
 done
 # The scene reader: a misspelt KSP, and a petsc section for another linear solver (exit 2).
-expect_refusal() { # SOLVER_LINE MESSAGE
-  scene "$1" bad
+expect_refusal() { # LINEAR PETSC MESSAGE
+  scene bad "$1" "$2"
   if "$gembem" run "$dir/bad.yaml" -o "$work/bad" > "$work/bad.log" 2>&1; then rc=0; else rc=$?; fi
-  if [ "$rc" -eq 2 ] && grep -q "$2" "$work/bad.log"; then echo "ok   refused: $(head -1 "$work/bad.log")"
-  else echo "FAIL expected exit 2 and '$2', got $rc: $(cat "$work/bad.log")"; fail=1; fi
+  if [ "$rc" -eq 2 ] && grep -q "$3" "$work/bad.log"; then echo "ok   refused: $(head -1 "$work/bad.log")"
+  else echo "FAIL expected exit 2 and '$3', got $rc: $(cat "$work/bad.log")"; fail=1; fi
 }
-expect_refusal "linear: petsc, petsc: {ksp: cgg}" "solver.petsc.ksp: expected one of"
-expect_refusal "linear: cholmod, petsc: {pc: gamg}" "solver.petsc: applies to linear: petsc only"
+expect_refusal petsc "{ksp: cgg}" "solver.petsc.ksp: expected one of"
+expect_refusal cholmod "{pc: gamg}" "solver.petsc: applies to linear: petsc only"
 exit $fail

@@ -7,8 +7,8 @@ gembem=$1
 root=$(cd "$(dirname "$0")/../.." && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-sed -e "s|\.\./\.\./meshes|$root/meshes|" -e "s/linear: umfpack/linear: petsc/" "$root/tests/hybrid/load_grains.yaml" \
-  > "$work/scene.yaml"
+source "$root/tests/scene.sh"
+scene_edit "$root/tests/hybrid/load_grains.yaml" -o "$work/scene.yaml" --set solver.linear=petsc
 "$gembem" run "$work/scene.yaml" -o "$work/run" > "$work/log" 2>&1
 rc=$?
 msg="built without PETSc; install libpetsc-real-dev and rebuild"
