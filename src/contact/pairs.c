@@ -21,8 +21,9 @@ void gb_pair_set_free(gb_pair_set *P)
 void gb_pair_search_free(gb_pair_search *S)
 {
     free(S->tmp);
-    free(S->cell_head);
-    free(S->cell_next);
+    free(S->cell_start);
+    free(S->cell_grains);
+    free(S->grain_cell);
     for (int t = 0; t < GB_PAIRS_MAX_THREADS; t++) free(S->tcand[t]);
     free(S->count);
     free(S->old_start);
@@ -205,11 +206,13 @@ static int candidates(gb_pair_search *S, const gb_grid *G, const gb_world *w, in
         if (y < 0 || y >= G->ny) continue;
         for (int x = cx - 1; x <= cx + 1; x++) {
             if (x < 0 || x >= G->nx) continue;
-            for (int j = S->cell_head[y * G->nx + x]; j >= 0; j = S->cell_next[j]) {
-                if (j <= i) continue;
-                double dx = g[j].x - a->x, dy = g[j].y - a->y, reach = a->r + g[j].r + S->skin;
+            int c = y * G->nx + x;
+            const gb_cell_entry *e = &S->cell_grains[S->cell_start[c]], *end = &S->cell_grains[S->cell_start[c + 1]];
+            for (; e < end; e++) {
+                if (e->j <= i) continue;
+                double dx = e->x - a->x, dy = e->y - a->y, reach = a->r + e->r + S->skin;
                 if (dx * dx + dy * dy >= reach * reach) continue;
-                if (push(S, t, at + nc++, j)) return -1;
+                if (push(S, t, at + nc++, e->j)) return -1;
             }
         }
     }
@@ -247,12 +250,14 @@ gb_status gb_pairs_rebuild(gb_pair_set *P, gb_pair_search *S, const gb_world *w,
     int ncx = (int)((xmax - xmin) / h) + 1, ncy = (int)((ymax - ymin) / h) + 1;
     int ncells = ncx * ncy;
     const gb_grid G = {xmin, ymin, h, ncx, ncy};
-    if ((st = grow((void **)&S->cell_head, &S->n_cells_cap, ncells, sizeof(int), err))) return st;
-    if (!S->cell_next && !(S->cell_next = malloc((size_t)(n > 0 ? n : 1) * sizeof(int))))
+    if ((st = grow((void **)&S->cell_start, &S->n_cells_cap, ncells + 1, sizeof(int), err))) return st;
+    size_t nn = (size_t)(n > 0 ? n : 1);
+    if ((!S->cell_grains && !(S->cell_grains = malloc(nn * sizeof *S->cell_grains))) ||
+        (!S->grain_cell && !(S->grain_cell = malloc(nn * sizeof(int)))))
         return gb_fail(err, GB_ENOMEM, "out of memory for the cell list");
     if (!P->x0 && !(P->x0 = malloc((size_t)(2 * (n > 0 ? n : 1)) * sizeof(double))))
         return gb_fail(err, GB_ENOMEM, "out of memory for the cell list");
-    for (int c = 0; c < ncells; c++) S->cell_head[c] = -1;
+    memset(S->cell_start, 0, (size_t)(ncells + 1) * sizeof(int));
     if (np > 0) {
         if ((st = grow((void **)&S->pcell_head, &S->n_pcells_cap, ncells, sizeof(int), err)) ||
             (st = grow((void **)&S->pcell_next, &S->n_particles_cap, np, sizeof(int), err)))
@@ -265,13 +270,21 @@ gb_status gb_pairs_rebuild(gb_pair_set *P, gb_pair_search *S, const gb_world *w,
             S->pcell_head[cy * ncx + cx] = e;
         }
     }
-    /* Insert in reverse so that each cell lists its grains in increasing order. */
-    for (int i = n - 1; i >= 0; i--) {
+    /* The grains by cell (a counting sort, each cell's in increasing order), with their centres
+     * and radii: a cell's grains are then read one after the other, not by following links. */
+    for (int i = 0; i < n; i++) {
         int cx, cy;
         cell_of(&G, g[i].x, g[i].y, &cx, &cy);
-        S->cell_next[i] = S->cell_head[cy * ncx + cx];
-        S->cell_head[cy * ncx + cx] = i;
+        S->grain_cell[i] = cy * ncx + cx;
+        S->cell_start[cy * ncx + cx + 1]++;
     }
+    for (int c = 0; c < ncells; c++) S->cell_start[c + 1] += S->cell_start[c];
+    for (int i = 0; i < n; i++) {
+        gb_cell_entry *e = &S->cell_grains[S->cell_start[S->grain_cell[i]]++];
+        e->x = g[i].x, e->y = g[i].y, e->r = g[i].r, e->j = i;
+    }
+    for (int c = ncells; c > 0; c--) S->cell_start[c] = S->cell_start[c - 1]; /* back to each cell's start */
+    S->cell_start[0] = 0;
 
     /* The candidates in two passes over the grains, each thread on one contiguous range of them
      * (the same in both): their sorted candidates into the thread's buffer, then, after the

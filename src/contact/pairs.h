@@ -56,6 +56,12 @@ typedef struct {
     long generation;
 } gb_pair_set;
 
+/* A grain in the search's cell order: its centre and radius at the rebuild, and its index. */
+typedef struct {
+    double x, y, r;
+    int j;
+} gb_cell_entry;
+
 /* A rebuild runs on threads from this many grains; at most this many threads. */
 enum { GB_PAIRS_PARALLEL = 4096, GB_PAIRS_MAX_THREADS = 64 };
 
@@ -65,7 +71,9 @@ typedef struct {
     gb_pair *tmp;         /* the next list while rebuilding */
     int tmp_cap;
     int *pcell_head, *pcell_next, n_pcells_cap, n_particles_cap; /* boundary particles by cell */
-    int *cell_head, *cell_next, n_cells_cap;
+    int *cell_start, n_cells_cap; /* cell c's grains: cell_grains[cell_start[c] .. cell_start[c + 1]) */
+    gb_cell_entry *cell_grains;
+    int *grain_cell;      /* each grain's cell */
     int threads;          /* OpenMP threads of a rebuild (1 if 0); the list is the same on any count */
     int *tcand[GB_PAIRS_MAX_THREADS]; /* each thread's candidates, grain after grain */
     int tcand_cap[GB_PAIRS_MAX_THREADS];
