@@ -18,7 +18,8 @@
 #   [LAMMPS_MAX_STEPS=20000000] [MAX_ITERATIONS=1000] [REF_MAX_ITERATIONS=1000000]
 #   [REF_MAX_N=10000] [RUNS="lammps line_search damped reference"] [SWEEP=1]
 #   [RANKS=1] (LAMMPS on RANKS MPI processes: mpirun, Debian's openmpi-bin) [THREADS=1] (gembem's
-#   solver.threads)
+#   solver.threads) [KN_SCALE=1] (kn, kt and the static criterion times KN_SCALE: the same
+#   packing with stiffer springs, issue 15's cost in kn)
 #   tools/bench_peer.sh [BUILD_DIR] [N ...]        (default: build, 1000 10000 100000)
 #
 # Set-up (this script's own; tools/setup.sh and the tests do not need LAMMPS): `lmp` and
@@ -76,6 +77,9 @@ LAMMPS_DT=${LAMMPS_DT:-0.2} LAMMPS_ZETA=${LAMMPS_ZETA:-0.5} LAMMPS_TDAMP=${LAMMP
 LAMMPS_VISCOUS=${LAMMPS_VISCOUS:-0.01} LAMMPS_MAX_STEPS=${LAMMPS_MAX_STEPS:-20000000}
 REF_MAX_N=${REF_MAX_N:-10000} RUNS=${RUNS:-lammps line_search damped reference}
 RANKS=${RANKS:-1}
+export KN_SCALE=${KN_SCALE:-1} # read by tools/solver_packing.sh
+sfx=""; [ "$KN_SCALE" = 1 ] || sfx=_kn$KN_SCALE # the runs' directories
+read -r kn kt acc < <(awk -v s="$KN_SCALE" 'BEGIN { printf "%.6g %.6g %.6g\n", 1.0e8 * s, 7.0e7 * s, 100 * s }')
 export THREADS=${THREADS:-1} # read by tools/solver_packing.sh
 export MAX_ITERATIONS=${MAX_ITERATIONS:-1000} REF_MAX_ITERATIONS=${REF_MAX_ITERATIONS:-1000000}
 export OPENBLAS_NUM_THREADS=${OPENBLAS_NUM_THREADS:-1} OMP_NUM_THREADS=${OMP_NUM_THREADS:-1}
@@ -114,7 +118,7 @@ fi
 echo "threads: OPENBLAS_NUM_THREADS=$OPENBLAS_NUM_THREADS, OMP_NUM_THREADS=$OMP_NUM_THREADS; gembem solver.threads $THREADS; LAMMPS ${lmp_cmd[*]}"
 echo "gembem $(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo '?'); LAMMPS ${lmp_version:-?} (Debian $(dpkg-query -W -f='${Version}' lammps 2>/dev/null || echo '?'))"
 echo "LAMMPS: dt $LAMMPS_DT sqrt(m_min/kn), zeta_n $LAMMPS_ZETA, tangential damping $LAMMPS_TDAMP, viscous $LAMMPS_VISCOUS sqrt(kn/m_min) m; contact law check: $(echo "$law" | tail -1)"
-echo "problem: 25 deg between discs, frictionless fixed walls, kn 1e8, kt 7e7 dyn/cm; static criterion: every disc's largest fixing force <= 100 dyn (tools/check_equilibrium.py)"
+echo "problem: 25 deg between discs, frictionless fixed walls, kn $kn, kt $kt dyn/cm; static criterion: every disc's largest fixing force <= $acc dyn (tools/check_equilibrium.py)"
 echo
 
 # timed OUT_PREFIX DIR CMD...: CMD in DIR under /usr/bin/time; OUT_PREFIX.time gets "s KB",
@@ -129,7 +133,7 @@ secs_mb() { grep -v status "$1.time" | tail -1 | awk '{ printf "%s %.0f", $1, $2
 # state has no steps.csv with a resolved accuracy); sets chk (passed / FAILED ...) and force
 check() {
   local out
-  out=$($py "$root/tools/check_equilibrium.py" "$1" --accuracy 100 2>&1)
+  out=$($py "$root/tools/check_equilibrium.py" "$1" --accuracy "$acc" 2>&1)
   local code=$?
   force=$(echo "$out" | sed -n 's/.*largest fixing force \([0-9.eE+-]*\) dyn.*/\1/p' | head -1)
   force=${force:--}
@@ -149,7 +153,7 @@ lammps_run() {
   rm -rf "$d"; mkdir -p "$d"
   $py "$root/tools/lammps_peer.py" input "$top/n$n/packing.csv" "$top/n$n/packing.box.yaml" "$d" \
     --dt-factor "$3" --zeta-n "$4" --tangential-damping "$5" --viscous "$6" \
-    --max-steps "$LAMMPS_MAX_STEPS" > /dev/null
+    --max-steps "$LAMMPS_MAX_STEPS" --kn-scale "$KN_SCALE" --accuracy "$acc" > /dev/null
   timed "$d/lmp" "$d" "${lmp_cmd[@]}" -nocite -in in.relax -log log.lammps -screen none
   code=$?
   read -r lmp_secs lmp_mb < <(secs_mb "$d/lmp")
@@ -163,7 +167,7 @@ lammps_run() {
   lmp_steps=${last%% *}
   local quench
   quench=$(grep -c '^static check' "$d/log.lammps")
-  if awk -v f="${last##* }" 'BEGIN { exit !(f <= 100) }'; then
+  if awk -v f="${last##* }" -v a="$acc" 'BEGIN { exit !(f <= a) }'; then
     lmp_status="static ($quench velocity zeroings)"
   else
     lmp_status="not static after $lmp_steps steps (${last##* } dyn)"
@@ -208,7 +212,7 @@ for n in $sizes; do
   echo "|---|---|---|---|---|---|---|---|---|---|"
   lmp_secs="" lmp_ok=0
   if [[ " $RUNS " == *" lammps "* ]]; then
-    lammps_run "$n" "$d/lammps" "$LAMMPS_DT" "$LAMMPS_ZETA" "$LAMMPS_TDAMP" "$LAMMPS_VISCOUS"
+    lammps_run "$n" "$d/lammps$sfx" "$LAMMPS_DT" "$LAMMPS_ZETA" "$LAMMPS_TDAMP" "$LAMMPS_VISCOUS"
     echo "| $n | $lmp_label | $lmp_status | $lmp_steps | $lmp_secs | $lmp_mb | $lmp_force | 1 | $lmp_contacts | $lmp_stress |"
   fi
   for variant in line_search damped reference; do
@@ -220,7 +224,7 @@ for n in $sizes; do
         [ "$n" -le "$REF_MAX_N" ] || continue
         env=(SOLVER=reference) label="gembem reference iteration$gb_label" scene=relax_friction_reference;;
     esac
-    v=$d/$variant
+    v=$d/$variant$sfx
     env "${env[@]}" PACKING="$d/packing.csv" "$root/tools/solver_packing.sh" "$build" "$v" "$n" 1 > /dev/null 2>&1 || {
       echo "| $n | $label | tools/solver_packing.sh failed | | | | | | | |"; continue; }
     timed "$v/$scene" "$v" "$build/gembem" run "$scene.yaml" -o "$scene" --overwrite --quiet

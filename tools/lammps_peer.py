@@ -53,7 +53,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 import gembem  # noqa: E402
 from gembem.yamlfile import dump_yaml  # noqa: E402
 
-KN, KT, PHI_DEG, RHO = 1.0e8, 7.0e7, 25.0, 2.65
+KN0, KT0, PHI_DEG, RHO = 1.0e8, 7.0e7, 25.0, 2.65
 
 
 def read_packing(path):
@@ -70,6 +70,8 @@ def read_box(path):
 
 
 def write_input(a):
+    # --kn-scale s: kn and kt times s (the same packing, forces s times larger: the accuracy too)
+    KN, KT = a.kn_scale * KN0, a.kn_scale * KT0
     grains = read_packing(a.packing)
     box = read_box(a.box)
     os.makedirs(a.out, exist_ok=True)
@@ -260,7 +262,7 @@ create_atoms    1 single 0 0 0
 set             atom 1 diameter {2 * r1}
 set             atom 2 diameter {2 * r2}
 set             group all density/disc {RHO}
-pair_style      gran/hooke/history {KN:.17g} {KT:.17g} 0 0 {xmu:.17g} 0
+pair_style      gran/hooke/history {KN0:.17g} {KT0:.17g} 0 0 {xmu:.17g} 0
 pair_coeff      * *
 neighbor        0.1 bin
 timestep        {dt}
@@ -294,14 +296,14 @@ run             {nsteps}
                 snaps[-1].append([float(v) for v in line.split()])
     if len(snaps) != 4 or any(len(s) != 1 for s in snaps):
         sys.exit("lammps_peer lawcheck: expected 4 snapshots of one contact in law.dump")
-    worst, scale = 0.0, KT * u1
+    worst, scale = 0.0, KT0 * u1
     labels = ["pressed", f"slid by u1 = {u1:g}", f"spun by r1 w = {r1 * w:g}", f"slid by {u3:g} more"]
-    expect_pt = [0.0, KT * u1, KT * (u1 + r1 * w), None]
+    expect_pt = [0.0, KT0 * u1, KT0 * (u1 + r1 * w), None]
     for k, (snap, lab) in enumerate(zip(snaps, labels)):
         p1, p2, dist, fnorm, fs1, fs2 = snap[0]
         if int(p1) != 1:  # the force on disc 1
             fs1, fs2 = -fs1, -fs2
-        pn_expect = KN * (r1 + r2 - dist)
+        pn_expect = KN0 * (r1 + r2 - dist)
         x1 = [0.0, u1, u1, u1 + u3][k]  # disc 1's centre (x1, y1), prescribed by fix move
         nx, ny = -x1 / dist, -y1 / dist  # from disc 1 to disc 2 (at the origin)
         pt = -(fs1 * -ny + fs2 * nx)  # the tangential force on disc 1 is -pt t, t = (-ny, nx)
@@ -327,6 +329,7 @@ def main():
     p.add_argument("--viscous", type=float, default=0.01)
     p.add_argument("--accuracy", type=float, default=100.0)
     p.add_argument("--max-steps", type=int, default=10000000)
+    p.add_argument("--kn-scale", type=float, default=1.0)
     p = sub.add_parser("state")
     p.add_argument("out")
     p = sub.add_parser("lawcheck")

@@ -26,11 +26,11 @@ expect_refused() {
 
 # The materials of Kishino (1989) Table 3: kn, kt = 1e8, 7e7 dyn/cm, grain-grain friction $1 deg
 # (default 25), frictionless walls.
-table3_materials() {
+table3_materials() { # [FRICTION_DEG (25)] [KN (1.0e8)] [KT (7.0e7)]
   cat <<YAML
 materials:
-  grain_grain: {kn: 1.0e8, kt: 7.0e7, friction_deg: ${1:-25}}
-  grain_wall:  {kn: 1.0e8, kt: 7.0e7, friction_deg: 0}
+  grain_grain: {kn: ${2:-1.0e8}, kt: ${3:-7.0e7}, friction_deg: ${1:-25}}
+  grain_wall:  {kn: ${2:-1.0e8}, kt: ${3:-7.0e7}, friction_deg: 0}
 YAML
 }
 # The head of a scene in cm and dyn with those materials and the grains of file $1; the box or

@@ -14,6 +14,7 @@
 #
 #   [KEEP=1] [PACKING=FILE.csv] [PERTURB=f] [SOLVER=global|reference] [LINEAR=cholmod|umfpack]
 #   [NEWTON=damped|line_search] [THREADS=1] (solver.threads: the contacts' updates on THREADS cores)
+#   [KN_SCALE=1] (kn, kt and the accuracy a times KN_SCALE: the same packing, stiffer springs)
 #   [MAX_ITERATIONS=1000] [PATH_MAX_ITERATIONS=500] [REF_MAX_ITERATIONS=1000000]
 #   tools/solver_packing.sh BUILD_DIR OUT_DIR N SEED [STATE_RUN_DIR]
 #
@@ -32,6 +33,8 @@ source "$(dirname "$0")/lib.sh"
   echo "usage: tools/solver_packing.sh BUILD_DIR OUT_DIR N SEED [STATE_RUN_DIR]" >&2; exit 2; }
 build=$1 out=$2 n=$3 seed=$4 state=${5:-${STATE:-}}
 solver=${SOLVER:-global} linear=${LINEAR:-cholmod} newton=${NEWTON:-damped} threads=${THREADS:-1}
+s=${KN_SCALE:-1}
+read -r kn kt acc < <(awk -v s="$s" 'BEGIN { printf "%.17g %.17g %.17g\n", 1.0e8 * s, 7.0e7 * s, 100 * s }')
 case $newton in damped|line_search) ;; *) echo "solver_packing.sh: NEWTON must be damped or line_search" >&2; exit 2;; esac
 [ "$newton" = damped ] || [ "$linear" = umfpack ] || { echo "solver_packing.sh: NEWTON=line_search needs LINEAR=umfpack" >&2; exit 2; }
 case $solver in global|reference) ;; *) echo "solver_packing.sh: SOLVER must be global or reference" >&2; exit 2;; esac
@@ -72,9 +75,9 @@ box=$(grep '^box:' "$out/packing.box.yaml")
 # solver: line for a method and an iteration cap (linear only for the global solver)
 solver_line() {
   if [ "$1" = global ]; then
-    echo "solver: {method: global, linear: $linear, newton: $newton, threads: $threads, accuracy: 100, max_iterations: $2}"
+    echo "solver: {method: global, linear: $linear, newton: $newton, threads: $threads, accuracy: $acc, max_iterations: $2}"
   else
-    echo "solver: {method: reference, threads: $threads, accuracy: 100, max_iterations: $2}"
+    echo "solver: {method: reference, threads: $threads, accuracy: $acc, max_iterations: $2}"
   fi
 }
 # A relaxation scene: friction, method, cap, file
@@ -84,7 +87,7 @@ relax_scene() {
 # packing of $n discs, seed $seed${PERTURB:+, centres perturbed by $PERTURB r}.
 gembem: 1
 units: {length: cm, force: dyn}
-$(table3_materials "$1")
+$(table3_materials "$1" "$kn" "$kt")
 grains: {file: $grains}
 $box
 $(solver_line "$2" "$3")
@@ -102,7 +105,7 @@ cat > "$out/path.yaml" <<YAML
 # fixed) of 1 % in 20 steps from the final state of a friction relaxation.
 gembem: 1
 units: {length: cm, force: dyn}
-$(table3_materials 25)
+$(table3_materials 25 "$kn" "$kt")
 initial_state: $state/state.yaml
 $(solver_line "$solver" "${PATH_MAX_ITERATIONS:-500}")
 loading:
