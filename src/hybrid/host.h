@@ -28,7 +28,7 @@ typedef struct {
     gb_bem_mesh mesh;
     gb_bem_system sys;
     gb_bem_problem prob;  /* the conditions, with their values at creation (now: gb_host_vars) */
-    gb_bem_stiffness K;  /* on the cavity group, in its element order */
+    gb_bem_stiffness K;  /* on the cavity group, in its element order; K.f0: f0 at creation (now: gb_host_vars) */
     double *Ksym;        /* (K + K^t)/2, for the symmetric (CHOLMOD) solve */
     int cavity;          /* the cavity's group index */
     int m;               /* 2 x cavity elements */
