@@ -575,7 +575,7 @@ gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const unsigned char *in_sy
             continue;
         }
         for (int q = 0; q < 3; q++) d[q] = gl->held[3 * i + q] ? 0 : scale * gl->x[3 * i + q];
-        if (sv->newton == GB_NEWTON_LINE_SEARCH && fabs(d[2]) > TURN_MOVES * sv->max_move * sim->g[i].r)
+        if (sv->newton == GB_NEWTON_LINE_SEARCH && fabs(d[2]) > TURN_MOVES * sv->max_move * sim->state.g[i].r)
             d[2] = 0; /* d[2] = r dw */
     }
     for (int e = 0; e < np; e++)

@@ -25,8 +25,8 @@ static const double KN = 1e8, KT = 7e7, KR = 2e6, ETA = 0.2, D = 1e-3, R = 1;
 
 static gb_pair *pair_of(gb_sim *sim, int i, int j)
 {
-    for (int k = 0; k < sim->pairs.n; k++)
-        if (sim->pairs.p[k].i == i && sim->pairs.p[k].j == j) return &sim->pairs.p[k];
+    for (int k = 0; k < sim->state.pairs.n; k++)
+        if (sim->state.pairs.p[k].i == i && sim->state.pairs.p[k].j == j) return &sim->state.pairs.p[k];
     return NULL;
 }
 
@@ -96,14 +96,14 @@ static void relaxed(void)
     if (st) fprintf(stderr, "%s\n", err.msg);
     gb_pair *p = pair_of(sim, 0, 1);
     printf("rolling pair relaxed: %ld iterations, largest force %.3g, turns %.10g %.10g (analytic +-%.10g), "
-           "mr %.3g pt %.3g\n", it, mf, sim->g[0].rot, sim->g[1].rot, w, p->mr, p->pt);
-    CHECK_NEAR(fabs(sim->g[0].rot), w, 1e-3 * w);
-    CHECK_NEAR(sim->g[0].rot + sim->g[1].rot, 0, 1e-3 * w);
+           "mr %.3g pt %.3g\n", it, mf, sim->state.g[0].rot, sim->state.g[1].rot, w, p->mr, p->pt);
+    CHECK_NEAR(fabs(sim->state.g[0].rot), w, 1e-3 * w);
+    CHECK_NEAR(sim->state.g[0].rot + sim->state.g[1].rot, 0, 1e-3 * w);
     CHECK_NEAR(p->mr, 0, 1e-3 * limit);
     CHECK_NEAR(p->pt, 0, 1e-3 * KN * D);
     for (int i = 0; i < 2; i++) {
-        CHECK_NEAR(sim->g[i].x, g[i].x, 1e-6 * R);
-        CHECK_NEAR(sim->g[i].y, g[i].y, 1e-6 * R);
+        CHECK_NEAR(sim->state.g[i].x, g[i].x, 1e-6 * R);
+        CHECK_NEAR(sim->state.g[i].y, g[i].y, 1e-6 * R);
     }
     gb_sim_free(sim);
 }
