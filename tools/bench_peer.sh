@@ -10,13 +10,16 @@
 #     with CHOLMOD, and (N <= REF_MAX_N, default 10000) the reference iteration.
 # Every final state, LAMMPS's too, is checked by tools/check_equilibrium.py: it recomputes every
 # disc's force and moment from the positions and the stored tangential forces (LAMMPS's, from
-# `compute pair/local p1 p2` with the velocities zeroed: no damping forces). Prints the machine
+# `compute pair/local p1 p2` with the velocities zeroed: no damping forces). With `path` in RUNS,
+# also the users' main workload: a 1 % oedometric loading path by both codes from one equilibrium,
+# LAMMPS at several loading rates, the stress paths compared (path_rows below). Prints the machine
 # and one Markdown row per run; a run that fails is a row: the exit status is non-zero only for a
 # usage error or a set-up failure (LAMMPS not installable, the contact-law check failing).
 #
 #   [LAMMPS_DT=0.2] [LAMMPS_ZETA=0.5] [LAMMPS_TDAMP=1] [LAMMPS_VISCOUS=0.01]
 #   [LAMMPS_MAX_STEPS=20000000] [MAX_ITERATIONS=1000] [REF_MAX_ITERATIONS=1000000]
-#   [REF_MAX_N=10000] [RUNS="lammps line_search damped reference"] [SWEEP=1]
+#   [REF_MAX_N=10000] [RUNS="lammps line_search damped reference path"] [SWEEP=1]
+#   [LAMMPS_PATH_STEPS="3120 6240 12480 24960 49920"] (path: the loading's time steps, multiples of 20)
 #   [RANKS=1] (LAMMPS on RANKS MPI processes: mpirun, Debian's openmpi-bin) [THREADS=1] (gembem's
 #   solver.threads) [KN_SCALE=1] (kn, kt and the static criterion times KN_SCALE: the same
 #   packing with stiffer springs, issue 15's cost in kn)
@@ -76,6 +79,7 @@ done
 LAMMPS_DT=${LAMMPS_DT:-0.2} LAMMPS_ZETA=${LAMMPS_ZETA:-0.5} LAMMPS_TDAMP=${LAMMPS_TDAMP:-1}
 LAMMPS_VISCOUS=${LAMMPS_VISCOUS:-0.01} LAMMPS_MAX_STEPS=${LAMMPS_MAX_STEPS:-20000000}
 REF_MAX_N=${REF_MAX_N:-10000} RUNS=${RUNS:-lammps line_search damped reference}
+LAMMPS_PATH_STEPS=${LAMMPS_PATH_STEPS:-3120 6240 12480 24960 49920}
 RANKS=${RANKS:-1}
 export KN_SCALE=${KN_SCALE:-1} # read by tools/solver_packing.sh
 sfx=""; [ "$KN_SCALE" = 1 ] || sfx=_kn$KN_SCALE # the runs' directories
@@ -146,14 +150,15 @@ check() {
   esac
 }
 
-# lammps_run N DIR: writes the input, runs lmp, converts and checks the final state; sets
-# lmp_status, lmp_steps, lmp_secs, lmp_mb, lmp_force, lmp_ok.
+# lammps_run N DIR DT ZETA TDAMP VISCOUS [GRAINS.csv BOX.yaml [ARGS...]]: writes the input (from
+# the packing, or from GRAINS and BOX, with lammps_peer.py's further ARGS), runs lmp, converts and
+# checks the final state; sets lmp_status, lmp_steps, lmp_secs, lmp_mb, lmp_force, lmp_ok.
 lammps_run() {
-  local n=$1 d=$2 code
+  local n=$1 d=$2 code grains=${7:-$top/n$1/packing.csv} box=${8:-$top/n$1/packing.box.yaml}
   rm -rf "$d"; mkdir -p "$d"
-  $py "$root/tools/lammps_peer.py" input "$top/n$n/packing.csv" "$top/n$n/packing.box.yaml" "$d" \
+  $py "$root/tools/lammps_peer.py" input "$grains" "$box" "$d" \
     --dt-factor "$3" --zeta-n "$4" --tangential-damping "$5" --viscous "$6" \
-    --max-steps "$LAMMPS_MAX_STEPS" --kn-scale "$KN_SCALE" --accuracy "$acc" > /dev/null
+    --max-steps "$LAMMPS_MAX_STEPS" --kn-scale "$KN_SCALE" --accuracy "$acc" "${@:9}" > /dev/null
   timed "$d/lmp" "$d" "${lmp_cmd[@]}" -nocite -in in.relax -log log.lammps -screen none
   code=$?
   read -r lmp_secs lmp_mb < <(secs_mb "$d/lmp")
@@ -182,6 +187,60 @@ lammps_run() {
   [ "$chk" = "check passed" ] && [ "${lmp_status#static}" != "$lmp_status" ] && lmp_ok=1
 }
 
+# path_rows N DIR: the oedometric path (1 % vertical compression, side walls fixed, 25 deg
+# between discs, frictionless walls) from the frictionless equilibrium of the packing that
+# gembem's line search reaches (no tangential force: a start LAMMPS can take, which reads no
+# tangential springs from a file). gembem: 20 steps of de1 = 0.0005 (tools/solver_packing.sh's
+# path.yaml), each to the static criterion. LAMMPS: the bottom and top walls moved in at a
+# constant velocity over S time steps for each S of LAMMPS_PATH_STEPS (the loading rate), then
+# relaxed to the static criterion (tools/lammps_peer.py --path-strain). Both end states are
+# checked by tools/check_equilibrium.py; the last column compares the paths: the largest
+# difference over the 20 strains of LAMMPS's wall stresses s1, s2 while loading (curve.txt, at
+# 1/20 of S apart) with gembem's at rest (steps.csv), over gembem's s1 and s2 at 1 %.
+path_rows() {
+  local n=$1 d=$2 v=$2/path$sfx code secs mb its status gsecs=""
+  echo
+  echo "| N | oedometric 1 %: code | status | iterations or steps (loading + relaxation) | wall s | peak MB | final largest force, checker [dyn] | this s / gembem s | contacts | s1, s2 at 1 % [dyn/cm] | path: largest difference in s1, s2 over gembem's at 1 % |"
+  echo "|---|---|---|---|---|---|---|---|---|---|---|"
+  if ! env SOLVER=global LINEAR=umfpack NEWTON=line_search PACKING="$d/packing.csv" STATE="$v/relax_frictionless" \
+      "$root/tools/solver_packing.sh" "$build" "$v" "$n" 1 > /dev/null 2>&1 ||
+     ! timed "$v/relax_frictionless" "$v" "$build/gembem" run relax_frictionless.yaml -o relax_frictionless --overwrite --quiet; then
+    echo "| $n | the start (gembem's frictionless relaxation) failed: see $v | | | | | | | | | |"
+    return
+  fi
+  timed "$v/path" "$v" "$build/gembem" run path.yaml -o path --overwrite --quiet
+  code=$?
+  read -r secs mb < <(secs_mb "$v/path")
+  its=$(awk -F, 'NR == 1 { for (k = 1; k <= NF; k++) c[$k] = k; next } $c["step"] > 0 { s += $c["iterations"]; w += $c["sweeps"] } END { printf "%d Newton, %d smoother steps", s, w }' "$v/path/steps.csv" 2>/dev/null)
+  force=- contacts="" stress=""
+  if [ $code = 0 ]; then
+    check "$v/path"; status="converged, $chk"; gsecs=$secs
+  else
+    status="exit $code: $(grep -m1 . "$v/path.log" | sed 's/^gembem: //' | tr '|' '/' | cut -c1-120)"
+  fi
+  echo "| $n | gembem global, newton line_search, UMFPACK$gb_label | $status | $its | $secs | $mb | $force | 1 | $contacts | $stress | |"
+  for S in $LAMMPS_PATH_STEPS; do
+    lammps_run "$n" "$v/lammps_$S" "$LAMMPS_DT" "$LAMMPS_ZETA" "$LAMMPS_TDAMP" "$LAMMPS_VISCOUS" \
+      "$v/relax_frictionless/state_grains.csv" "$v/relax_frictionless/state.yaml" --path-strain 0.01 --path-steps "$S"
+    local ratio=- diff=-
+    [ "$lmp_ok" = 1 ] && [ -n "$gsecs" ] && ratio=$(awk -v a="$lmp_secs" -v b="$gsecs" 'BEGIN { printf "%.2f", a / b }')
+    [ -n "$gsecs" ] && [ -s "$v/lammps_$S/curve.txt" ] && diff=$($py - "$v/path/steps.csv" "$v/lammps_$S/curve.txt" <<'PY'
+import csv, sys
+g = [r for r in csv.DictReader(open(sys.argv[1])) if int(r["step"]) > 0]
+l = [line.split() for line in open(sys.argv[2]) if line[0].isdigit()][1:]  # the 20 points past the start
+if len(g) != 20 or len(l) != 20:
+    sys.exit(f"expected 20 steps and 20 points, got {len(g)} and {len(l)}")
+out = []
+for col, k in (("s1", 2), ("s2", 3)):
+    end = float(g[-1][col])
+    out.append(max(abs(float(b[k]) - float(a[col])) for a, b in zip(g, l)) / end)
+print(f"{100 * out[0]:.1f} %, {100 * out[1]:.1f} %")
+PY
+)
+    echo "| $n | $lmp_label, walls moved in $S steps | $lmp_status | $S + $((lmp_steps - S)) | $lmp_secs | $lmp_mb | $lmp_force | $ratio | $lmp_contacts | $lmp_stress | $diff |"
+  done
+}
+
 for n in $sizes; do
   d=$top/n$n
   mkdir -p "$d"
@@ -208,8 +267,10 @@ for n in $sizes; do
     continue
   fi
 
-  echo "| N | code / solver | status | iterations or steps | wall s | peak MB | final largest force, checker [dyn] | LAMMPS s / this s | contacts | s1, s2 [dyn/cm] |"
-  echo "|---|---|---|---|---|---|---|---|---|---|"
+  if [[ " $RUNS " =~ \ (lammps|line_search|damped|reference)\  ]]; then
+    echo "| N | code / solver | status | iterations or steps | wall s | peak MB | final largest force, checker [dyn] | LAMMPS s / this s | contacts | s1, s2 [dyn/cm] |"
+    echo "|---|---|---|---|---|---|---|---|---|---|"
+  fi
   lmp_secs="" lmp_ok=0
   if [[ " $RUNS " == *" lammps "* ]]; then
     lammps_run "$n" "$d/lammps$sfx" "$LAMMPS_DT" "$LAMMPS_ZETA" "$LAMMPS_TDAMP" "$LAMMPS_VISCOUS"
@@ -251,5 +312,6 @@ for n in $sizes; do
     fi
     echo "| $n | $label | $status | $its | $secs | $mb | $force | $ratio | $contacts | $stress |"
   done
+  [[ " $RUNS " != *" path "* ]] || path_rows "$n" "$d"
 done
 exit 0

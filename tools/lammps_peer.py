@@ -5,7 +5,7 @@ tools/check_equilibrium.py checks like any gembem state.
 
     tools/lammps_peer.py input PACKING.csv BOX.yaml OUT_DIR [--dt-factor 0.2] [--zeta-n 0.5]
                          [--tangential-damping 1] [--viscous 0.01] [--accuracy 100]
-                         [--max-steps 10000000]
+                         [--max-steps 10000000] [--path-strain E --path-steps S]
     tools/lammps_peer.py state OUT_DIR          (after `lmp -in OUT_DIR/in.relax` ran in OUT_DIR)
     tools/lammps_peer.py lawcheck OUT_DIR       (two-disc check of LAMMPS's contact law; runs lmp)
 
@@ -36,6 +36,16 @@ The model (one to one with gembem's, docs/method.md section 3; cgs units):
     The dumps of that last `run 0` (positions, and per contact the tangential force that
     gran/hooke/history's single() returns: `compute pair/local p1 p2`, with velocities zero so no
     damping term) are what the independent checker reads.
+  - A loading path (--path-strain E, the benchmark's oedometric compression; PACKING.csv and
+    BOX.yaml then a gembem state's state_grains.csv and state.yaml, an equilibrium both codes
+    start from): the bottom and top walls are planes (`fix wall/gran/region` on `region plane`,
+    the same law as the side walls) that move towards each other at a constant velocity, each by
+    E/2 of the height in S time steps (--path-steps), as gembem's `strain: {de1}` moves both
+    by de1/2 of the first height; the side walls stay. Then the walls stop and the relaxation
+    above runs, to the same static criterion, from the state the loading left. The walls' forces
+    on the discs (their `contacts` arrays) are written at every 1/20 of the loading to
+    curve.txt: step, strain, s1 = (|F_bottom| + |F_top|) / (2 width), s2 = (|F_left| + |F_right|)
+    / (2 height) [dyn/cm], the stress path that gembem's 20 load steps give at rest.
 What differs from gembem's law, invisible at rest: LAMMPS keeps the shear displacement as a
 vector and, when the contact normal turns by dtheta in a step, projects it on the new tangent (its
 length falls by 1 - cos dtheta; gembem's pt is a scalar turning with the contact); its Coulomb cap
@@ -83,6 +93,8 @@ def write_input(a):
     gamman = 2.0 * a.zeta_n * math.sqrt(KN / (m_min / 2.0))
     xmu = math.tan(math.radians(PHI_DEG))
     margin = 2.0 * radii[-1]
+    # a path: each of the bottom and top walls moves in by dy_max (E/2 of the height)
+    dy_max = 0.5 * a.path_strain * (box["top"] - box["bottom"])
     types = {r: k + 1 for k, r in enumerate(radii)}
     with open(os.path.join(a.out, "data.lmp"), "w") as f:
         f.write(f"gembem packing {os.path.abspath(a.packing)} for LAMMPS (tools/lammps_peer.py)\n\n")
@@ -111,8 +123,7 @@ neighbor        {0.1 * rmin:.6g} bin
 neigh_modify    delay 0 every 1 check yes
 pair_style      gran/hooke/history {KN:.17g} {KT:.17g} {gamman:.17g} {"NULL" if a.tangential_damping else "0"} {xmu:.17g} {a.tangential_damping} limit_damping
 pair_coeff      * *
-fix             walls_x all wall/gran hooke {KN:.17g} 0 {gamman:.17g} 0 0 0 xplane {box['left']:.17g} {box['right']:.17g}
-fix             walls_y all wall/gran hooke {KN:.17g} 0 {gamman:.17g} 0 0 0 yplane {box['bottom']:.17g} {box['top']:.17g}
+{walls(a, box, KN, gamman, dy_max)}
 fix             move all nve/sphere disc
 fix             plane all enforce2d
 {viscous}
@@ -130,7 +141,7 @@ variable        fmax equal c_fmax
 thermo_style    custom step time ke c_fmax
 thermo          10000
 thermo_modify   norm no
-fix             halt all halt 50 v_fmax < {a.accuracy:.17g} error continue
+{load(a, box)}fix             halt all halt 50 v_fmax < {a.accuracy:.17g} error continue
 
 variable        quench loop 100000
 label           relax
@@ -163,7 +174,47 @@ print           "final: step $(step) largest force $(c_fmax:%.6g) dyn"
                         "friction_deg": PHI_DEG, "accuracy": a.accuracy, "dt": dt,
                         "dt_factor": a.dt_factor, "zeta_n": a.zeta_n, "gamman": gamman,
                         "tangential_damping": a.tangential_damping, "viscous": a.viscous,
-                        "density": RHO, "max_steps": a.max_steps}, f, sort_keys=False)
+                        "density": RHO, "max_steps": a.max_steps, "path_strain": a.path_strain,
+                        "path_steps": a.path_steps, "path_wall_move": dy_max}, f, sort_keys=False)
+
+
+def walls(a, box, kn, gamman, dy_max):
+    """The four walls: fixed planes; for a path the bottom and top are planes that move in by dy_max at a
+    constant velocity over --path-steps steps (`region ... move`: LAMMPS gives the wall the
+    region's velocity, which the contact damping sees)."""
+    law = f"hooke {kn:.17g} 0 {gamman:.17g} 0 0 0"
+    if a.path_strain == 0:
+        return (f"fix             walls_x all wall/gran {law} xplane {box['left']:.17g} {box['right']:.17g}\n"
+                f"fix             walls_y all wall/gran {law} yplane {box['bottom']:.17g} {box['top']:.17g}")
+    return f"""variable        dy equal {dy_max:.17g}*(step<{a.path_steps})*step/{a.path_steps}+{dy_max:.17g}*(step>={a.path_steps})
+variable        mdy equal -v_dy
+region          bottom plane 0 {box['bottom']:.17g} 0 0 1 0 side in move NULL v_dy NULL units box
+region          top plane 0 {box['top']:.17g} 0 0 -1 0 side in move NULL v_mdy NULL units box
+fix             walls_x all wall/gran {law} xplane {box['left']:.17g} {box['right']:.17g} contacts
+fix             wall_bottom all wall/gran/region {law} region bottom contacts
+fix             wall_top all wall/gran/region {law} region top contacts"""
+
+
+def load(a, box):
+    """The loading of a path: the walls' move, before the relaxation."""
+    if a.path_strain == 0:
+        return ""
+    width, height = box["right"] - box["left"], box["top"] - box["bottom"]
+    every = a.path_steps // 20
+    return f"""# The loading: the walls move in at a constant velocity for {a.path_steps} steps, then stop;
+# the walls' forces on the discs (columns 2 and 3 of a wall's contacts array: fx, fy) every 1/20 of it.
+variable        fxabs atom abs(f_walls_x[2])
+compute         wx all reduce sum v_fxabs
+compute         wb all reduce sum f_wall_bottom[3]
+compute         wt all reduce sum f_wall_top[3]
+variable        e1 equal 2*v_dy/{height:.17g}
+variable        s1 equal (abs(c_wb)+abs(c_wt))/(2*{width:.17g})
+variable        s2 equal c_wx/(2*({height:.17g}-2*v_dy))
+fix             curve all print {every} "$(step) $(v_e1:%.10g) $(v_s1:%.10g) $(v_s2:%.10g)" file curve.txt screen no title "step e1 s1 s2"
+run             {a.path_steps}
+unfix           curve
+print           "loaded: step $(step) largest force $(c_fmax:%.6g) dyn"
+"""
 
 
 def read_dump(path):
@@ -217,6 +268,9 @@ def write_state(a):
             pt = -(fs1 * -ny + fs2 * nx)
             f.write(f"{a1 - 1},{a2 - 1},{pn:.17g},{pt:.17g}\n")
     box = {k: float(p["box"][k]) for k in ("left", "right", "bottom", "top")}
+    move = float(p.get("path_wall_move", 0))  # a path's walls ended there
+    box["bottom"] += move
+    box["top"] -= move
     with open(os.path.join(d, "state.yaml"), "w") as f:
         f.write("# LAMMPS's final state, written by tools/lammps_peer.py state\n")
         f.write(dump_yaml({"gembem_state": 1, "box": box,
@@ -330,12 +384,18 @@ def main():
     p.add_argument("--accuracy", type=float, default=100.0)
     p.add_argument("--max-steps", type=int, default=10000000)
     p.add_argument("--kn-scale", type=float, default=1.0)
+    p.add_argument("--path-strain", type=float, default=0.0,
+                   help="a loading path: the walls' total vertical strain (0: a relaxation)")
+    p.add_argument("--path-steps", type=int, default=50000,
+                   help="the time steps over which the walls move (the loading rate)")
     p = sub.add_parser("state")
     p.add_argument("out")
     p = sub.add_parser("lawcheck")
     p.add_argument("out")
     a = ap.parse_args()
     if a.cmd == "input":
+        if a.path_strain and (a.path_steps < 20 or a.path_steps % 20):
+            sys.exit("lammps_peer: --path-steps must be a positive multiple of 20 (the curve's points)")
         write_input(a)
     elif a.cmd == "state":
         write_state(a)
