@@ -20,6 +20,7 @@
 #   [LAMMPS_MAX_STEPS=20000000] [MAX_ITERATIONS=1000] [REF_MAX_ITERATIONS=1000000]
 #   [REF_MAX_N=10000] [RUNS="lammps line_search damped reference path"] [SWEEP=1]
 #   [LAMMPS_PATH_STEPS="3120 6240 12480 24960 49920"] (path: the loading's time steps, multiples of 20)
+#   [PATH_STRESS=1e5] (path: the start's isotropic stress, dyn/cm; 0: the relaxed packing)
 #   [RANKS=1] (LAMMPS on RANKS MPI processes: mpirun, Debian's openmpi-bin) [THREADS=1] (gembem's
 #   solver.threads) [KN_SCALE=1] (kn, kt and the static criterion times KN_SCALE: the same
 #   packing with stiffer springs, issue 15's cost in kn)
@@ -79,7 +80,8 @@ done
 LAMMPS_DT=${LAMMPS_DT:-0.2} LAMMPS_ZETA=${LAMMPS_ZETA:-0.5} LAMMPS_TDAMP=${LAMMPS_TDAMP:-1}
 LAMMPS_VISCOUS=${LAMMPS_VISCOUS:-0.01} LAMMPS_MAX_STEPS=${LAMMPS_MAX_STEPS:-20000000}
 REF_MAX_N=${REF_MAX_N:-10000} RUNS=${RUNS:-lammps line_search damped reference}
-LAMMPS_PATH_STEPS=${LAMMPS_PATH_STEPS:-3120 6240 12480 24960 49920}
+LAMMPS_PATH_STEPS=${LAMMPS_PATH_STEPS:-3120 6240 12480 24960 49920} PATH_STRESS=${PATH_STRESS:-1e5}
+psfx=""; [ "$PATH_STRESS" = 0 ] || psfx=_p$PATH_STRESS # the path runs' directory
 RANKS=${RANKS:-1}
 export KN_SCALE=${KN_SCALE:-1} # read by tools/solver_packing.sh
 sfx=""; [ "$KN_SCALE" = 1 ] || sfx=_kn$KN_SCALE # the runs' directories
@@ -188,9 +190,11 @@ lammps_run() {
 }
 
 # path_rows N DIR: the oedometric path (1 % vertical compression, side walls fixed, 25 deg
-# between discs, frictionless walls) from the frictionless equilibrium of the packing that
-# gembem's line search reaches (no tangential force: a start LAMMPS can take, which reads no
-# tangential springs from a file). gembem: 20 steps of de1 = 0.0005 (tools/solver_packing.sh's
+# between discs, frictionless walls) from a frictionless equilibrium of the packing that gembem's
+# line search reaches (no tangential force: a start LAMMPS can take, which reads no tangential
+# springs from a file): the packing relaxed, then pressed isotropically to PATH_STRESS (default
+# 1e5 dyn/cm, in 5 steps; 0: relaxed only, a barely jammed start whose mean normal force is about
+# twice the criterion at 1e3). gembem: 20 steps of de1 = 0.0005 (tools/solver_packing.sh's
 # path.yaml), each to the static criterion. LAMMPS: the bottom and top walls moved in at a
 # constant velocity over S time steps for each S of LAMMPS_PATH_STEPS (the loading rate), then
 # relaxed to the static criterion (tools/lammps_peer.py --path-strain). Both end states are
@@ -198,15 +202,31 @@ lammps_run() {
 # difference over the 20 strains of LAMMPS's wall stresses s1, s2 while loading (curve.txt, at
 # 1/20 of S apart) with gembem's at rest (steps.csv), over gembem's s1 and s2 at 1 %.
 path_rows() {
-  local n=$1 d=$2 v=$2/path$sfx code secs mb its status gsecs=""
+  local n=$1 d=$2 v=$2/path$sfx$psfx code secs mb its status gsecs="" start=relax_frictionless
   echo
+  echo "Oedometric path from the frictionless packing $([ "$PATH_STRESS" = 0 ] && echo relaxed || echo "pressed to $PATH_STRESS dyn/cm")"
   echo "| N | oedometric 1 %: code | status | iterations or steps (loading + relaxation) | wall s | peak MB | final largest force, checker [dyn] | this s / gembem s | contacts | s1, s2 at 1 % [dyn/cm] | path: largest difference in s1, s2 over gembem's at 1 % |"
   echo "|---|---|---|---|---|---|---|---|---|---|---|"
-  if ! env SOLVER=global LINEAR=umfpack NEWTON=line_search PACKING="$d/packing.csv" STATE="$v/relax_frictionless" \
+  [ "$PATH_STRESS" = 0 ] || start=pressed
+  if ! env SOLVER=global LINEAR=umfpack NEWTON=line_search PACKING="$d/packing.csv" STATE="$v/$start" \
       "$root/tools/solver_packing.sh" "$build" "$v" "$n" 1 > /dev/null 2>&1 ||
      ! timed "$v/relax_frictionless" "$v" "$build/gembem" run relax_frictionless.yaml -o relax_frictionless --overwrite --quiet; then
     echo "| $n | the start (gembem's frictionless relaxation) failed: see $v | | | | | | | | | |"
     return
+  fi
+  if [ "$start" = pressed ]; then
+    sed -n '1,/^grains:/p' "$v/relax_frictionless.yaml" | grep -v '^grains:\|^#' > "$v/pressed.yaml"
+    cat >> "$v/pressed.yaml" <<YAML
+initial_state: relax_frictionless/state.yaml
+$(grep '^solver:' "$v/relax_frictionless.yaml")
+loading:
+  - isotropic: {stress: $PATH_STRESS, steps: 5}
+output: {measures_every: 0}
+YAML
+    if ! timed "$v/pressed" "$v" "$build/gembem" run pressed.yaml -o pressed --overwrite --quiet; then
+      echo "| $n | the start (gembem's frictionless compression to $PATH_STRESS dyn/cm) failed: see $v/pressed.log | | | | | | | | | |"
+      return
+    fi
   fi
   timed "$v/path" "$v" "$build/gembem" run path.yaml -o path --overwrite --quiet
   code=$?
@@ -221,7 +241,7 @@ path_rows() {
   echo "| $n | gembem global, newton line_search, UMFPACK$gb_label | $status | $its | $secs | $mb | $force | 1 | $contacts | $stress | |"
   for S in $LAMMPS_PATH_STEPS; do
     lammps_run "$n" "$v/lammps_$S" "$LAMMPS_DT" "$LAMMPS_ZETA" "$LAMMPS_TDAMP" "$LAMMPS_VISCOUS" \
-      "$v/relax_frictionless/state_grains.csv" "$v/relax_frictionless/state.yaml" --path-strain 0.01 --path-steps "$S"
+      "$v/$start/state_grains.csv" "$v/$start/state.yaml" --path-strain 0.01 --path-steps "$S"
     local ratio=- diff=-
     [ "$lmp_ok" = 1 ] && [ -n "$gsecs" ] && ratio=$(awk -v a="$lmp_secs" -v b="$gsecs" 'BEGIN { printf "%.2f", a / b }')
     [ -n "$gsecs" ] && [ -s "$v/lammps_$S/curve.txt" ] && diff=$($py - "$v/path/steps.csv" "$v/lammps_$S/curve.txt" <<'PY'
