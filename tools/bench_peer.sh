@@ -257,7 +257,8 @@ for col, k in (("s1", 2), ("s2", 3)):
 print(f"{100 * out[0]:.1f} %, {100 * out[1]:.1f} %")
 PY
 )
-    echo "| $n | $lmp_label, walls moved in $S steps | $lmp_status | $S + $((lmp_steps - S)) | $lmp_secs | $lmp_mb | $lmp_force | $ratio | $lmp_contacts | $lmp_stress | $diff |"
+    local steps=""; [ -z "$lmp_steps" ] || steps="$S + $((lmp_steps - S))"
+    echo "| $n | $lmp_label, walls moved in $S steps | $lmp_status | $steps | $lmp_secs | $lmp_mb | $lmp_force | $ratio | $lmp_contacts | $lmp_stress | $diff |"
   done
 }
 
