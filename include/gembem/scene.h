@@ -153,6 +153,8 @@ typedef struct {
     double mu;
     double history[GB_SOLVER_HISTORY];
     int next;
+    double smoother_first; /* newton: line_search: see src/solver/solver.h (0 and 0 if absent) */
+    int newton_due;
 } gb_solver_state;
 
 /* Where a scene's run starts when it continues an earlier run, apart from the scene's definition

@@ -16,7 +16,7 @@
 
 /* 2: the load step in progress (a checkpoint within a step) and its states; 1 (before): between
  * steps only, not read. */
-enum { FORMAT = 3 }; /* 3: each pair's rolling moment */
+enum { FORMAT = 4 }; /* 3: each pair's rolling moment; 4: the line search's smoother-first state */
 
 static uint64_t fnv(uint64_t h, const void *data, size_t n)
 {
@@ -156,6 +156,7 @@ static void write_body(FILE *f, const gb_sim *sim, const gb_checkpoint_meta *m)
     fprintf(f, "counters %ld %d\n", sim->iterations_total, d->next);
     put(f, "damping", &d->mu, 1);
     put(f, "damping_history", d->history, GB_SOLVER_HISTORY);
+    fprintf(f, "line_search %a %d\n", d->smoother_first, d->newton_due);
     put_state(f, "current", sim, &sim->state, gb_solver_unloading(sim));
     fprintf(f, "within_step %d\n", sim->cur.active);
     if (sim->cur.active) put_step(f, sim);
@@ -500,6 +501,10 @@ static void read_body(cursor *c, const gb_sim *sim, extras *x)
     x->damping.next = (int)integer(c, 0, 2147483647LL);
     nums(c, "damping", &x->damping.mu, 1);
     nums(c, "damping_history", x->damping.history, GB_SOLVER_HISTORY);
+    expect(c, "line_search");
+    x->damping.smoother_first = num(c);
+    x->damping.newton_due = (int)integer(c, 0, 1);
+    if (!c->st && !(x->damping.smoother_first >= 0)) fail(c, "expected a smoother-first stretch of 0 or more");
     get_state(c, sim, "current", &x->now, &x->gen[0], &x->unloading);
     expect(c, "within_step");
     if (integer(c, 0, 1)) get_step(c, sim, x);
@@ -553,6 +558,7 @@ gb_status gb_checkpoint_read(const char *dir, gb_sim *sim, uint64_t scene_hash, 
         sim->iterations_total = x.iterations_total;
         gb_solver_damping *d = gb_solver_damping_of(sim);
         d->mu = x.damping.mu, d->next = x.damping.next;
+        d->smoother_first = x.damping.smoother_first, d->newton_due = x.damping.newton_due;
         memcpy(d->history, x.damping.history, sizeof d->history);
         sim->pos = x.pos;
         if (x.cur.active) {

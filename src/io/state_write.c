@@ -127,7 +127,7 @@ gb_status gb_state_write(const char *dir, const gb_sim *sim, gb_error *err)
         const gb_solver_damping *d = gb_solver_damping_of(sim);
         fprintf(a.f, "solver_state: {damping: %.17g, damping_next: %d, damping_history: [", d->mu, d->next);
         for (int k = 0; k < GB_SOLVER_HISTORY; k++) fprintf(a.f, "%s%.17g", k ? ", " : "", d->history[k]);
-        fprintf(a.f, "]}\n");
+        fprintf(a.f, "], smoother_first: %.17g, newton_due: %d}\n", d->smoother_first, d->newton_due);
     }
     return gb_atomic_commit(&a, err);
 }

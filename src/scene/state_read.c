@@ -176,15 +176,17 @@ gb_status gb_state_solver_read(gb_ymap *top, gb_scene *s, gb_error *err)
     struct fy_node *v;
     gb_status st;
     gb_solver_state *ss = &s->restart.solver;
-    long next = 0;
+    long next = 0, due = 0;
     if ((st = gb_ymap_find(top, "solver_state", 0, &v, err))) return st;
     if (!v) return GB_OK;
     if ((st = gb_ymap_map(top, "solver_state", 0, &m, err)) ||
         (st = gb_ymap_number(&m, "damping", GB_Y_REQUIRED | GB_Y_POSITIVE, &ss->mu, err)) ||
         (st = gb_ymap_int(&m, "damping_next", GB_Y_REQUIRED, 0, 2147483647L, &next, err)) ||
-        (st = gb_ymap_vector(&m, "damping_history", GB_Y_REQUIRED, GB_SOLVER_HISTORY, ss->history, err)))
+        (st = gb_ymap_vector(&m, "damping_history", GB_Y_REQUIRED, GB_SOLVER_HISTORY, ss->history, err)) ||
+        (st = gb_ymap_number(&m, "smoother_first", GB_Y_NONNEG, &ss->smoother_first, err)) ||
+        (st = gb_ymap_int(&m, "newton_due", 0, 0, 1, &due, err)))
         return st;
-    ss->next = (int)next;
+    ss->next = (int)next, ss->newton_due = (int)due;
     ss->present = 1;
     return gb_ymap_close(&m, err);
 }

@@ -282,6 +282,8 @@ static int factor_solve(gb_global *gl, gb_error *err, gb_status *st)
         SuiteSparse_long s =
             umfpack_dl_numeric(gl->lp, gl->li, gl->Ax, gl->symbolic, &gl->numeric, gl->control, gl->info);
         gl->stats.factorisations++;
+        gl->stats.factor_entries = gl->info[UMFPACK_LNZ] + gl->info[UMFPACK_UNZ];
+        gl->stats.factor_flops = gl->info[UMFPACK_FLOPS];
         gl->stats.factorise += gb_clock_seconds() - t0;
         if (s == UMFPACK_WARNING_singular_matrix) return 1;
         if (s != UMFPACK_OK) {

@@ -57,8 +57,10 @@ static void advance(double *v, double *d, int dofs, double dt, double cap)
 }
 
 gb_status gb_solver_inertial(gb_solver *s, gb_sim *sim, const gb_wall_control *wc, double target, int max_steps,
-                             gb_error *err)
+                             double stall_check, int *stalled, gb_error *err)
 {
+    *stalled = 0;
+    double check_merit = -1, next_check = stall_check;
     /* The DOFs: grains' (3 each), then the boundary particles' (2 each) unless the host is rigid. */
     int n = sim->state.n, np = sim->host && !sim->scene->host.rigid ? sim->bp.n : 0, dofs = 3 * n + 2 * np;
     double *v = s->velocity, *acc = s->acceleration, inv_alpha = 1 / s->set->alpha;
@@ -104,8 +106,21 @@ gb_status gb_solver_inertial(gb_solver *s, gb_sim *sim, const gb_wall_control *w
                 vv += v[q] * v[q], aa += acc[q] * acc[q];
             }
         }
-        if (gb_gem_particle_merit(sim, merit) <= target) break;
+        merit = gb_gem_particle_merit(sim, merit);
+        if (merit <= target) break;
         if (balanced && wall_residual <= sim->accuracy) break;
+        /* Stalled: at the merit's rate of fall over the last stall_check steps, the target is
+         * more than another stall_check steps away (FIRE's merit is not monotone: the rate is
+         * taken over the whole stretch). */
+        if (check_merit < 0) check_merit = merit;
+        if (stall_check > 0 && step >= next_check) {
+            double rate = log(check_merit / merit) / stall_check;
+            if (!(rate > 0) || log(merit / target) > rate * stall_check) {
+                *stalled = 1;
+                break;
+            }
+            check_merit = merit, next_check += stall_check;
+        }
         if (power > 0) { /* downhill: turn the velocity towards the force, and speed up */
             double mix = aa > 0 ? mixing * sqrt(vv / aa) : 0;
             for (int q = 0; q < dofs; q++) v[q] = (1 - mixing) * v[q] + mix * acc[q];

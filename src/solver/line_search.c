@@ -28,6 +28,7 @@ enum {
 static const double ARMIJO = 1e-4;   /* sufficient decrease of a shortened step: m1 <= (1 - ARMIJO alpha) m0 */
 static const double CONVERGING = 0.1; /* Newton's whole step is taken alone if m1 <= CONVERGING m0 */
 static const double SMOOTHED = 1e-6;  /* the smoother stops when the merit (squared) has fallen to this */
+static const double FLOPS_PER_PAIR_STEP = 100; /* a smoother step's cost a pair, in a factorisation's flops */
 
 /* Grains, particles and walls moved by alpha times the direction; grains outside the system move
  * by their whole reference move (global.c). */
@@ -73,12 +74,34 @@ static gb_status backtrack(gb_solver *s, gb_sim *sim, const gb_wall_control *wc,
     return GB_OK;
 }
 
+/* What a factorisation with its solve costs, in smoother steps: its flops over FLOPS_PER_PAIR_STEP
+ * a candidate pair (0 where the linear solver does not count its flops: PETSc). The smoother's
+ * step is an evaluation of every pair; on the 1e4-disc path of tools/bench_peer.sh (2-core AMD
+ * EPYC, one thread) a factorisation (3.6e8 flops) with its solve and assembly took about 0.15 s and
+ * a smoother step 1.1 ms for 24 500 pairs: about 150 flops a pair. 100 errs towards the smoother. */
+static double factorisation_in_smoother_steps(const gb_solver *s, const gb_sim *sim)
+{
+    const gb_global_stats *g = gb_global_statistics(s->global);
+    int pairs = sim->state.pairs.n;
+    return g && g->factor_flops > 0 && pairs > 0 ? g->factor_flops / (FLOPS_PER_PAIR_STEP * pairs) : 0;
+}
+
 gb_status gb_solver_line_search_move(gb_solver *s, gb_sim *sim, const gb_wall_control *wc, double m0,
                                      gb_error *err)
 {
-    int n = sim->state.n, np = sim->bp.n, found;
+    int n = sim->state.n, np = sim->bp.n, found, stalled;
+    gb_solver_damping *d = &s->damping;
+    gb_status st;
+    /* While Newton's whole steps fail, the smoother goes first and Newton only where it stalls. */
+    if (d->smoother_first > 0 && !d->newton_due) {
+        s->length = 0;
+        st = gb_solver_inertial(s, sim, wc, SMOOTHED * m0, MAX_SMOOTHING, d->smoother_first, &stalled, err);
+        d->newton_due = stalled;
+        return st;
+    }
+    d->newton_due = 0;
     /* The smallest damping: Newton's direction (the system regularises only a singular matrix). */
-    gb_status st = gb_global_moves(s->global, sim, s->in_system, wc, 0, err);
+    st = gb_global_moves(s->global, sim, s->in_system, wc, 0, err);
     if (st) return st;
     double *dir = s->direction;
     memcpy(dir, sim->scratch.dX, 3 * (size_t)n * sizeof(double));
@@ -93,8 +116,15 @@ gb_status gb_solver_line_search_move(gb_solver *s, gb_sim *sim, const gb_wall_co
     double m1 = gb_gem_merit(sim, s->in_system, gb_gem_wall_moves(sim, wc));
     if (m1 <= CONVERGING * m0) {
         s->length = 1;
+        d->smoother_first = 0;
         return GB_OK;
     }
+    /* A failed whole step wasted its factorisation: from the next iteration on the smoother goes
+     * first, checked for a stall every so many steps as cost about one factorisation, twice as
+     * many after each further failure (so the factorisations of failed steps cost at most about
+     * what the smoother does). */
+    double cost = factorisation_in_smoother_steps(s, sim);
+    if (cost > 0) d->smoother_first = d->smoother_first > 0 ? 2 * d->smoother_first : cost;
     /* If not, the step met contacts that its tangent did not know: the smoother, which knows them
      * at every step, from the step's end if it lowered the merit at all, else from its start. */
     if (!(m1 < m0)) {
@@ -102,7 +132,7 @@ gb_status gb_solver_line_search_move(gb_solver *s, gb_sim *sim, const gb_wall_co
         gb_gem_forces(sim);
     }
     s->length = 0;
-    if ((st = gb_solver_inertial(s, sim, wc, SMOOTHED * m0, MAX_SMOOTHING, err))) return st;
+    if ((st = gb_solver_inertial(s, sim, wc, SMOOTHED * m0, MAX_SMOOTHING, 0, &stalled, err))) return st;
     if (gb_gem_merit(sim, s->in_system, gb_gem_wall_moves(sim, wc)) <= (1 - ARMIJO) * m0) return GB_OK;
     /* The smoother did not lower the merit either: a shorter Newton step, and if none lowers the
      * merit, the smoother's configuration after all (kept, not smoothed again: a deposit settling

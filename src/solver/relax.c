@@ -30,6 +30,7 @@ gb_status gb_solver_create(gb_sim *sim, const gb_solver_settings *set, gb_error 
         s->damping.mu = from->mu;
         memcpy(s->damping.history, from->history, sizeof s->damping.history);
         s->damping.next = from->next;
+        s->damping.smoother_first = from->smoother_first, s->damping.newton_due = from->newton_due;
     }
     size_t n = (size_t)sim->state.n + 1, np = (size_t)sim->bp.n;
     gb_status st = GB_OK;

@@ -25,6 +25,10 @@ typedef struct {
     int next;
     long since; /* moves since one brought the merit below half the step's lowest */
     double best; /* the step's lowest merit (INFINITY before the step's first move) */
+    /* newton: line_search: smoother steps between checks of its progress while it goes first (0:
+     * Newton first), and whether Newton's step is due (the smoother stalled) */
+    double smoother_first;
+    int newton_due;
 } gb_solver_damping;
 
 /* gb_solver_create, gb_solver_relax, gb_solver_work_done, gb_solver_statistics: gembem/solver.h. */

@@ -38,8 +38,10 @@ gb_status gb_solver_line_search_move(gb_solver *s, gb_sim *sim, const gb_wall_co
 
 /* The line search's smoother (inertial.c): every grain and boundary particle moves, servo walls
  * follow, until the merit is at most `target`, after max_steps, or when every grain, particle and
- * wall is balanced. The forces are current on return. */
+ * wall is balanced. With stall_check > 0, also when it stalls (*stalled set): checked every
+ * stall_check steps, at the rate of the merit's fall over them it would take more than as many
+ * again to reach the target. The forces are current on return. */
 gb_status gb_solver_inertial(gb_solver *s, gb_sim *sim, const gb_wall_control *wc, double target, int max_steps,
-                             gb_error *err);
+                             double stall_check, int *stalled, gb_error *err);
 
 #endif
