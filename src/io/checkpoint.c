@@ -128,7 +128,7 @@ static void put_step(FILE *f, const gb_sim *sim)
     gb_solver_work w = gb_solver_work_minus(gb_solver_work_done(sim), c->work0);
     fprintf(f, "work %ld %ld %ld\n", w.trials, w.factorisations, w.sweeps);
     const gb_solver_damping *d = gb_solver_damping_of(sim);
-    fprintf(f, "stall %ld %a\n", d->since, d->best); /* "inf" before the solver's first move */
+    fprintf(f, "stall %ld %a %d\n", d->since, d->best, d->newton_failures); /* "inf" before the solver's first move */
     fprintf(f, "moves\n");
     for (int i = 0; i < sim->state.n; i++)
         fprintf(f, "%a %a %a\n", sim->scratch.dX[3 * i], sim->scratch.dX[3 * i + 1], sim->scratch.dX[3 * i + 2]);
@@ -471,6 +471,7 @@ static void get_step(cursor *c, const gb_sim *sim, extras *x)
     const char *w = word(c);
     if (!strcmp(w, "inf")) x->damping.best = INFINITY;
     else if (gb_parse_finite(w, &x->damping.best) != GB_NUMBER_OK) fail(c, "expected a number or inf");
+    x->damping.newton_failures = (int)integer(c, 0, 2147483647LL);
     expect(c, "moves");
     x->dX = alloc(c, 3 * (size_t)sim->state.n, sizeof(double));
     for (int k = 0; k < 3 * sim->state.n && !c->st; k++) x->dX[k] = num(c);
@@ -568,6 +569,7 @@ gb_status gb_checkpoint_read(const char *dir, gb_sim *sim, uint64_t scene_hash, 
             x.cur.work0 = gb_solver_work_minus(gb_solver_work_done(sim), x.work);
             sim->cur = x.cur;
             sim->attempt = x.attempt, d->since = x.damping.since, d->best = x.damping.best;
+            d->newton_failures = x.damping.newton_failures;
         }
         /* for the restored pair list (its count and rebuilds) */
         c.st = gb_solver_resume(sim, x.unloading, err);

@@ -87,6 +87,7 @@ gb_status gb_solver_relax(gb_sim *sim, const gb_wall_control *wc, long cap, long
     if (!it) {
         sim->attempt++;
         s->damping.best = INFINITY, s->damping.since = 0; /* the damped iteration's stall detection */
+        s->damping.newton_failures = 0;                    /* the line search's, within a relaxation */
     }
     gb_status st = GB_OK;
     for (; it <= cap; it++) {

@@ -25,10 +25,13 @@ typedef struct {
     int next;
     long since; /* moves since one brought the merit below half the step's lowest */
     double best; /* the step's lowest merit (INFINITY before the step's first move) */
-    /* newton: line_search: smoother steps between checks of its progress while it goes first (0:
-     * Newton first), and whether Newton's step is due (the smoother stalled) */
+    /* newton: line_search: while its smoother goes first, a factorisation's cost in smoother steps
+     * when Newton's whole step last failed (0: Newton first); whether Newton's step is due (the
+     * smoother stalled); Newton's failed whole steps in this relaxation (each doubles the stretch
+     * between the smoother's stall checks) */
     double smoother_first;
     int newton_due;
+    int newton_failures;
 } gb_solver_damping;
 
 /* gb_solver_create, gb_solver_relax, gb_solver_work_done, gb_solver_statistics: gembem/solver.h. */
