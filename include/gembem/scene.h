@@ -209,11 +209,13 @@ typedef struct {
     int n_snapshot_steps;
     int *snapshot_steps;     /* and at these global step numbers */
     int contacts_every;      /* write contacts/contacts_NNNNNN.csv every k steps (and at snapshots) */
-    /* The per-step measures (src/measure): localisation.csv gets a row at every step; the files
-     * of fields/ are written at the steps that are multiples of measures_every (step 0 included;
-     * 0: never). Default GB_MEASURES_DEFAULT_EVERY below GB_MEASURES_DEFAULT_GRAINS grains, else 0. */
+    /* The per-step measures (src/measure): localisation.csv gets a row at every step unless
+     * localisation is 0 (output.localisation: false); the files of fields/ are written at the steps
+     * that are multiples of measures_every (step 0 included; 0: never). Default
+     * GB_MEASURES_DEFAULT_EVERY below GB_MEASURES_DEFAULT_GRAINS grains, else 0. */
     int measures_every;
     int measures_every_given; /* the scene set it (else the default by size) */
+    int localisation;
     /* The run directory's checkpoint.txt (`gembem run --resume`): after every checkpoint_every-th
      * step (0: none), and after any step that ends checkpoint_minutes after the last one. */
     int checkpoint_every;

@@ -17,6 +17,7 @@ _WHY = {
     "history.csv": "written with `solver: {history: true}`",
     "contacts": "written every `output.contacts_every` steps and at snapshot steps",
     "fields": "written every `output.measures_every` steps",
+    "localisation.csv": "written unless `output: {localisation: false}`",
     "snapshots": "written at `output.snapshot_every` / `snapshot_steps`",
     "host": "written by hybrid scenes only, those with a `host:` section",
 }

@@ -195,6 +195,6 @@ gb_status gb_measure_write_step(const char *dir, const gb_step_measures *m, gb_e
         st = write_sliding(path, m->sliding, m->n_sliding, err);
     }
     if (!st && fields && m->has_host) st = write_host(dir, step, &m->host, err);
-    if (!st) st = write_row(dir, step, &m->zone, m->n_sliding, m->has_host ? &m->host : NULL, err);
+    if (!st && m->row) st = write_row(dir, step, &m->zone, m->n_sliding, m->has_host ? &m->host : NULL, err);
     return st;
 }

@@ -54,8 +54,9 @@ static void list_appended(gb_run_output *o)
 {
     static const char *const names[] = {"steps.csv", "micromechanics.csv", "localisation.csv",
                                         "fields/triangles.pvd", "host_steps.csv"};
-    o->n_appended = o->scene->host.present ? 5 : 4;
-    for (int k = 0; k < o->n_appended; k++) o->appended[k] = names[k];
+    o->n_appended = 0;
+    for (int k = 0; k < 5; k++)
+        if ((k != 2 || o->scene->localisation) && (k != 4 || o->scene->host.present)) o->appended[o->n_appended++] = names[k];
     if (o->scene->solver.history) o->appended[o->n_appended++] = "history.csv";
 }
 

@@ -91,9 +91,10 @@ void gb_run_record_settings(FILE *f, const gb_scene *sc)
     for (int k = 0; k < sc->n_stages; k++) stage(f, &sc->stages[k]);
     fprintf(f, "  output:\n    snapshot_every: %d\n    snapshot_steps: [", sc->snapshot_every);
     for (int k = 0; k < sc->n_snapshot_steps; k++) fprintf(f, "%s%d", k ? ", " : "", sc->snapshot_steps[k]);
-    fprintf(f, "]\n    contacts_every: %d\n    measures_every: %d\n    checkpoint_every: %d\n"
+    fprintf(f, "]\n    contacts_every: %d\n    measures_every: %d\n    localisation: %s\n    checkpoint_every: %d\n"
                "    checkpoint_minutes: %.17g\n",
-            sc->contacts_every, sc->measures_every, sc->checkpoint_every, sc->checkpoint_minutes);
+            sc->contacts_every, sc->measures_every, sc->localisation ? "true" : "false", sc->checkpoint_every,
+            sc->checkpoint_minutes);
 }
 
 void gb_run_record_machine(FILE *f)

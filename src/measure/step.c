@@ -57,17 +57,18 @@ static gb_status zone_measure(const gb_state *start, const gb_sim *sim, gb_zone_
     return n > 0 && dmax > 0 ? gb_d2min_points(n, z->x0, z->x1, z->d2_range, z->d2, err) : GB_OK;
 }
 
-gb_status gb_step_measure(const gb_state *start, const gb_sim *end, int step, int fields, gb_step_measures *m,
-                          gb_error *err)
+gb_status gb_step_measure(const gb_state *start, const gb_sim *end, int step, int fields, int row,
+                          gb_step_measures *m, gb_error *err)
 {
     memset(m, 0, sizeof *m);
-    m->step = step, m->fields = fields;
+    m->step = step, m->fields = fields, m->row = row;
     gb_micro_measure(end, &m->micro);
     m->micro.dissipation_step_k28 = gb_micro_step_dissipation(start, end);
     m->n_sliding = gb_measure_sliding(end, NULL, 0);
     m->sliding = malloc((size_t)(m->n_sliding > 0 ? m->n_sliding : 1) * sizeof *m->sliding);
     if (!m->sliding) return gb_fail(err, GB_ENOMEM, "out of memory for %d sliding contacts", m->n_sliding);
     gb_measure_sliding(end, m->sliding, m->n_sliding);
+    if (!row && !fields) return GB_OK;
     gb_status st = zone_measure(start, end, &m->zone, err);
     /* the row needs the host's wall only; the empty cavity and the ring are for the files */
     m->has_host = end->host != NULL;

@@ -75,9 +75,10 @@ typedef struct {
 
 /* Everything measured of one load step (or of the initial state, step 0, start = end), as
  * docs/measures.md lists: the micromechanics, the zone's strain, the sliding contacts and, with a
- * host, its stress around the cavity (on the wall only unless `fields`: the fields/ files are due). */
+ * host, its stress around the cavity (on the wall only unless `fields`: the fields/ files are due).
+ * The zone's strain and the host's stress only if `row` (localisation.csv's row) or `fields`. */
 typedef struct {
-    int step, fields;
+    int step, fields, row;
     gb_micro micro;
     gb_zone_measures zone;
     gb_sliding_contact *sliding;
@@ -86,8 +87,8 @@ typedef struct {
     gb_host_measures host;
 } gb_step_measures;
 
-gb_status gb_step_measure(const gb_state *start, const gb_sim *end, int step, int fields, gb_step_measures *m,
-                          gb_error *err);
+gb_status gb_step_measure(const gb_state *start, const gb_sim *end, int step, int fields, int row,
+                          gb_step_measures *m, gb_error *err);
 void gb_step_measures_free(gb_step_measures *m);
 
 #endif

@@ -278,7 +278,9 @@ static gb_status measure_and_output(gb_sim *sim, gb_run_output *out, gb_step_fn 
     gb_status st = GB_OK;
     gb_step_measures m;
     memset(&m, 0, sizeof m);
-    if (out) st = gb_step_measure(&sim->saved, sim, rep->step, gb_run_output_fields_due(out, rep->step), &m, err);
+    if (out)
+        st = gb_step_measure(&sim->saved, sim, rep->step, gb_run_output_fields_due(out, rep->step),
+                             sim->scene->localisation, &m, err);
     double t1 = gb_clock_seconds();
     sim->profile.measure += t1 - t;
     if (!st && out) st = gb_run_output_step(out, sim, rep, &m, err);

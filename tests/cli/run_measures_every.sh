@@ -2,7 +2,8 @@
 # output.measures_every (docs/measures.md): the files of fields/ only at the steps that
 # are multiples of k (step 0 included), localisation.csv a row at every step whatever k, and its
 # rows the same as with the fields at every step (byte for byte: the row does not depend on k).
-# 1. The three discs (110 steps), k = 3: fields at 0, 3, ..., 108 only; 111 rows.
+# 1. The three discs (110 steps), k = 3: fields at 0, 3, ..., 108 only; 111 rows. With
+#    output.localisation: false no localisation.csv, the other files the same.
 # 2. The hybrid host_loading scene (3 steps, a host): k = 2 and k = 0 against the default (1):
 #    host_wall/host_ring only at 0 and 2, no fields/ at all with 0, the same rows (the host's
 #    columns then come from the wall-only measure).
@@ -44,6 +45,18 @@ expect_rows "$out/discs3" 111
 same_rows "$out/discs1" "$out/discs3"
 grep -q '^measures_every: 3 ' "$out/discs3/run_info.yaml" && ok "discs3: run_info.yaml records measures_every: 3" \
   || bad "discs3: run_info.yaml does not record measures_every"
+
+# 1b. output.localisation: false: no localisation.csv, the rest as with it (fields/ at the same
+#     steps and the same bytes, micromechanics.csv), run_info.yaml says so.
+scene_edit "$root/tests/cli/scenes/every3.yaml" -o "$out/noloc.yaml" --add output.localisation=false
+"$gembem" run "$out/noloc.yaml" -o "$out/noloc" --quiet || bad "three discs, no localisation: did not run"
+[ ! -e "$out/noloc/localisation.csv" ] && ok "noloc: no localisation.csv" || bad "noloc: localisation.csv written"
+for w in grains:csv sliding:csv triangles:vtu; do expect_steps "$out/noloc" "${w%:*}" "${w#*:}" "$want"; done
+if cmp -s "$out/discs3/micromechanics.csv" "$out/noloc/micromechanics.csv" &&
+   diff -rq "$out/discs3/fields" "$out/noloc/fields" > /dev/null; then ok "noloc: micromechanics.csv and fields/ as with localisation.csv"
+else bad "noloc: micromechanics.csv or fields/ differ from discs3's"; fi
+grep -q '^    localisation: false$' "$out/noloc/run_info.yaml" && ok "noloc: run_info.yaml records localisation: false" \
+  || bad "noloc: run_info.yaml: $(grep -n localisation "$out/noloc/run_info.yaml")"
 
 # 2. A host: the wall-only host measure of the rows equals the full one.
 host=$root/tests/hybrid/host_loading.yaml

@@ -300,7 +300,7 @@ static void check_affine(const char *dir)
         sim->state.g[i].x = X + A[0] * X + A[1] * Y + b[0], sim->state.g[i].y = Y + A[2] * X + A[3] * Y + b[1];
     }
     gb_step_measures m;
-    CHECK(gb_step_measure(&sim->saved, sim, 0, 1, &m, &err) == GB_OK);
+    CHECK(gb_step_measure(&sim->saved, sim, 0, 1, 1, &m, &err) == GB_OK);
     CHECK(gb_measure_write_step(dir, &m, &err) == GB_OK);
     gb_step_measures_free(&m);
     double e[3] = {-(A[0] + 0.5 * (A[0] * A[0] + A[2] * A[2])), -(A[3] + 0.5 * (A[1] * A[1] + A[3] * A[3])),
