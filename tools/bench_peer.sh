@@ -221,7 +221,7 @@ initial_state: relax_frictionless/state.yaml
 $(grep '^solver:' "$v/relax_frictionless.yaml")
 loading:
   - isotropic: {stress: $PATH_STRESS, steps: 5}
-output: {measures_every: 0}
+output: {measures_every: 0, localisation: false}
 YAML
     if ! timed "$v/pressed" "$v" "$build/gembem" run pressed.yaml -o pressed --overwrite --quiet; then
       echo "| $n | the start (gembem's frictionless compression to $PATH_STRESS dyn/cm) failed: see $v/pressed.log | | | | | | | | | |"
