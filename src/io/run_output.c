@@ -55,8 +55,9 @@ static void list_appended(gb_run_output *o)
     static const char *const names[] = {"steps.csv", "micromechanics.csv", "localisation.csv",
                                         "fields/triangles.pvd", "host_steps.csv"};
     o->n_appended = 0;
-    for (int k = 0; k < 5; k++)
-        if ((k != 2 || o->scene->localisation) && (k != 4 || o->scene->host.present)) o->appended[o->n_appended++] = names[k];
+    for (int k = 0; k < 5; k++) /* localisation.csv unless turned off, host_steps.csv with a host */
+        if ((k != 2 || o->scene->localisation) && (k != 4 || o->scene->host.present))
+            o->appended[o->n_appended++] = names[k];
     if (o->scene->solver.history) o->appended[o->n_appended++] = "history.csv";
 }
 

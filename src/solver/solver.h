@@ -16,9 +16,10 @@
 
 typedef struct gb_solver gb_solver;
 
-/* The damping state of the global solver's damped iteration, which a load step leaves for the next
- * (state.yaml's solver_state, checkpoints): the Levenberg-Marquardt damping, the merits before the
- * last accepted moves (non-monotone acceptance), and the stall detection of the step in progress. */
+/* The state of the global solver's iterations that a load step leaves for the next (state.yaml's
+ * solver_state, checkpoints): the damped iteration's Levenberg-Marquardt damping, the merits before
+ * the last accepted moves (non-monotone acceptance) and the stall detection of the step in
+ * progress; the line search's smoother-first state. */
 typedef struct {
     double mu;
     double history[GB_SOLVER_HISTORY];
