@@ -9,8 +9,9 @@
 # for its `seconds` column (wall time), run_info.yaml aside, which must say how often the run was
 # interrupted and resumed. Scenes: the 122-disc biaxial shear (reference iteration, snapshots and
 # contacts files, a checkpoint every 3 steps only), the same with the global solver (CHOLMOD,
-# OPENBLAS_NUM_THREADS=1), and two hybrid scenes (a host with UMFPACK; the infinite plane with
-# tangential forces on the boundary particles, CHOLMOD).
+# OPENBLAS_NUM_THREADS=1), two hybrid scenes (a host with UMFPACK; the infinite plane with
+# tangential forces on the boundary particles, CHOLMOD), and the global solver's default (the line
+# search, UMFPACK) strain-controlled with `output: {localisation: false}`.
 # Then what must be refused (exit 2, the run directory unchanged): a changed scene, a changed file
 # the scene reads, a damaged checkpoint, a cut appended file, a completed run, no checkpoint,
 # --resume with -o. And a disk that fills (a file size limit, `ulimit -f`, SIGXFSZ ignored):
@@ -26,6 +27,13 @@ kill_case global "$out/scenes/global.yaml" 8 20
 kill_case global_strain "$out/scenes/global_strain.yaml" 8 20
 kill_case hybrid "$out/scenes/hybrid.yaml" 8 20
 kill_case hybrid_remote "$out/scenes/hybrid_remote.yaml" 8 20
+# the default global solver (the line search, its smoother-first state carried from step to step)
+# strain-controlled, without localisation.csv (the checkpoint's appended files without it)
+scene_edit "$out/scenes/global_strain.yaml" -o "$out/scenes/line_search.yaml" --set solver.linear=umfpack \
+  --add output.localisation=false
+kill_case line_search "$out/scenes/line_search.yaml" 8 20
+[ ! -e "$out/line_search/kill/run/localisation.csv" ] && ok "line_search: no localisation.csv" \
+  || bad "line_search: localisation.csv written"
 
 # What is refused: exit 2, a message, the run directory untouched.
 d=$out/refuse; mkdir -p "$d"; cp "$out/scenes/ref.yaml" "$d/scene.yaml"; cp -r "$out/scenes/test_state" "$d/"
