@@ -21,6 +21,8 @@
 #   [REF_MAX_N=10000] [RUNS="lammps line_search damped reference path"] [SWEEP=1]
 #   [LAMMPS_PATH_STEPS="3120 6240 12480 24960 49920"] (path: the loading's time steps, multiples of 20)
 #   [PATH_STRESS=1e5] (path: the start's isotropic stress, dyn/cm; 0: the relaxed packing)
+#   [PATH_START=DIR] (path: start from this state directory instead, e.g. a `gembem pack` packing
+#   pressed to a stress; N must be its grains' count)
 #   [RANKS=1] (LAMMPS on RANKS MPI processes: mpirun, Debian's openmpi-bin) [THREADS=1] (gembem's
 #   solver.threads) [KN_SCALE=1] (kn, kt and the static criterion times KN_SCALE: the same
 #   packing with stiffer springs, issue 15's cost in kn)
@@ -82,6 +84,8 @@ LAMMPS_VISCOUS=${LAMMPS_VISCOUS:-0.01} LAMMPS_MAX_STEPS=${LAMMPS_MAX_STEPS:-2000
 REF_MAX_N=${REF_MAX_N:-10000} RUNS=${RUNS:-lammps line_search damped reference}
 LAMMPS_PATH_STEPS=${LAMMPS_PATH_STEPS:-3120 6240 12480 24960 49920} PATH_STRESS=${PATH_STRESS:-1e5}
 psfx=""; [ "$PATH_STRESS" = 0 ] || psfx=_p$PATH_STRESS # the path runs' directory
+PATH_START=${PATH_START:-} # path: a state directory to start from instead (its grains' count is N)
+[ -z "$PATH_START" ] || { PATH_START=$(cd "$PATH_START" && pwd); psfx=_start_$(basename "$(dirname "$PATH_START")"); }
 RANKS=${RANKS:-1}
 export KN_SCALE=${KN_SCALE:-1} # read by tools/solver_packing.sh
 sfx=""; [ "$KN_SCALE" = 1 ] || sfx=_kn$KN_SCALE # the runs' directories
@@ -204,17 +208,26 @@ lammps_run() {
 path_rows() {
   local n=$1 d=$2 v=$2/path$sfx$psfx code secs mb its status gsecs="" start=relax_frictionless
   echo
-  echo "Oedometric path from the frictionless packing $([ "$PATH_STRESS" = 0 ] && echo relaxed || echo "pressed to $PATH_STRESS dyn/cm")"
+  if [ -n "$PATH_START" ]; then echo "Oedometric path from the state $PATH_START"
+  else echo "Oedometric path from the frictionless packing $([ "$PATH_STRESS" = 0 ] && echo relaxed || echo "pressed to $PATH_STRESS dyn/cm")"; fi
   echo "| N | oedometric 1 %: code | status | iterations or steps (loading + relaxation) | wall s | peak MB | final largest force, checker [dyn] | this s / gembem s | contacts | s1, s2 at 1 % [dyn/cm] | path: largest difference in s1, s2 over gembem's at 1 % |"
   echo "|---|---|---|---|---|---|---|---|---|---|---|"
   [ "$PATH_STRESS" = 0 ] || start=pressed
-  if ! env SOLVER=global LINEAR=umfpack NEWTON=line_search PACKING="$d/packing.csv" STATE="$v/$start" \
+  mkdir -p "$v"
+  if [ -n "$PATH_START" ]; then
+    rm -rf "$v/given" && cp -r "$PATH_START" "$v/given" && start=given
+    if ! env SOLVER=global LINEAR=umfpack NEWTON=line_search PACKING="$d/packing.csv" STATE="$v/$start" \
+        "$root/tools/solver_packing.sh" "$build" "$v" "$n" 1 > /dev/null 2>&1; then
+      echo "| $n | the path's scene could not be written: see $v | | | | | | | | | |"
+      return
+    fi
+  elif ! env SOLVER=global LINEAR=umfpack NEWTON=line_search PACKING="$d/packing.csv" STATE="$v/$start" \
       "$root/tools/solver_packing.sh" "$build" "$v" "$n" 1 > /dev/null 2>&1 ||
      ! timed "$v/relax_frictionless" "$v" "$build/gembem" run relax_frictionless.yaml -o relax_frictionless --overwrite --quiet; then
     echo "| $n | the start (gembem's frictionless relaxation) failed: see $v | | | | | | | | | |"
     return
   fi
-  if [ "$start" = pressed ]; then
+  if [ "$start" = pressed ] && [ -z "$PATH_START" ]; then
     sed -n '1,/^grains:/p' "$v/relax_frictionless.yaml" | grep -v '^grains:\|^#' > "$v/pressed.yaml"
     cat >> "$v/pressed.yaml" <<YAML
 initial_state: relax_frictionless/state.yaml
