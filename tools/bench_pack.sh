@@ -9,6 +9,8 @@
 # coordination (without rattlers), mean stress and the largest fixing force. Runs in runs/bench_pack/nN (kept: state.yaml is a
 # packing that run scenes start from).
 #   tools/bench_pack.sh [BUILD_DIR] [N ...]      (N: 10000 100000 by default)
+# STRESS=s grows to s dyn/cm instead, in runs/bench_pack/nN_sS (tools/bench_peer.sh's PATH_START:
+# STRESS=1.0e5 THREADS=2 tools/bench_pack.sh build 100000 is the start of its 1e5 path rows).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=$root/${1:-build}; shift || true
@@ -17,19 +19,20 @@ sizes=${*:-10000 100000}
 # threads (the packing is the same bits whatever their number); on a machine other jobs load,
 # OMP_WAIT_POLICY=passive keeps a waiting thread from spinning on the core the others need.
 threads=${THREADS:-1}
+stress=${STRESS:-} # another target stress than box_growth.yaml's 1.0e4 dyn/cm (its own directories)
 echo "machine: $(nproc --all) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); $(date -u '+%Y-%m-%d %H:%M'); load average $(cut -d' ' -f1-3 /proc/loadavg); threads $threads, OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-unset}"
 echo
 echo "| discs | seconds: total [CPU] (place / grow / settle / equilibrium) | FIRE iterations: grow + settle | CPU us per iteration | peak memory [MB] | porosity | coordination (without rattlers) | rattlers | mean stress / target | largest fixing force / accuracy |"
 echo "|---:|---|---|---:|---:|---:|---|---:|---:|---:|"
 for n in $sizes; do
-  d=$root/runs/bench_pack/n$n
+  d=$root/runs/bench_pack/n$n${stress:+_s$stress}
   mkdir -p "$d"
   # the mean disc area of the mix: 1 / sum over sizes of (1/3) / (pi r^2)
   side=$(awk -v n="$n" 'BEGIN { pi = atan2(0, -1); s = 0; split("0.3 0.45 0.6", r, " ");
                                 for (k = 1; k <= 3; k++) s += 1 / (3 * pi * r[k] * r[k]);
                                 printf "%.6g", sqrt(n / s / 0.84) }')
   sed -e "s/right: 24.4/right: $side/; s/top: 24.4/top: $side/; s/count: 1000$/count: $n/" \
-      -e "s/^solver: {/solver: {threads: $threads, /" \
+      -e "s/^solver: {/solver: {threads: $threads, /" ${stress:+-e "s/stress: 1.0e4\$/stress: $stress/"} \
     "$root/validation/packing/box_growth.yaml" > "$d/scene.yaml"
   grep -q "count: $n$" "$d/scene.yaml" || { echo "bench_pack.sh: could not make the scene for $n discs" >&2; exit 1; }
   /usr/bin/time -v "$build/gembem" pack "$d/scene.yaml" -o "$d/out" --overwrite --quiet 2> "$d/time.log" ||
