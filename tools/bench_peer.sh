@@ -214,20 +214,15 @@ path_rows() {
   echo "|---|---|---|---|---|---|---|---|---|---|---|"
   [ "$PATH_STRESS" = 0 ] || start=pressed
   mkdir -p "$v"
-  if [ -n "$PATH_START" ]; then
-    rm -rf "$v/given" && cp -r "$PATH_START" "$v/given" && start=given
-    if ! env SOLVER=global LINEAR=umfpack NEWTON=line_search PACKING="$d/packing.csv" STATE="$v/$start" \
-        "$root/tools/solver_packing.sh" "$build" "$v" "$n" 1 > /dev/null 2>&1; then
-      echo "| $n | the path's scene could not be written: see $v | | | | | | | | | |"
-      return
-    fi
-  elif ! env SOLVER=global LINEAR=umfpack NEWTON=line_search PACKING="$d/packing.csv" STATE="$v/$start" \
+  [ -z "$PATH_START" ] || { rm -rf "$v/given" && cp -r "$PATH_START" "$v/given" && start=given; }
+  if ! env SOLVER=global LINEAR=umfpack NEWTON=line_search PACKING="$d/packing.csv" STATE="$v/$start" \
       "$root/tools/solver_packing.sh" "$build" "$v" "$n" 1 > /dev/null 2>&1 ||
-     ! timed "$v/relax_frictionless" "$v" "$build/gembem" run relax_frictionless.yaml -o relax_frictionless --overwrite --quiet; then
-    echo "| $n | the start (gembem's frictionless relaxation) failed: see $v | | | | | | | | | |"
+     { [ "$start" != given ] &&
+       ! timed "$v/relax_frictionless" "$v" "$build/gembem" run relax_frictionless.yaml -o relax_frictionless --overwrite --quiet; }; then
+    echo "| $n | the start (the path's scenes, gembem's frictionless relaxation) failed: see $v | | | | | | | | | |"
     return
   fi
-  if [ "$start" = pressed ] && [ -z "$PATH_START" ]; then
+  if [ "$start" = pressed ]; then
     sed -n '1,/^grains:/p' "$v/relax_frictionless.yaml" | grep -v '^grains:\|^#' > "$v/pressed.yaml"
     cat >> "$v/pressed.yaml" <<YAML
 initial_state: relax_frictionless/state.yaml
