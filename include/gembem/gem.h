@@ -87,16 +87,18 @@ void gb_sim_on_within_step(gb_sim *sim, gb_within_step_fn fn, void *user);
 
 const gb_scene *gb_sim_scene(const gb_sim *sim);
 int gb_sim_n_grains(const gb_sim *sim);
-const gb_grain *gb_sim_grains(const gb_sim *sim);
+/* Grain i, numbered as in the scene (the simulation keeps its grains in another order). */
+gb_grain gb_sim_grain(const gb_sim *sim, int i);
 gb_box gb_sim_box(const gb_sim *sim);
-/* Copies up to `cap` force-carrying contacts into out (may be NULL) and returns how many there are. */
+/* Copies up to `cap` force-carrying contacts into out (may be NULL) and returns how many there are:
+ * grains numbered as in the scene, i < j between grains, sorted by (i, j) when all fit. */
 int gb_sim_contacts(const gb_sim *sim, gb_contact *out, int cap);
-/* A newly allocated copy of the force-carrying contacts (free() it), their count in *n; NULL on
- * failure (err says why). */
+/* A newly allocated copy of the force-carrying contacts as gb_sim_contacts gives them (free() it),
+ * their count in *n; NULL on failure (err says why). */
 gb_contact *gb_sim_contacts_copy(const gb_sim *sim, int *n, gb_error *err);
 /* Total elastic energy of the contact springs, sum of (pn^2/kn + pt^2/kt)/2 (K 22). */
 double gb_sim_elastic_energy(const gb_sim *sim);
-/* The fixing force (fx, fy, m/r) of grain i (K 5). */
+/* The fixing force (fx, fy, m/r) of grain i (K 5), numbered as in the scene. */
 void gb_sim_fixing_force(const gb_sim *sim, int i, double F[3]);
 /* The boundary stresses s1 (vertical) and s2 (horizontal) of the walls (K section 4.1), from the
  * forces of the current contacts (recomputed: F, S and the walls' forces). */

@@ -221,7 +221,9 @@ static int candidates(gb_pair_search *S, const gb_grid *G, const gb_world *w, in
     return nc;
 }
 
-gb_status gb_pairs_rebuild(gb_pair_set *P, gb_pair_search *S, const gb_world *w, gb_error *err)
+/* The grid over the world (cells of side 2 rmax + skin) and the grains sorted by cell into
+ * S->cell_grains, S->cell_start; the boundary particles by cell into S->pcell_head, pcell_next. */
+static gb_status cells_fill(gb_pair_search *S, const gb_world *w, gb_grid *grid, gb_error *err)
 {
     gb_status st;
     const gb_grain *g = w->g;
@@ -250,12 +252,11 @@ gb_status gb_pairs_rebuild(gb_pair_set *P, gb_pair_search *S, const gb_world *w,
     int ncx = (int)((xmax - xmin) / h) + 1, ncy = (int)((ymax - ymin) / h) + 1;
     int ncells = ncx * ncy;
     const gb_grid G = {xmin, ymin, h, ncx, ncy};
+    *grid = G;
     if ((st = grow((void **)&S->cell_start, &S->n_cells_cap, ncells + 1, sizeof(int), err))) return st;
     size_t nn = (size_t)(n > 0 ? n : 1);
     if ((!S->cell_grains && !(S->cell_grains = malloc(nn * sizeof *S->cell_grains))) ||
         (!S->grain_cell && !(S->grain_cell = malloc(nn * sizeof(int)))))
-        return gb_fail(err, GB_ENOMEM, "out of memory for the cell list");
-    if (!P->x0 && !(P->x0 = malloc((size_t)(2 * (n > 0 ? n : 1)) * sizeof(double))))
         return gb_fail(err, GB_ENOMEM, "out of memory for the cell list");
     memset(S->cell_start, 0, (size_t)(ncells + 1) * sizeof(int));
     if (np > 0) {
@@ -285,6 +286,32 @@ gb_status gb_pairs_rebuild(gb_pair_set *P, gb_pair_search *S, const gb_world *w,
     }
     for (int c = ncells; c > 0; c--) S->cell_start[c] = S->cell_start[c - 1]; /* back to each cell's start */
     S->cell_start[0] = 0;
+    return GB_OK;
+}
+
+gb_status gb_grains_cell_order(const gb_grain *g, int n, int *order, gb_error *err)
+{
+    if (n <= 0) return GB_OK;
+    gb_pair_search S = {0};
+    gb_world w = {g, n, NULL, NULL};
+    gb_grid G;
+    gb_status st = cells_fill(&S, &w, &G, err);
+    for (int k = 0; !st && k < n; k++) order[k] = S.cell_grains[k].j;
+    gb_pair_search_free(&S);
+    return st;
+}
+
+gb_status gb_pairs_rebuild(gb_pair_set *P, gb_pair_search *S, const gb_world *w, gb_error *err)
+{
+    const gb_grain *g = w->g;
+    const gb_box *box = w->box;
+    const gb_particles *bp = w->bp;
+    int n = w->n, np = bp ? bp->n : 0;
+    gb_grid G;
+    gb_status st = cells_fill(S, w, &G, err);
+    if (st) return st;
+    if (!P->x0 && !(P->x0 = malloc((size_t)(2 * (n > 0 ? n : 1)) * sizeof(double))))
+        return gb_fail(err, GB_ENOMEM, "out of memory for the cell list");
 
     /* The candidates in two passes over the grains, each thread on one contiguous range of them
      * (the same in both): their sorted candidates into the thread's buffer, then, after the

@@ -89,6 +89,11 @@ void gb_pair_search_free(gb_pair_search *S);
  * the state of the pairs that persist. Both lists are sorted by (i, j). */
 gb_status gb_pairs_rebuild(gb_pair_set *P, gb_pair_search *S, const gb_world *w, gb_error *err);
 
+/* The grains' order by cell: order[k] is the index of the k-th grain of g[0..n) in the grid of
+ * gb_pairs_rebuild over their extent, cells row by row from the bottom, each cell's grains in
+ * increasing index. Neighbours are then near in memory: a simulation keeps its grains so
+ * (src/gem/sim.c), as LAMMPS sorts its atoms by bin. */
+gb_status gb_grains_cell_order(const gb_grain *g, int n, int *order, gb_error *err);
 /* True when some grain or wall has moved far enough since the last rebuild that a new contact
  * could be missing from the list. */
 int gb_pairs_stale(const gb_pair_set *P, const gb_pair_search *S, const gb_world *w);

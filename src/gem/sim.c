@@ -17,6 +17,7 @@ void gb_gem_problem_free(gb_sim *sim)
     if (!sim) return;
     sim->bp.x = sim->bp.y = NULL; /* the state's */
     gb_state_free(&sim->state);
+    free(sim->grain_order), free(sim->grain_place);
     free(sim->body);
     free(sim->scratch.F);
     free(sim->scratch.S);
@@ -124,17 +125,25 @@ gb_status gb_gem_problem_create(const gb_scene *scene, gb_sim **out, gb_error *e
         free(sim);
         return st;
     }
+    sim->grain_order = malloc(nn * sizeof(int)), sim->grain_place = malloc(nn * sizeof(int));
     sim->body = malloc(nn * 2 * sizeof(double));
     sim->scratch.F = calloc(nn * 3, sizeof(double));
     sim->scratch.S = calloc(nn * 6, sizeof(double));
     sim->scratch.dX = calloc(nn * 3, sizeof(double));
     sim->scratch.nc = calloc(nn, sizeof(int));
     sim->scratch.one = calloc(nn * GB_ONE, sizeof(double));
-    if (!sim->body || !sim->scratch.F || !sim->scratch.S || !sim->scratch.dX || !sim->scratch.nc || !sim->scratch.one) {
+    if (!sim->grain_order || !sim->grain_place || !sim->body || !sim->scratch.F || !sim->scratch.S || !sim->scratch.dX || !sim->scratch.nc || !sim->scratch.one) {
         gb_gem_problem_free(sim);
         return gb_fail(err, GB_ENOMEM, "out of memory for %d grains", n);
     }
-    memcpy(sim->state.g, scene->grains, (size_t)n * sizeof *sim->state.g);
+    if ((st = gb_grains_cell_order(scene->grains, n, sim->grain_order, err))) {
+        gb_gem_problem_free(sim);
+        return st;
+    }
+    for (int k = 0; k < n; k++) {
+        sim->state.g[k] = scene->grains[sim->grain_order[k]];
+        sim->grain_place[sim->grain_order[k]] = k;
+    }
     double rsum = 0;
     for (int i = 0; i < n; i++) {
         double area = PI * sim->state.g[i].r * sim->state.g[i].r;
@@ -170,8 +179,11 @@ gb_status gb_gem_problem_create(const gb_scene *scene, gb_sim **out, gb_error *e
     }
     for (int c = 0; c < scene->restart.n_contacts; c++) {
         const gb_contact_init *ci = &scene->restart.contacts[c];
-        int i = ci->i, j = ci->j;
-        if (j >= 0 && j < i) i = ci->j, j = ci->i;
+        int i = sim->grain_place[ci->i], j = ci->j >= 0 ? sim->grain_place[ci->j] : ci->j, swap = j >= 0 && j < i;
+        if (swap) {
+            int t = i;
+            i = j, j = t;
+        }
         gb_pair *p = find_pair(&sim->state.pairs, i, j);
         if (!p || !(p->d > 0)) {
             gb_gem_problem_free(sim);
@@ -183,7 +195,7 @@ gb_status gb_gem_problem_create(const gb_scene *scene, gb_sim **out, gb_error *e
         /* Seen from the lower index the tangential force keeps its sign (K 25); the rolling moment
          * on the lower index is the other's with the opposite sign. */
         p->pt = ci->pt;
-        p->mr = i == ci->i ? ci->mr : -ci->mr;
+        p->mr = swap ? -ci->mr : ci->mr;
         if (!(gb_sim_material(sim, p->j)->kr > 0)) p->mr = 0; /* rolling switched off: no moment */
     }
     /* the accuracy of a relaxation run outside gb_sim_run (benchmarks, tests): as for a first step */
@@ -194,8 +206,14 @@ gb_status gb_gem_problem_create(const gb_scene *scene, gb_sim **out, gb_error *e
 
 const gb_scene *gb_sim_scene(const gb_sim *sim) { return sim->scene; }
 int gb_sim_n_grains(const gb_sim *sim) { return sim->state.n; }
-const gb_grain *gb_sim_grains(const gb_sim *sim) { return sim->state.g; }
+gb_grain gb_sim_grain(const gb_sim *sim, int i) { return sim->state.g[sim->grain_place[i]]; }
 gb_box gb_sim_box(const gb_sim *sim) { return sim->state.box; }
+
+static int contact_cmp(const void *a, const void *b)
+{
+    const gb_contact *p = a, *q = b;
+    return p->i != q->i ? (p->i > q->i) - (p->i < q->i) : (p->j > q->j) - (p->j < q->j);
+}
 
 int gb_sim_contacts(const gb_sim *sim, gb_contact *out, int cap)
 {
@@ -204,11 +222,16 @@ int gb_sim_contacts(const gb_sim *sim, gb_contact *out, int cap)
         const gb_pair *p = &sim->state.pairs.p[k];
         if (!(p->d > 0)) continue;
         if (out && m < cap) {
-            gb_contact c = {p->i, p->j, p->nx, p->ny, p->d, p->pn, p->pt, p->diss, p->mr};
+            /* Seen from the other grain the normal and the rolling moment change sign, the
+             * tangential force does not (K 25). */
+            int i = sim->grain_order[p->i], j = p->j >= 0 ? sim->grain_order[p->j] : p->j;
+            double s = j >= 0 && j < i ? -1 : 1;
+            gb_contact c = {s > 0 ? i : j, s > 0 ? j : i, s * p->nx, s * p->ny, p->d, p->pn, p->pt, p->diss, s * p->mr};
             out[m] = c;
         }
         m++;
     }
+    if (out && m <= cap) qsort(out, (size_t)m, sizeof *out, contact_cmp);
     return m;
 }
 
@@ -238,7 +261,7 @@ gb_contact *gb_sim_contacts_copy(const gb_sim *sim, int *n, gb_error *err)
 
 void gb_sim_fixing_force(const gb_sim *sim, int i, double F[3])
 {
-    memcpy(F, &sim->scratch.F[3 * i], 3 * sizeof(double));
+    memcpy(F, &sim->scratch.F[3 * sim->grain_place[i]], 3 * sizeof(double));
 }
 
 void gb_sim_stress(gb_sim *sim, double *s1, double *s2)

@@ -101,6 +101,11 @@ static inline long gb_sim_step_iterations(const gb_sim_step *c) { return c->iter
 struct gb_sim {
     const gb_scene *scene;
     gb_state state;     /* what iterations and load steps change */
+    /* The state keeps its grains by cell (gb_grains_cell_order of the scene's, at creation), so that
+     * a contact's two grains are near in memory: state grain k is the scene's grain_order[k], scene
+     * grain i is the state's grain_place[i]. Everything a run writes or a caller reads numbers the
+     * grains as the scene does (gb_sim_grain, gb_sim_contacts, src/measure/step.c). */
+    int *grain_order, *grain_place;
     double *body;       /* B per grain: bx, by */
     gb_pair_search search; /* how the state's pairs are found */
     gb_world world;     /* what the grains touch: themselves, the box's walls, boundary particles */

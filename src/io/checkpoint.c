@@ -16,7 +16,9 @@
 
 /* 2: the load step in progress (a checkpoint within a step) and its states; 1 (before): between
  * steps only, not read. */
-enum { FORMAT = 4 }; /* 3: each pair's rolling moment; 4: the line search's smoother-first state */
+/* 3: each pair's rolling moment; 4: the line search's smoother-first state; 5: grains in the
+ * simulation's order by cell (gb_sim.grain_order) */
+enum { FORMAT = 5 };
 
 static uint64_t fnv(uint64_t h, const void *data, size_t n)
 {

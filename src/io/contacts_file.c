@@ -29,13 +29,14 @@ gb_status gb_contacts_file_write(const char *path, const gb_sim *sim, gb_contact
     return st;
 }
 
-void gb_contact_far_end(const gb_grain *g, const gb_contact *c, double *x, double *y)
+void gb_contact_far_end(const gb_sim *sim, const gb_contact *c, double *x, double *y)
 {
-    const gb_grain *gi = &g[c->i];
+    gb_grain gi = gb_sim_grain(sim, c->i);
     if (c->j >= 0) {
-        *x = g[c->j].x, *y = g[c->j].y;
+        gb_grain gj = gb_sim_grain(sim, c->j);
+        *x = gj.x, *y = gj.y;
     } else {
-        *x = gi->x + c->nx * (gi->r - c->overlap);
-        *y = gi->y + c->ny * (gi->r - c->overlap);
+        *x = gi.x + c->nx * (gi.r - c->overlap);
+        *y = gi.y + c->ny * (gi.r - c->overlap);
     }
 }

@@ -14,6 +14,6 @@ gb_status gb_contacts_file_write(const char *path, const gb_sim *sim, gb_contact
 
 /* The far end of a contact of grain c->i for drawing force chains: grain j's centre, or the
  * contact point on a wall or a boundary particle. */
-void gb_contact_far_end(const gb_grain *g, const gb_contact *c, double *x, double *y);
+void gb_contact_far_end(const gb_sim *sim, const gb_contact *c, double *x, double *y);
 
 #endif

@@ -12,10 +12,11 @@
 static void write_grains(FILE *f, const void *data)
 {
     const gb_sim *sim = data;
-    const gb_grain *g = gb_sim_grains(sim);
     fprintf(f, "x,y,r,rotation\n");
-    for (int i = 0; i < gb_sim_n_grains(sim); i++)
-        fprintf(f, "%.17g,%.17g,%.17g,%.17g\n", g[i].x, g[i].y, g[i].r, g[i].rot);
+    for (int i = 0; i < gb_sim_n_grains(sim); i++) {
+        gb_grain g = gb_sim_grain(sim, i);
+        fprintf(f, "%.17g,%.17g,%.17g,%.17g\n", g.x, g.y, g.r, g.rot);
+    }
 }
 
 gb_status gb_grains_csv_write(const char *path, const gb_sim *sim, gb_error *err)
@@ -28,17 +29,16 @@ static void write_contacts(FILE *f, const gb_sim *sim, const gb_contact *c, int 
 {
     int rolling = gb_scene_rolling(sim->scene); /* the column only where there is rolling resistance */
     fprintf(f, "i,j,pn,pt,nx,ny,overlap,energy,dissipation,xi,yi,xj,yj%s\n", rolling ? ",mr" : "");
-    const gb_grain *g = gb_sim_grains(sim);
     for (int k = 0; k < m; k++) {
         const gb_material *mat = gb_sim_material(sim, c[k].j);
         double e = gb_spring_energy(c[k].pn, c[k].pt, c[k].mr, mat);
-        const gb_grain *gi = &g[c[k].i];
+        gb_grain gi = gb_sim_grain(sim, c[k].i);
         double xj, yj;
-        gb_contact_far_end(g, &c[k], &xj, &yj);
+        gb_contact_far_end(sim, &c[k], &xj, &yj);
         char side[32];
         gb_side_name(c[k].j, side, sizeof side);
         fprintf(f, "%d,%s,%.17g,%.17g,%.17g,%.17g,%.17g,%.10e,%.10e,%.17g,%.17g,%.17g,%.17g", c[k].i, side, c[k].pn,
-                c[k].pt, c[k].nx, c[k].ny, c[k].overlap, e, c[k].diss, gi->x, gi->y, xj, yj);
+                c[k].pt, c[k].nx, c[k].ny, c[k].overlap, e, c[k].diss, gi.x, gi.y, xj, yj);
         if (rolling) fprintf(f, ",%.17g", c[k].mr);
         fprintf(f, "\n");
     }

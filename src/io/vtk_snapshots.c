@@ -12,16 +12,15 @@ static void write_grains(FILE *f, const void *data)
 {
     const gb_sim *sim = data;
     int n = gb_sim_n_grains(sim);
-    const gb_grain *g = gb_sim_grains(sim);
     gb_vtk_begin(f, GB_VTK_POLYDATA, n, "NumberOfVerts", n);
-    for (int i = 0; i < n; i++) fprintf(f, "%.17g %.17g 0\n", g[i].x, g[i].y);
+    for (int i = 0; i < n; i++) fprintf(f, "%.17g %.17g 0\n", gb_sim_grain(sim, i).x, gb_sim_grain(sim, i).y);
     gb_vtk_end_points(f);
     gb_vtk_open(f, "PointData", "Scalars=\"radius\"");
     gb_vtk_array(f, "Float64", "radius", 1);
-    for (int i = 0; i < n; i++) fprintf(f, "%.17g\n", g[i].r);
+    for (int i = 0; i < n; i++) fprintf(f, "%.17g\n", gb_sim_grain(sim, i).r);
     gb_vtk_array_end(f);
     gb_vtk_array(f, "Float64", "rotation", 1);
-    for (int i = 0; i < n; i++) fprintf(f, "%.17g\n", g[i].rot);
+    for (int i = 0; i < n; i++) fprintf(f, "%.17g\n", gb_sim_grain(sim, i).rot);
     gb_vtk_array_end(f);
     gb_vtk_array(f, "Float64", "fixing_force", 1);
     for (int i = 0; i < n; i++) {
@@ -53,14 +52,14 @@ gb_status gb_vtk_write_grains(const char *path, const gb_sim *sim, gb_error *err
 /* The contacts as lines from grain i's centre to the contact's far end, and the box's four sides. */
 static void write_contacts(FILE *f, const gb_sim *sim, const gb_contact *c, int m)
 {
-    const gb_grain *g = gb_sim_grains(sim);
     gb_box b = gb_sim_box(sim);
     int lines = m + 4, points = 2 * m + 4;
     gb_vtk_begin(f, GB_VTK_POLYDATA, points, "NumberOfLines", lines);
     for (int k = 0; k < m; k++) {
         double x, y;
-        gb_contact_far_end(g, &c[k], &x, &y);
-        fprintf(f, "%.17g %.17g 0\n%.17g %.17g 0\n", g[c[k].i].x, g[c[k].i].y, x, y);
+        gb_contact_far_end(sim, &c[k], &x, &y);
+        gb_grain gi = gb_sim_grain(sim, c[k].i);
+        fprintf(f, "%.17g %.17g 0\n%.17g %.17g 0\n", gi.x, gi.y, x, y);
     }
     fprintf(f, "%.17g %.17g 0\n%.17g %.17g 0\n%.17g %.17g 0\n%.17g %.17g 0\n", b.left, b.bottom, b.right, b.bottom,
             b.right, b.top, b.left, b.top);

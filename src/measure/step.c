@@ -25,10 +25,11 @@ static gb_status zone_measure(const gb_state *start, const gb_sim *sim, gb_zone_
     if (!z->x0 || !z->x1 || !z->r || !z->grain || !z->grain_tri || !z->d2)
         return gb_fail(err, GB_ENOMEM, "out of memory for the measures of %d grains", n);
     double dmax = 0;
-    for (int i = 0; i < n; i++) {
-        z->x0[2 * i] = start->g[i].x, z->x0[2 * i + 1] = start->g[i].y;
-        z->x1[2 * i] = sim->state.g[i].x, z->x1[2 * i + 1] = sim->state.g[i].y;
-        z->r[i] = sim->state.g[i].r;
+    for (int i = 0; i < n; i++) { /* numbered as in the scene: the files' order */
+        const gb_grain *g0 = &start->g[sim->grain_place[i]], *g1 = &sim->state.g[sim->grain_place[i]];
+        z->x0[2 * i] = g0->x, z->x0[2 * i + 1] = g0->y;
+        z->x1[2 * i] = g1->x, z->x1[2 * i + 1] = g1->y;
+        z->r[i] = g1->r;
         dmax = fmax(dmax, 2 * z->r[i]);
     }
     /* The triangulation drops edges with a gap wider than the largest diameter (gap < 0). A zone
@@ -64,10 +65,16 @@ gb_status gb_step_measure(const gb_state *start, const gb_sim *end, int step, in
     m->step = step, m->fields = fields, m->row = row;
     gb_micro_measure(end, &m->micro);
     m->micro.dissipation_step_k28 = gb_micro_step_dissipation(start, end);
-    m->n_sliding = gb_measure_sliding(end, NULL, 0);
-    m->sliding = malloc((size_t)(m->n_sliding > 0 ? m->n_sliding : 1) * sizeof *m->sliding);
-    if (!m->sliding) return gb_fail(err, GB_ENOMEM, "out of memory for %d sliding contacts", m->n_sliding);
-    gb_measure_sliding(end, m->sliding, m->n_sliding);
+    int nc;
+    gb_contact *c = gb_sim_contacts_copy(end, &nc, err);
+    if (!c) return err->code;
+    m->sliding = malloc((size_t)(nc > 0 ? nc : 1) * sizeof *m->sliding);
+    if (!m->sliding) {
+        free(c);
+        return gb_fail(err, GB_ENOMEM, "out of memory for %d sliding contacts", nc);
+    }
+    m->n_sliding = gb_measure_sliding(end, c, nc, m->sliding);
+    free(c);
     if (!row && !fields) return GB_OK;
     gb_status st = zone_measure(start, end, &m->zone, err);
     /* the row needs the host's wall only; the empty cavity and the ring are for the files */

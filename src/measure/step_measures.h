@@ -17,8 +17,9 @@ typedef struct {
  * tolerance 1e-9 that the global solver uses for its tangents (src/solver/global.c): the contact
  * law clamps pt there when the contact slides. Contacts without friction (limit 0) or without a
  * tangential spring (kt = 0, e.g. against boundary particles) never count: they carry no shear.
- * Returns their number; fills out (may be NULL) up to cap. */
-int gb_measure_sliding(const gb_sim *sim, gb_sliding_contact *out, int cap);
+ * They are taken from the m contacts c of sim (gb_sim_contacts: as numbered and ordered there) into
+ * out (room for m); returns their number. */
+int gb_measure_sliding(const gb_sim *sim, const gb_contact *c, int m, gb_sliding_contact *out);
 
 /* The host around its cavity for the simulation's cavity displacements. Stresses tension
  * positive (the boundary element module's convention), strains from them by Hooke's law. */

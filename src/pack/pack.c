@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "contact/pairs.h"
 #include "core/clock.h"
 #include "gembem/pack.h"
 #include "gembem/run.h"
@@ -97,44 +98,25 @@ static gb_status relax(packer *P, double *scale, double target, double stress, i
     return st;
 }
 
-typedef struct {
-    long cell;
-    int i;
-} cell_key;
-
-static int by_cell(const void *a, const void *b)
-{
-    const cell_key *p = a, *q = b;
-    if (p->cell != q->cell) return p->cell < q->cell ? -1 : 1;
-    return (p->i > q->i) - (p->i < q->i);
-}
-
-/* The grains (and their drawn radii) put in the order of cells a largest diameter wide, row by row:
- * the discs of a pair then lie near each other in memory, which at 1e5 discs and more keeps the
- * force loop in the cache; the placement left them in random order. */
+/* The grains (and their drawn radii) put in the order of cells (gb_grains_cell_order): the discs of
+ * a pair then lie near each other in memory, which at 1e5 discs and more keeps the force loop in
+ * the cache; the placement left them in random order. */
 static gb_status sort_by_cell(packer *P, gb_error *err)
 {
     int n = P->w.n;
     gb_grain *g = P->w.g;
-    cell_key *key = malloc(((size_t)n + 1) * sizeof *key);
+    int *order = malloc(((size_t)n + 1) * sizeof *order);
     gb_grain *g2 = malloc(((size_t)n + 1) * sizeof *g2);
-    double *r2 = malloc(((size_t)n + 1) * sizeof *r2), h = 0;
-    if (!key || !g2 || !r2) {
-        free(key), free(g2), free(r2);
-        return gb_fail(err, GB_ENOMEM, "out of memory for %d grains", n);
+    double *r2 = malloc(((size_t)n + 1) * sizeof *r2);
+    gb_status st = !order || !g2 || !r2 ? gb_fail(err, GB_ENOMEM, "out of memory for %d grains", n)
+                                        : gb_grains_cell_order(g, n, order, err);
+    if (!st) {
+        for (int k = 0; k < n; k++) g2[k] = g[order[k]], r2[k] = P->r[order[k]];
+        memcpy(g, g2, (size_t)n * sizeof *g);
+        memcpy(P->r, r2, (size_t)n * sizeof *r2);
     }
-    for (int i = 0; i < n; i++) h = fmax(h, 2 * g[i].r);
-    long nx = (long)((P->rg.hi[0] - P->rg.lo[0]) / h) + 1;
-    for (int i = 0; i < n; i++) {
-        long cx = (long)((g[i].x - P->rg.lo[0]) / h), cy = (long)((g[i].y - P->rg.lo[1]) / h);
-        key[i].cell = cy * nx + cx, key[i].i = i;
-    }
-    qsort(key, (size_t)n, sizeof *key, by_cell);
-    for (int k = 0; k < n; k++) g2[k] = g[key[k].i], r2[k] = P->r[key[k].i];
-    memcpy(g, g2, (size_t)n * sizeof *g);
-    memcpy(P->r, r2, (size_t)n * sizeof *r2);
-    free(key), free(g2), free(r2);
-    return GB_OK;
+    free(order), free(g2), free(r2);
+    return st;
 }
 
 /* The drawn radii, placed at the largest scale up to `scale` that lets them in loose. */
@@ -234,20 +216,19 @@ static gb_status measure(const gb_sim *sim, gb_pack_result *res, gb_error *err)
     int m;
     gb_contact *c = gb_sim_contacts_copy(sim, &m, err);
     if (!c) return err->code;
-    const gb_grain *g = gb_sim_grains(sim);
     double virial = 0;
     res->contacts_grains = res->contacts_boundary = 0;
     res->largest_overlap = 0;
     for (int q = 0; q < m; q++) {
-        const gb_grain *a = &g[c[q].i];
+        gb_grain a = gb_sim_grain(sim, c[q].i);
         if (c[q].j >= 0) {
-            const gb_grain *b = &g[c[q].j];
+            gb_grain b = gb_sim_grain(sim, c[q].j);
             res->contacts_grains++;
-            virial += c[q].pn * hypot(b->x - a->x, b->y - a->y);
-            res->largest_overlap = fmax(res->largest_overlap, c[q].overlap / fmin(a->r, b->r));
+            virial += c[q].pn * hypot(b.x - a.x, b.y - a.y);
+            res->largest_overlap = fmax(res->largest_overlap, c[q].overlap / fmin(a.r, b.r));
         } else {
             res->contacts_boundary++;
-            virial += c[q].pn * (a->r - 0.5 * c[q].overlap);
+            virial += c[q].pn * (a.r - 0.5 * c[q].overlap);
         }
     }
     res->mean_stress = virial / (2 * res->area);

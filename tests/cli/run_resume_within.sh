@@ -87,16 +87,17 @@ within_case hybrid_history 1 12 25 4
 d=$out/format1; mkdir -p "$d"; cd "$d"
 n=30; extra_env="GB_TEST_CHECKPOINT_ITERATIONS=7"; start "$out/scenes/global.yaml" -o run
 if [ -f run/checkpoint.txt ]; then
-  /usr/bin/python3 - run/checkpoint.txt <<'PY'
+  fmt=$(awk 'NR == 1 { print $2 }' run/checkpoint.txt)
+  /usr/bin/python3 - run/checkpoint.txt "$fmt" <<'PY'
 import sys
 text = open(sys.argv[1], 'rb').read()
-body = text[:text.rindex(b'end ')].replace(b'gembem_checkpoint 4', b'gembem_checkpoint 1', 1)
+body = text[:text.rindex(b'end ')].replace(b'gembem_checkpoint ' + sys.argv[2].encode(), b'gembem_checkpoint 1', 1)
 h = 0xcbf29ce484222325
 for b in body: h = ((h ^ b) * 0x100000001b3) % 2**64
 open(sys.argv[1], 'wb').write(body + b'end %016x\n' % h)
 PY
   msg=$("$gembem" run --resume run 2>&1 >/dev/null); code=$?
-  [ $code -eq 2 ] && [[ $msg =~ "a checkpoint of format 1, this gembem reads format 4" ]] && ok "format 1: refused: $msg" \
+  [ $code -eq 2 ] && [[ $msg =~ "a checkpoint of format 1, this gembem reads format $fmt" ]] && ok "format 1: refused: $msg" \
     || bad "format 1: exit $code, '$msg'"
 else bad "format 1: the run left no checkpoint"; fi
 

@@ -35,8 +35,10 @@ static gb_status watch(void *user, const gb_sim *sim, const gb_step_report *r, g
     o->last_ratio = r->stress_ratio;
     o->max_force = r->max_fixing_force;
     o->finite &= isfinite(r->s1) && isfinite(r->s2) && isfinite(r->stress_ratio) && isfinite(r->e1);
-    const gb_grain *g = gb_sim_grains(sim);
-    for (int i = 0; i < gb_sim_n_grains(sim); i++) o->finite &= isfinite(g[i].x) && isfinite(g[i].y) && isfinite(g[i].rot);
+    for (int i = 0; i < gb_sim_n_grains(sim); i++) {
+        gb_grain g = gb_sim_grain(sim, i);
+        o->finite &= isfinite(g.x) && isfinite(g.y) && isfinite(g.rot);
+    }
     return GB_OK;
 }
 

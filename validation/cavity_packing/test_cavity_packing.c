@@ -101,8 +101,10 @@ int main(int argc, char **argv)
     CHECK(run(argv[1], 1, 1.15, 1e6, 0, 1e-9, 0, &s1, &stiff) == GB_OK);
     CHECK(run(argv[1], 1, 1.15, 1.0, 1, 1e-9, 0, &s2, &rigid) == GB_OK);
     double dx = 0, umax = 0;
-    const gb_grain *gs = gb_sim_grains(stiff), *gr = gb_sim_grains(rigid);
-    for (int i = 0; i < gb_sim_n_grains(stiff); i++) dx = fmax(dx, hypot(gs[i].x - gr[i].x, gs[i].y - gr[i].y));
+    for (int i = 0; i < gb_sim_n_grains(stiff); i++) {
+        gb_grain gs = gb_sim_grain(stiff, i), gr = gb_sim_grain(rigid, i);
+        dx = fmax(dx, hypot(gs.x - gr.x, gs.y - gr.y));
+    }
     double *hs = host_cavity(stiff);
     for (int k = 0; hs && k < gb_sim_host_dofs(stiff); k++) umax = fmax(umax, fabs(hs[k]));
     free(hs);
@@ -121,8 +123,10 @@ int main(int argc, char **argv)
     CHECK(run(argv[1], 1, 1.15, 1.0, 0, 1e-9, -1, &r1, &a) == GB_OK);
     CHECK(run(argv[1], 1, 1.15, 1.0, 0, 1e-9, -1, &r2, &b) == GB_OK);
     int same = gb_sim_n_grains(a) == gb_sim_n_grains(b) && gb_sim_host_dofs(a) == gb_sim_host_dofs(b);
-    const gb_grain *ga = gb_sim_grains(a), *gb = gb_sim_grains(b);
-    for (int i = 0; same && i < gb_sim_n_grains(a); i++) same = ga[i].x == gb[i].x && ga[i].y == gb[i].y;
+    for (int i = 0; same && i < gb_sim_n_grains(a); i++) {
+        gb_grain ga = gb_sim_grain(a, i), gb = gb_sim_grain(b, i);
+        same = ga.x == gb.x && ga.y == gb.y;
+    }
     double *ha = host_cavity(a), *hb = host_cavity(b);
     for (int k = 0; same && ha && hb && k < gb_sim_host_dofs(a); k++) same = ha[k] == hb[k];
     free(ha), free(hb);
