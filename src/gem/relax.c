@@ -263,27 +263,44 @@ static void account_move(gb_sim *sim, double diss, const double before[GB_N_WALL
     sim->state.acc.dissipation_step += diss;
 }
 
-/* Updates every pair to the moved bodies (K 6, 13, 25), the energy each dissipated into
- * sim->scratch.pair_diss. The pairs are independent (each reads the bodies and writes itself), so the
- * update runs on solver.threads OpenMP threads; what is summed over pairs is summed afterwards in
- * the pairs' order, so that every result is the same bits whatever the thread count. The update
- * is about half of a smoother step's time (src/solver/inertial.c). */
-static gb_status update_pairs(gb_sim *sim, gb_error *err)
+/* Room for a move's per-pair dissipation (sim->scratch.pair_diss). */
+static gb_status pair_diss_room(gb_sim *sim, gb_error *err)
 {
-    int n = sim->state.pairs.n;
-    if (n > sim->scratch.pair_diss_cap) {
+    if (sim->state.pairs.n > sim->scratch.pair_diss_cap) {
         double *d = realloc(sim->scratch.pair_diss, (size_t)sim->state.pairs.cap * sizeof(double));
         if (!d) return gb_fail(err, GB_ENOMEM, "out of memory for %d pairs", sim->state.pairs.cap);
         sim->scratch.pair_diss = d, sim->scratch.pair_diss_cap = sim->state.pairs.cap;
     }
-    gb_pair *P = sim->state.pairs.p;
-    double *diss = sim->scratch.pair_diss;
-    const double *dX = sim->scratch.dX, *wall_dx = &sim->scratch.wall_dx[0][0];
-    const gb_world *w = &sim->world;
-    int threads = sim->scene->solver.threads;
-#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1 && n >= GB_PARALLEL_PAIRS)
-    for (int k = 0; k < n; k++)
-        diss[k] = gb_pair_update(&P[k], w, dX, wall_dx, gb_sim_material(sim, P[k].j), gb_sim_tan_phi(sim, P[k].j));
+    return GB_OK;
+}
+
+/* Pair k updated to the moved bodies (K 6, 13, 25), the energy it dissipated into
+ * sim->scratch.pair_diss[k]. */
+static inline void update_pair(gb_sim *sim, int k)
+{
+    gb_pair *p = &sim->state.pairs.p[k];
+    sim->scratch.pair_diss[k] = gb_pair_update(p, &sim->world, sim->scratch.dX, &sim->scratch.wall_dx[0][0],
+                                               gb_sim_material(sim, p->j), gb_sim_tan_phi(sim, p->j));
+}
+
+/* The pairs' update runs on solver.threads OpenMP threads from GB_PARALLEL_PAIRS pairs: they are
+ * independent (each reads the bodies and writes itself); what is summed over pairs is summed
+ * afterwards in the pairs' order, so that every result is the same bits whatever the thread
+ * count. On one thread the update is fused with the sums (gb_gem_move_and_forces): one pass over
+ * the pairs instead of two, the same operations in the same order. */
+static int pairs_parallel(const gb_sim *sim)
+{
+    return sim->scene->solver.threads > 1 && sim->state.pairs.n >= GB_PARALLEL_PAIRS;
+}
+
+/* Updates every pair (update_pair); about half of a smoother step's time (src/solver/inertial.c). */
+static gb_status update_pairs(gb_sim *sim, gb_error *err)
+{
+    gb_status st = pair_diss_room(sim, err);
+    if (st) return st;
+    int n = sim->state.pairs.n, threads = sim->scene->solver.threads;
+#pragma omp parallel for schedule(static) num_threads(threads) if (pairs_parallel(sim))
+    for (int k = 0; k < n; k++) update_pair(sim, k);
     return GB_OK;
 }
 
@@ -307,12 +324,14 @@ gb_status gb_gem_move_and_forces(gb_sim *sim, gb_error *err)
     double wall_before[GB_N_WALLS];
     memcpy(wall_before, sim->state.wall_force, sizeof wall_before);
     gb_status st = move_bodies(sim, err);
-    if (!st) st = update_pairs(sim, err);
+    int fused = !pairs_parallel(sim);
+    if (!st) st = fused ? pair_diss_room(sim, err) : update_pairs(sim, err);
     if (st) return st;
     reset_forces(sim);
     double diss = 0;
     for (int k = 0; k < sim->state.pairs.n; k++) {
         const gb_pair *p = &sim->state.pairs.p[k];
+        if (fused) update_pair(sim, k);
         diss += sim->scratch.pair_diss[k];
         if (p->d > 0) gb_gem_add_contact(sim, p, 1);
     }
