@@ -22,74 +22,167 @@ double gb_sim_tan_phi(const gb_sim *sim, int j)
     return GB_IS_PARTICLE(j) ? sim->tan_phi_gb : sim->tan_phi_gw;
 }
 
-void gb_gem_add_contact(gb_sim *sim, const gb_pair *p, double sign)
+/* What a contact adds to its ends (K 5, 8, 25), times sign. */
+typedef struct {
+    double c, s, kn, kt, kr, pn, pt, mr, fx, fy, s00, s01, s11;
+    double kn_mat, kr_mat; /* the material's, for one[] */
+    int rolling;
+} contact_terms;
+
+static inline void contact_terms_of(const gb_sim *sim, const gb_pair *p, double sign, contact_terms *t)
 {
     const gb_material *mat = gb_sim_material(sim, p->j);
     double c = p->nx, s = p->ny, kn = sign * mat->kn, kt = sign * mat->kt;
     /* (K 8): S = sum T^t S_c T with T = [[c, s, 0], [-s, c, 1]] (K 2) */
-    double s00 = kn * c * c + kt * s * s, s01 = (kn - kt) * c * s, s11 = kn * s * s + kt * c * c;
-    double pn = sign * p->pn, pt = sign * p->pt;
-    double fx = c * pn - s * pt, fy = s * pn + c * pt;
-    int i = p->i, count = sign > 0 ? 1 : -1;
+    t->c = c, t->s = s, t->kn = kn, t->kt = kt;
+    t->s00 = kn * c * c + kt * s * s, t->s01 = (kn - kt) * c * s, t->s11 = kn * s * s + kt * c * c;
+    t->pn = sign * p->pn, t->pt = sign * p->pt;
+    t->fx = c * t->pn - s * t->pt, t->fy = s * t->pn + c * t->pt;
     /* Rolling resistance (docs/method.md section 3.1): the moment mr on i, -mr on j; in the DOF
      * r w its stiffness is kr / r^2, kept at the cap as kt is (K 8). */
-    double mr = sign * p->mr, kr = sign * mat->kr;
-    int rolling = mat->kr > 0; /* without, no divisions: they are a good part of a contact's cost */
-    double ri = sim->state.g[i].r, *F = &sim->scratch.F[3 * i], *S = &sim->scratch.S[6 * i];
-    F[0] += fx, F[1] += fy, F[2] += rolling ? pt - mr / ri : pt;
-    S[0] += s00, S[1] += s01, S[2] += -kt * s, S[3] += s11, S[4] += kt * c;
-    S[5] += rolling ? kt + kr / (ri * ri) : kt;
-    sim->scratch.nc[i] += count;
-    if (sign > 0) {
-        double *one = &sim->scratch.one[GB_ONE * i];
-        one[0] = c, one[1] = s, one[2] = mat->kn, one[3] = mat->kr;
+    t->mr = sign * p->mr, t->kr = sign * mat->kr;
+    t->rolling = mat->kr > 0; /* without, no divisions: they are a good part of a contact's cost */
+    t->kn_mat = mat->kn, t->kr_mat = mat->kr;
+}
+
+/* A contact's terms added to grain g, its side i (side 1) or j (side -1: B's block T' = [[-c, -s,
+ * 0], [s, -c, 1]] (K 25), the same moment, the opposite force): negating is exact, so a grain gets
+ * the same bits from either end. */
+static inline void add_to_grain(gb_sim *sim, int g, const contact_terms *t, double side, int count, int set_one)
+{
+    double r = sim->state.g[g].r, *F = &sim->scratch.F[3 * g], *S = &sim->scratch.S[6 * g];
+    F[0] += side * t->fx, F[1] += side * t->fy, F[2] += t->rolling ? t->pt - side * t->mr / r : t->pt;
+    S[0] += t->s00, S[1] += t->s01, S[2] += -side * t->kt * t->s, S[3] += t->s11, S[4] += side * t->kt * t->c;
+    S[5] += t->rolling ? t->kt + t->kr / (r * r) : t->kt;
+    sim->scratch.nc[g] += count;
+    if (set_one) {
+        double *one = &sim->scratch.one[GB_ONE * g];
+        one[0] = side * t->c, one[1] = side * t->s, one[2] = t->kn_mat, one[3] = t->kr_mat;
     }
-    if (p->j >= 0) {
-        /* B's block T' = [[-c, -s, 0], [s, -c, 1]] (K 25): same moment, opposite force. */
-        int j = p->j;
-        double rj = sim->state.g[j].r;
-        F = &sim->scratch.F[3 * j], S = &sim->scratch.S[6 * j];
-        F[0] -= fx, F[1] -= fy, F[2] += rolling ? pt + mr / rj : pt;
-        S[0] += s00, S[1] += s01, S[2] += kt * s, S[3] += s11, S[4] += -kt * c;
-        S[5] += rolling ? kt + kr / (rj * rj) : kt;
-        sim->scratch.nc[j] += count;
-        if (sign > 0) {
-            double *one = &sim->scratch.one[GB_ONE * j];
-            one[0] = -c, one[1] = -s, one[2] = mat->kn, one[3] = mat->kr;
-        }
-    } else if (GB_IS_PARTICLE(p->j)) {
+}
+
+/* A contact's terms added to its other end when that is a boundary particle or a wall. */
+static inline void add_to_boundary(gb_sim *sim, int j, const contact_terms *t)
+{
+    if (GB_IS_PARTICLE(j)) {
         /* A boundary particle: the translational part of T' (K 25). */
-        int e = GB_PARTICLE_OF(p->j);
-        sim->scratch.bp_F[2 * e] -= fx, sim->scratch.bp_F[2 * e + 1] -= fy;
-        sim->scratch.bp_S[3 * e] += s00, sim->scratch.bp_S[3 * e + 1] += s01, sim->scratch.bp_S[3 * e + 2] += s11;
+        int e = GB_PARTICLE_OF(j);
+        sim->scratch.bp_F[2 * e] -= t->fx, sim->scratch.bp_F[2 * e + 1] -= t->fy;
+        sim->scratch.bp_S[3 * e] += t->s00, sim->scratch.bp_S[3 * e + 1] += t->s01, sim->scratch.bp_S[3 * e + 2] += t->s11;
     } else {
-        int w = -1 - p->j;
-        sim->state.wall_force[w] += pn;
-        sim->scratch.wall_k[w] += kn;
+        int w = -1 - j;
+        sim->state.wall_force[w] += t->pn;
+        sim->scratch.wall_k[w] += t->kn;
     }
+}
+
+void gb_gem_add_contact(gb_sim *sim, const gb_pair *p, double sign)
+{
+    contact_terms t;
+    contact_terms_of(sim, p, sign, &t);
+    int count = sign > 0 ? 1 : -1;
+    add_to_grain(sim, p->i, &t, 1, count, sign > 0);
+    if (p->j >= 0) add_to_grain(sim, p->j, &t, -1, count, sign > 0);
+    else add_to_boundary(sim, p->j, &t);
 }
 
 /* The forces before any contact: the body forces (K 5: F = sum T^t P - B), and on boundary
  * particles the force K u + f0 that their displacement asks of the host. */
-static void reset_forces(gb_sim *sim)
+static void reset_boundary(gb_sim *sim)
 {
-    int n = sim->state.n;
-    memset(sim->scratch.S, 0, (size_t)n * 6 * sizeof(double));
-    memset(sim->scratch.nc, 0, (size_t)n * sizeof(int));
     for (int w = 0; w < GB_N_WALLS; w++) sim->state.wall_force[w] = sim->scratch.wall_k[w] = 0;
     if (sim->host) {
         memcpy(sim->scratch.bp_F, sim->host->force, (size_t)sim->host->m * sizeof(double));
         memset(sim->scratch.bp_S, 0, 3 * (size_t)sim->bp.n * sizeof(double));
     }
-    for (int i = 0; i < n; i++) {
-        sim->scratch.F[3 * i] = -sim->body[2 * i];
-        sim->scratch.F[3 * i + 1] = -sim->body[2 * i + 1];
-        sim->scratch.F[3 * i + 2] = 0;
+}
+
+static inline void reset_grain(gb_sim *sim, int i)
+{
+    double *F = &sim->scratch.F[3 * i];
+    F[0] = -sim->body[2 * i], F[1] = -sim->body[2 * i + 1], F[2] = 0;
+    memset(&sim->scratch.S[6 * i], 0, 6 * sizeof(double));
+    sim->scratch.nc[i] = 0;
+}
+
+static void reset_forces(gb_sim *sim)
+{
+    reset_boundary(sim);
+    for (int i = 0; i < sim->state.n; i++) reset_grain(sim, i);
+}
+
+/* The contacts' sums on solver.threads threads from GB_PARALLEL_GRAINS grains: each grain gathers
+ * its own pairs in the list's order, so it adds the same terms in the same order as the serial
+ * loop over the pairs (gb_gem_add_contact), and gets the same bits on any thread count. */
+static int sums_parallel(const gb_sim *sim)
+{
+    return sim->scene->solver.threads > 1 && sim->state.n >= GB_PARALLEL_GRAINS;
+}
+
+/* sim->scratch.inc for the current pair list (a counting sort of the pairs by grain); 0 if there
+ * is no memory for it (the sums then stay serial: the same bits). */
+static int incidence(gb_sim *sim)
+{
+    gb_sim_scratch *z = &sim->scratch;
+    const gb_pair_set *P = &sim->state.pairs;
+    int n = sim->state.n;
+    if (z->inc && z->inc_of == P->generation) return 1;
+    if (!z->inc_start && !(z->inc_start = malloc(((size_t)n + 2) * sizeof(int)))) return 0;
+    if (2 * P->n > z->inc_cap) {
+        int *q = realloc(z->inc, 2 * (size_t)P->cap * sizeof(int));
+        if (!q) return 0;
+        z->inc = q, z->inc_cap = 2 * P->cap;
     }
+    int *start = z->inc_start; /* grain g's pairs from start[g], the walls' and particles' from start[n] */
+    memset(start, 0, ((size_t)n + 2) * sizeof(int));
+    for (int k = 0; k < P->n; k++) {
+        start[P->p[k].i + 1]++;
+        start[(P->p[k].j >= 0 ? P->p[k].j : n) + 1]++;
+    }
+    for (int g = 0; g <= n; g++) start[g + 1] += start[g];
+    for (int k = 0; k < P->n; k++) {
+        z->inc[start[P->p[k].i]++] = k;
+        if (P->p[k].j >= 0) z->inc[start[P->p[k].j]++] = k;
+        else z->inc[start[n]++] = k;
+    }
+    for (int g = n + 1; g > 0; g--) start[g] = start[g - 1]; /* back to each one's first */
+    start[0] = 0;
+    z->inc_of = P->generation;
+    return 1;
+}
+
+/* The forces by gathering (sums_parallel); 0 if the incidence could not be built. */
+static int forces_gathered(gb_sim *sim)
+{
+    if (!incidence(sim)) return 0;
+    int n = sim->state.n, threads = sim->scene->solver.threads;
+    const int *start = sim->scratch.inc_start, *inc = sim->scratch.inc;
+    const gb_pair *P = sim->state.pairs.p;
+#pragma omp parallel for schedule(static) num_threads(threads)
+    for (int g = 0; g < n; g++) {
+        reset_grain(sim, g);
+        for (int q = start[g]; q < start[g + 1]; q++) {
+            const gb_pair *p = &P[inc[q]];
+            if (!(p->d > 0)) continue;
+            contact_terms t;
+            contact_terms_of(sim, p, 1, &t);
+            add_to_grain(sim, g, &t, p->i == g ? 1 : -1, 1, 1);
+        }
+    }
+    reset_boundary(sim);
+    for (int q = start[n]; q < start[n + 1]; q++) {
+        const gb_pair *p = &P[inc[q]];
+        if (!(p->d > 0)) continue;
+        contact_terms t;
+        contact_terms_of(sim, p, 1, &t);
+        add_to_boundary(sim, p->j, &t);
+    }
+    return 1;
 }
 
 void gb_gem_forces(gb_sim *sim)
 {
+    if (sums_parallel(sim) && forces_gathered(sim)) return;
     reset_forces(sim);
     for (int k = 0; k < sim->state.pairs.n; k++)
         if (sim->state.pairs.p[k].d > 0) gb_gem_add_contact(sim, &sim->state.pairs.p[k], 1);
@@ -327,13 +420,17 @@ gb_status gb_gem_move_and_forces(gb_sim *sim, gb_error *err)
     int fused = !pairs_parallel(sim);
     if (!st) st = fused ? pair_diss_room(sim, err) : update_pairs(sim, err);
     if (st) return st;
-    reset_forces(sim);
     double diss = 0;
-    for (int k = 0; k < sim->state.pairs.n; k++) {
-        const gb_pair *p = &sim->state.pairs.p[k];
-        if (fused) update_pair(sim, k);
-        diss += sim->scratch.pair_diss[k];
-        if (p->d > 0) gb_gem_add_contact(sim, p, 1);
+    if (!fused && sums_parallel(sim) && forces_gathered(sim)) {
+        for (int k = 0; k < sim->state.pairs.n; k++) diss += sim->scratch.pair_diss[k];
+    } else {
+        reset_forces(sim);
+        for (int k = 0; k < sim->state.pairs.n; k++) {
+            const gb_pair *p = &sim->state.pairs.p[k];
+            if (fused) update_pair(sim, k);
+            diss += sim->scratch.pair_diss[k];
+            if (p->d > 0) gb_gem_add_contact(sim, p, 1);
+        }
     }
     account_move(sim, diss, wall_before, sim->state.wall_force);
     return GB_OK;

@@ -31,6 +31,7 @@ void gb_gem_problem_free(gb_sim *sim)
     gb_particles_free(&sim->bp);
     free(sim->scratch.bp_F), free(sim->scratch.bp_S);
     free(sim->scratch.pair_diss);
+    free(sim->scratch.inc_start), free(sim->scratch.inc);
     free(sim);
 }
 
