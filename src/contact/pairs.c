@@ -404,7 +404,10 @@ void gb_pairs_drift(const gb_pair_set *P, const gb_world *w, double *grain, doub
     for (int e = 0; w->bp && e < w->bp->n; e++)
         *wall = fmax(*wall, hypot(w->bp->x[e] - P->px0[2 * e], w->bp->y[e] - P->px0[2 * e + 1]));
     double max2 = 0;
-    for (int i = 0; i < w->n; i++) max2 = fmax(max2, gb_pairs_grain_drift2(P, w, i));
+    for (int i = 0; i < w->n; i++) { /* a comparison, not fmax (a call): this runs at every move */
+        double d2 = gb_pairs_grain_drift2(P, w, i);
+        if (d2 > max2) max2 = d2;
+    }
     *grain = sqrt(max2);
 }
 
