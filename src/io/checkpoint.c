@@ -81,6 +81,12 @@ static char *put_digits(char *p, unsigned long k)
     return p;
 }
 
+static char *put_int(char *p, int i)
+{
+    if (i < 0) *p++ = '-';
+    return put_digits(p, i < 0 ? (unsigned long)-(long)i : (unsigned long)i);
+}
+
 /* A finite double as a C99 hex float of all its 52 fraction bits ("0x1.<13 digits>p<e>", subnormals
  * "0x0.<13 digits>p-1022"), which strtod reads back bit for bit as it does %a's; anything else by %a.
  * The rows of grains and pairs are most of a checkpoint, and glibc's %a was most of its cost (about
@@ -107,14 +113,10 @@ static char *put_hex(char *p, double v)
 /* A row: the ints lead[0..nl), the doubles v[0..nv) (put_hex), the ints tail[0..nt). */
 static void put_row(FILE *f, const int *lead, int nl, const double *v, int nv, const int *tail, int nt)
 {
-    char line[64 * 16], *p = line;
-    for (int k = 0; k < nl + nt + nv; k++) {
-        int i = k < nl ? lead[k] : k >= nl + nv ? tail[k - nl - nv] : 0;
-        if (k >= nl && k < nl + nv) p = put_hex(p, v[k - nl]);
-        else if (i < 0) *p++ = '-', p = put_digits(p, (unsigned long)-(long)i);
-        else p = put_digits(p, (unsigned long)i);
-        *p++ = ' ';
-    }
+    char line[64 * 16], *p = line; /* at most 25 characters a number, rows of at most 10 */
+    for (int k = 0; k < nl; k++) p = put_int(p, lead[k]), *p++ = ' ';
+    for (int k = 0; k < nv; k++) p = put_hex(p, v[k]), *p++ = ' ';
+    for (int k = 0; k < nt; k++) p = put_int(p, tail[k]), *p++ = ' ';
     p[-1] = '\n';
     fwrite(line, 1, (size_t)(p - line), f);
 }
