@@ -13,7 +13,10 @@ static void write_grains(FILE *f, const void *data)
     const gb_sim *sim = data;
     int n = gb_sim_n_grains(sim);
     gb_vtk_begin(f, GB_VTK_POLYDATA, n, "NumberOfVerts", n);
-    for (int i = 0; i < n; i++) fprintf(f, "%.17g %.17g 0\n", gb_sim_grain(sim, i).x, gb_sim_grain(sim, i).y);
+    for (int i = 0; i < n; i++) {
+        gb_grain g = gb_sim_grain(sim, i);
+        fprintf(f, "%.17g %.17g 0\n", g.x, g.y);
+    }
     gb_vtk_end_points(f);
     gb_vtk_open(f, "PointData", "Scalars=\"radius\"");
     gb_vtk_array(f, "Float64", "radius", 1);

@@ -65,6 +65,8 @@ gb_status gb_step_measure(const gb_state *start, const gb_sim *end, int step, in
     m->step = step, m->fields = fields, m->row = row;
     gb_micro_measure(end, &m->micro);
     m->micro.dissipation_step_k28 = gb_micro_step_dissipation(start, end);
+    if (!row && !fields) return GB_OK;
+    /* the sliding contacts, for the row's count and fields/: in the scene's numbering and order */
     int nc;
     gb_contact *c = gb_sim_contacts_copy(end, &nc, err);
     if (!c) return err->code;
@@ -75,7 +77,6 @@ gb_status gb_step_measure(const gb_state *start, const gb_sim *end, int step, in
     }
     m->n_sliding = gb_measure_sliding(end, c, nc, m->sliding);
     free(c);
-    if (!row && !fields) return GB_OK;
     gb_status st = zone_measure(start, end, &m->zone, err);
     /* the row needs the host's wall only; the empty cavity and the ring are for the files */
     m->has_host = end->host != NULL;
