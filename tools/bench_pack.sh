@@ -20,12 +20,15 @@ sizes=${*:-10000 100000}
 # OMP_WAIT_POLICY=passive keeps a waiting thread from spinning on the core the others need.
 threads=${THREADS:-1}
 stress=${STRESS:-} # another target stress than box_growth.yaml's 1.0e4 dyn/cm (its own directories)
-echo "machine: $(nproc --all) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); $(date -u '+%Y-%m-%d %H:%M'); load average $(cut -d' ' -f1-3 /proc/loadavg); threads $threads, OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-unset}"
+# FRICTION_DEG=f packs with the grains' friction angle f (pack.friction_deg, at most the scene's 25)
+# instead of frictionless, in runs/bench_pack/nN_fF: the porosity then rises with f (docs/packing.md)
+friction=${FRICTION_DEG:-}
+echo "machine: $(nproc --all) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); $(date -u '+%Y-%m-%d %H:%M'); load average $(cut -d' ' -f1-3 /proc/loadavg); threads $threads, OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-unset}${friction:+, friction while packing $friction deg}"
 echo
 echo "| discs | seconds: total [CPU] (place / grow / settle / equilibrium) | FIRE iterations: grow + settle | CPU us per iteration | peak memory [MB] | porosity | coordination (without rattlers) | rattlers | mean stress / target | largest fixing force / accuracy |"
 echo "|---:|---|---|---:|---:|---:|---|---:|---:|---:|"
 for n in $sizes; do
-  d=$root/runs/bench_pack/n$n${stress:+_s$stress}
+  d=$root/runs/bench_pack/n$n${stress:+_s$stress}${friction:+_f$friction}
   mkdir -p "$d"
   # the mean disc area of the mix: 1 / sum over sizes of (1/3) / (pi r^2)
   side=$(awk -v n="$n" 'BEGIN { pi = atan2(0, -1); s = 0; split("0.3 0.45 0.6", r, " ");
@@ -33,8 +36,9 @@ for n in $sizes; do
                                 printf "%.6g", sqrt(n / s / 0.84) }')
   sed -e "s/right: 24.4/right: $side/; s/top: 24.4/top: $side/; s/count: 1000$/count: $n/" \
       -e "s/^solver: {/solver: {threads: $threads, /" ${stress:+-e "s/stress: 1.0e4\$/stress: $stress/"} \
+      ${friction:+-e "s/^pack:\$/pack:\n  friction_deg: $friction/"} \
     "$root/validation/packing/box_growth.yaml" > "$d/scene.yaml"
-  grep -q "count: $n$" "$d/scene.yaml" || { echo "bench_pack.sh: could not make the scene for $n discs" >&2; exit 1; }
+  grep -q "count: $n$" "$d/scene.yaml" && { [ -z "$friction" ] || grep -q "friction_deg: $friction$" "$d/scene.yaml"; } || { echo "bench_pack.sh: could not make the scene for $n discs" >&2; exit 1; }
   /usr/bin/time -v "$build/gembem" pack "$d/scene.yaml" -o "$d/out" --overwrite --quiet 2> "$d/time.log" ||
     { cat "$d/time.log" >&2; exit 1; }
   mb=$(awk '/Maximum resident set size/ { printf "%.0f", $NF / 1024 }' "$d/time.log")

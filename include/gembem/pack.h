@@ -1,6 +1,7 @@
 /* Packings made by gembem (`gembem pack`, docs/packing.md): grains drawn from a size distribution,
- * placed at random in a box or a host's cavity, grown or settled to a frictionless equilibrium by
- * FIRE, then brought to equilibrium by gembem's own solver with the scene's friction. */
+ * placed at random in a box or a host's cavity, grown or settled by FIRE (frictionless, or with the
+ * scene's friction throughout), then brought to equilibrium by gembem's own solver with the scene's
+ * friction. */
 #ifndef GEMBEM_PACK_H
 #define GEMBEM_PACK_H
 
@@ -41,6 +42,8 @@ typedef struct {
     double stress;          /* growth: the target mean stress [F/L]; 0: none */
     uint64_t seed;
     long max_iterations;    /* FIRE iterations per relaxation */
+    double friction_deg;    /* the grains' friction angle while packing, at most the scene's; 0: frictionless, the
+                             * scene's friction switched on at the end */
 } gb_pack_def;
 
 enum { GB_PACK_PLACE = 0, GB_PACK_GROW = 1, GB_PACK_SETTLE = 2, GB_PACK_EQUILIBRIUM = 3, GB_PACK_PHASES = 4 };
@@ -58,7 +61,8 @@ typedef struct {
     double max_fixing_force;      /* largest |F| of the final state (K 14) */
     int contacts_grains, contacts_boundary; /* force-carrying: between grains, with walls or particles */
     double coordination;          /* (2 contacts_grains + contacts_boundary) / n */
-    int rattlers;                 /* grains left with fewer than 3 contacts (2 under a body force), removed repeatedly */
+    int rattlers;                 /* grains left with fewer than rattler_contacts contacts, removed repeatedly */
+    int rattler_contacts;         /* 3 for frictionless discs (d + 1); 2 under a body force or with friction while packing */
     double coordination_nonrattlers;
     double largest_overlap;       /* between grains, over the smaller radius */
 } gb_pack_result;

@@ -58,33 +58,6 @@ void gb_particles_free(gb_particles *bp)
     memset(bp, 0, sizeof *bp);
 }
 
-void gb_pair_geometry(gb_pair *p, const gb_world *w)
-{
-    const gb_grain *a = &w->g[p->i];
-    if (p->j >= 0 || GB_IS_PARTICLE(p->j)) {
-        double bx, by, br;
-        const gb_particles *bp = w->bp;
-        int e = GB_PARTICLE_OF(p->j);
-        if (p->j >= 0) bx = w->g[p->j].x, by = w->g[p->j].y, br = w->g[p->j].r;
-        else bx = bp->x[e], by = bp->y[e], br = bp->r[e];
-        double dx = bx - a->x, dy = by - a->y, dist = sqrt(dx * dx + dy * dy);
-        if (dist > 0) {
-            p->nx = dx / dist;
-            p->ny = dy / dist;
-        } /* coincident centres keep the previous normal rather than invent one */
-        p->d = a->r + br - dist;
-        /* A half-disc: the grain must be on the side the particle bulges to. */
-        if (p->j < 0 && -(p->nx * bp->nx[e] + p->ny * bp->ny[e]) <= 0 && p->d > 0) p->d = -p->d;
-        return;
-    }
-    const gb_box *box = w->box;
-    switch (-1 - p->j) {
-    case GB_WALL_LEFT: p->nx = -1, p->ny = 0, p->d = a->r - (a->x - box->left); break;
-    case GB_WALL_RIGHT: p->nx = 1, p->ny = 0, p->d = a->r - (box->right - a->x); break;
-    case GB_WALL_BOTTOM: p->nx = 0, p->ny = -1, p->d = a->r - (a->y - box->bottom); break;
-    default: p->nx = 0, p->ny = 1, p->d = a->r - (box->top - a->y); break;
-    }
-}
 
 double gb_pair_update(gb_pair *p, const gb_world *w, const double *dX, const double *wall_dx,
                       const gb_material *mat, double tan_phi)

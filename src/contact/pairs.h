@@ -3,6 +3,8 @@
 #ifndef GB_PAIRS_H
 #define GB_PAIRS_H
 
+#include <math.h>
+
 #include "gembem/scene.h"
 
 /* Boundary particles (the hybrid method, docs/method.md section 10): one half-disc on each element of
@@ -108,9 +110,36 @@ static inline double gb_pairs_grain_drift2(const gb_pair_set *P, const gb_world 
     return dx * dx + dy * dy;
 }
 
-/* Overlap and normal of a pair at the current positions. A grain behind a boundary particle (on
+/* Overlap and normal of a pair at the current positions (inline: every contact at every iteration
+ * of the solver and FIRE). A grain behind a boundary particle (on
  * its flat side) does not touch it: its overlap is set negative. */
-void gb_pair_geometry(gb_pair *p, const gb_world *w);
+static inline void gb_pair_geometry(gb_pair *p, const gb_world *w)
+{
+    const gb_grain *a = &w->g[p->i];
+    if (p->j >= 0 || GB_IS_PARTICLE(p->j)) {
+        double bx, by, br;
+        const gb_particles *bp = w->bp;
+        int e = GB_PARTICLE_OF(p->j);
+        if (p->j >= 0) bx = w->g[p->j].x, by = w->g[p->j].y, br = w->g[p->j].r;
+        else bx = bp->x[e], by = bp->y[e], br = bp->r[e];
+        double dx = bx - a->x, dy = by - a->y, dist = sqrt(dx * dx + dy * dy);
+        if (dist > 0) {
+            p->nx = dx / dist;
+            p->ny = dy / dist;
+        } /* coincident centres keep the previous normal rather than invent one */
+        p->d = a->r + br - dist;
+        /* A half-disc: the grain must be on the side the particle bulges to. */
+        if (p->j < 0 && -(p->nx * bp->nx[e] + p->ny * bp->ny[e]) <= 0 && p->d > 0) p->d = -p->d;
+        return;
+    }
+    const gb_box *box = w->box;
+    switch (-1 - p->j) {
+    case GB_WALL_LEFT: p->nx = -1, p->ny = 0, p->d = a->r - (a->x - box->left); break;
+    case GB_WALL_RIGHT: p->nx = 1, p->ny = 0, p->d = a->r - (box->right - a->x); break;
+    case GB_WALL_BOTTOM: p->nx = 0, p->ny = -1, p->d = a->r - (a->y - box->bottom); break;
+    default: p->nx = 0, p->ny = 1, p->d = a->r - (box->top - a->y); break;
+    }
+}
 
 /* (K 25): the tangential relative displacement of a pair, in its tangent t = (-ny, nx), for moves
  * a = (dx, dy, r dw) of grain i and b of its other end (a wall or a particle: b[2] = 0). */

@@ -20,7 +20,10 @@ static void write_info(FILE *f, const char *command, const gb_scene *s, const gb
                "#   initial_state: <this directory>/state.yaml%s\n",
             s->host.present ? "\n# and the same host: section (the same mesh)" : "");
     gb_run_record_origin(f, command, s->path, "made", NULL);
-    fprintf(f, "protocol: %s\nseed: %llu\nsizes: %s\n", d->protocol == GB_PACK_GROWTH ? "growth" : "deposition",
+    fprintf(f, "protocol: %s\nfriction_deg: %.17g   # %s\nseed: %llu\nsizes: %s\n",
+            d->protocol == GB_PACK_GROWTH ? "growth" : "deposition", d->friction_deg,
+            d->friction_deg > 0 ? "the grains' friction angle while packing, the walls' and boundary's the scene's"
+                                : "packed frictionless, the scene's friction switched on at the end",
             (unsigned long long)d->seed, sizes_name(&d->sizes));
     if (d->protocol == GB_PACK_GROWTH)
         fprintf(f, "target: {%s: %.17g}\n", d->stress ? "stress" : "solid_fraction",
@@ -37,13 +40,13 @@ static void write_info(FILE *f, const char *command, const gb_scene *s, const gb
             r->contacts_grains, r->contacts_boundary);
     fprintf(f, "coordination: %.17g   # (2 grain_grain + boundary) / grains\n", r->coordination);
     fprintf(f, "rattlers: %d   # grains left with fewer than %d contacts, removed repeatedly\n", r->rattlers,
-            s->body_force_per_area[0] == 0 && s->body_force_per_area[1] == 0 ? 3 : 2);
+            r->rattler_contacts);
     fprintf(f, "coordination_without_rattlers: %.17g\n", r->coordination_nonrattlers);
     fprintf(f, "largest_overlap: %.17g   # between grains, over the smaller radius\n", r->largest_overlap);
     fprintf(f, "max_fixing_force: %.17g   # largest |F| of the final state (K 14)\naccuracy: %.17g\n",
             r->max_fixing_force, s->solver.accuracy);
     fprintf(f, "fire_iterations: {grow: %ld, settle: %ld}\nequilibrium_iterations: %ld   # gembem's solver, "
-               "friction on\n", r->fire_iterations[GB_PACK_GROW], r->fire_iterations[GB_PACK_SETTLE],
+               "the scene's friction\n", r->fire_iterations[GB_PACK_GROW], r->fire_iterations[GB_PACK_SETTLE],
             r->equilibrium_iterations);
     double total = 0;
     for (int k = 0; k < GB_PACK_PHASES; k++) total += r->seconds[k];

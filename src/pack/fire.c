@@ -1,7 +1,9 @@
-/* FIRE 2.0 relaxation of frictionless discs (fire.h), first moved here from tools/packgen/jam.c.
+/* FIRE 2.0 relaxation of discs (fire.h), first moved here from tools/packgen/jam.c.
  * Contacts come from the contact module (its cell list and geometry: walls, grains and half-disc
- * boundary particles as gembem's solver sees them); the grain-grain pairs, nearly all of them,
- * are tested first on squared distances so that a pair that does not touch costs no root. */
+ * boundary particles as gembem's solver sees them); without friction the grain-grain pairs, nearly
+ * all of them, are tested first on squared distances so that a pair that does not touch costs no
+ * root; with friction each pair is updated by gembem's law (gb_pair_update) from the discs' moves
+ * since the last evaluation. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -40,13 +42,15 @@ static int blocks(long m) { return (int)((m + BLOCK - 1) / BLOCK); }
 typedef struct {
     const gb_fire_world *w;
     gb_world world;
-    gb_pair_set L;      /* the candidate pairs */
+    gb_pair_set own, *L; /* the candidate pairs: the world's (friction) or own */
     gb_pair_search search;
     double scale;       /* the radii's factor */
     double scale0;      /* at the last rebuild */
     double r0max;
     double wr;          /* sum of pn (ri + rj), or pn ri with a wall or particle: -dU/dln(scale) */
     int *gg, n_gg;      /* the grain pairs of the list, (i, j) packed: 8 bytes a pair instead of a gb_pair's 56 */
+    int *gk;            /* with friction: each grain pair's index in the list */
+    unsigned char *on;  /* with friction: each grain pair touches (at its last update) */
     int *other, n_other; /* the list's pairs with walls and particles, by index */
     int cap;
     int *chunk, n_chunks; /* chunk c's grain pairs: gg's [chunk[c], chunk[c + 1]) */
@@ -56,7 +60,37 @@ typedef struct {
     int part_cap;
     int threads;        /* gb_fire_world's, at least 1 */
     int par;            /* the discs are many enough for the threads */
+    int fr;             /* friction: the rotations are degrees of freedom too */
+    double *fw, *vw;    /* with friction: each disc's moment over its radius (a force at its rim), its rim's velocity */
+    double *dX;         /* with friction: each disc's move (dx, dy, r dw) since the forces were last evaluated */
+    double wall_dx[2 * GB_N_WALLS]; /* the walls' moves: none, they are held */
 } fire_state;
+
+static int kind_of(int j) { return j >= 0 ? 0 : GB_IS_PARTICLE(j) ? 2 : 1; }
+
+/* A frictional pair updated by gembem's law from the moves dX (K 6, 13, 25) and its forces added to
+ * its discs: f and fw, the opposite of (K 5)'s out-of-balance terms (K 2: -(pn n + pt t) on i, with
+ * t = (-ny, nx), and -pt at its rim; the rolling moment mr on i, -mr on j). Its pn times the
+ * distance from i's centre to the contact point(s) and times the radii into virial and wr, as the
+ * frictionless loop; returns whether it touches. */
+static int friction_pair(fire_state *S, gb_pair *p, double *f, double *fw, double *virial, double *wr)
+{
+    const gb_fire_world *w = S->w;
+    int k = kind_of(p->j), i = p->i, j = p->j;
+    gb_pair_update(p, &S->world, S->dX, S->wall_dx, w->mat[k], w->tan_phi[k]);
+    if (!(p->d > 0)) return 0;
+    const gb_grain *g = w->g;
+    double c = p->nx, s = p->ny, pn = p->pn, pt = p->pt, fx = c * pn - s * pt, fy = s * pn + c * pt;
+    f[2 * i] -= fx, f[2 * i + 1] -= fy;
+    fw[i] -= p->mr != 0 ? pt - p->mr / g[i].r : pt;
+    if (j >= 0) {
+        f[2 * j] += fx, f[2 * j + 1] += fy;
+        fw[j] -= p->mr != 0 ? pt + p->mr / g[j].r : pt;
+        *virial += pn * (g[i].r + g[j].r - p->d), *wr += pn * (g[i].r + g[j].r);
+    } else
+        *virial += pn * (g[i].r - 0.5 * p->d), *wr += pn * g[i].r;
+    return 1;
+}
 
 /* The grain pairs of the chunks c = first, first + 2, ... into f; their sums of pn (ri + rj) and
  * pn times the distance into part[2 c], part[2 c + 1]; with full, the contacts and the largest
@@ -72,7 +106,17 @@ static void pair_forces(fire_state *S, int first, double *f, int full, int *cont
     for (int q = 0; q < half; q++) {
         int c = first + 2 * q;
         double virial = 0, wr = 0;
-        for (int k = chunk[c]; k < chunk[c + 1]; k++) {
+        for (int k = chunk[c]; S->fr && k < chunk[c + 1]; k++) {
+            /* a pair that did not touch and does not: nothing to update (a new contact's tangential
+             * force starts at 0 whatever its history), and its 56 bytes stay unread */
+            int i = gg[2 * k], j = gg[2 * k + 1];
+            double dx = g[j].x - g[i].x, dy = g[j].y - g[i].y, sum = g[i].r + g[j].r;
+            if (!S->on[k] && dx * dx + dy * dy >= sum * sum) continue;
+            gb_pair *p = &S->L->p[S->gk[k]];
+            S->on[k] = (unsigned char)friction_pair(S, p, f, S->fw, &virial, &wr);
+            if (S->on[k] && full) lo = fmax(lo, p->d / fmin(g[i].r, g[j].r)), nc++;
+        }
+        for (int k = chunk[c]; !S->fr && k < chunk[c + 1]; k++) {
             int i = gg[2 * k], j = gg[2 * k + 1];
             double dx = g[j].x - g[i].x, dy = g[j].y - g[i].y, sum = g[i].r + g[j].r, d2 = dx * dx + dy * dy;
             if (d2 >= sum * sum) continue;
@@ -108,6 +152,7 @@ static double forces(fire_state *S, double *f, const double *v, double *power, g
         }
     } else
         memset(f, 0, 2 * (size_t)n * sizeof(double));
+    if (S->fr) memset(S->fw, 0, (size_t)n * sizeof(double));
     double largest = 0, virial = 0, wr = 0;
     int contacts = 0;
     pair_forces(S, 0, f, full, &contacts, &largest);
@@ -118,8 +163,14 @@ static double forces(fire_state *S, double *f, const double *v, double *power, g
         memset(rep->wall, 0, sizeof rep->wall);
     }
     for (int k = 0; k < S->n_other; k++) { /* few: the discs along the walls or the cavity */
-        gb_pair *p = &S->L.p[S->other[k]];
+        gb_pair *p = &S->L->p[S->other[k]];
         int i = p->i, j = p->j;
+        if (S->fr) {
+            if (!friction_pair(S, p, f, S->fw, &virial, &wr)) continue;
+            if (full) rep->contacts++;
+            if (full && !GB_IS_PARTICLE(j)) rep->wall[-1 - j] += p->pn, rep->wall_contacts++;
+            continue;
+        }
         gb_pair_geometry(p, &S->world);
         if (!(p->d > 0)) continue;
         double pn = (GB_IS_PARTICLE(j) ? w->kn_gb : w->kn_gw) * p->d;
@@ -130,11 +181,13 @@ static double forces(fire_state *S, double *f, const double *v, double *power, g
     }
     rep->virial = virial, S->wr = wr;
     double *part = S->part;
+    const double *fw = S->fw, *vw = S->vw;
 #pragma omp parallel for schedule(static) num_threads(S->threads) if (S->par)
     for (int b = 0; b < nb; b++) {
         double worst = 0, P = 0, ff = 0;
         for (int i = b * BLOCK, e = i + BLOCK < n ? i + BLOCK : n; i < e; i++) {
             double q = f[2 * i] * f[2 * i] + f[2 * i + 1] * f[2 * i + 1];
+            if (fw) q += fw[i] * fw[i], P += fw[i] * vw[i];
             if (q > worst || q != q) worst = q;
             P += f[2 * i] * v[2 * i], P += f[2 * i + 1] * v[2 * i + 1], ff += q;
         }
@@ -146,31 +199,37 @@ static double forces(fire_state *S, double *f, const double *v, double *power, g
         P += part[3 * b + 1], ff += part[3 * b + 2];
     }
     *power = P, S->ff = ff;
+    if (S->fr) memset(S->dX, 0, 3 * (size_t)n * sizeof(double)); /* the pairs are up to date */
     return sqrt(worst);
 }
 
 /* Rebuilds the list, its packed copies and their chunks. */
 static gb_status rebuild(fire_state *S, gb_error *err)
 {
-    gb_status st = gb_pairs_rebuild(&S->L, &S->search, &S->world, err);
+    gb_status st = gb_pairs_rebuild(S->L, &S->search, &S->world, err);
     if (st) return st;
-    int n = S->w->n, np = S->L.n;
+    int n = S->w->n, np = S->L->n;
     if (np > S->cap) {
         int cap = np + np / 2 + 16, *gg = realloc(S->gg, 2 * (size_t)cap * sizeof(int));
         if (gg) S->gg = gg;
         int *other = gg ? realloc(S->other, (size_t)cap * sizeof(int)) : NULL;
         if (other) S->other = other;
-        if (!gg || !other) return gb_fail(err, GB_ENOMEM, "out of memory for %d contact pairs", np);
+        int *gk = other && S->fr ? realloc(S->gk, (size_t)cap * sizeof(int)) : NULL;
+        if (gk) S->gk = gk;
+        unsigned char *on = gk ? realloc(S->on, (size_t)cap) : NULL;
+        if (on) S->on = on;
+        if (!gg || !other || (S->fr && !on)) return gb_fail(err, GB_ENOMEM, "out of memory for %d contact pairs", np);
         S->cap = cap;
     }
     int gap = 0;
     S->n_gg = S->n_other = 0;
     for (int k = 0; k < np; k++) {
-        const gb_pair *p = &S->L.p[k];
+        const gb_pair *p = &S->L->p[k];
         if (p->j < 0) {
             S->other[S->n_other++] = k;
             continue;
         }
+        if (S->fr) S->gk[S->n_gg] = k, S->on[S->n_gg] = p->d > 0;
         S->gg[2 * S->n_gg] = p->i, S->gg[2 * S->n_gg++ + 1] = p->j;
         if (p->j - p->i > gap) gap = p->j - p->i;
     }
@@ -219,12 +278,18 @@ gb_status gb_fire_relax_scaled(const gb_fire_world *w, const gb_fire_goal *goal,
     fire_state S;
     memset(&S, 0, sizeof S);
     S.w = w, S.world = (gb_world){w->g, n, w->box, w->bp};
+    S.fr = w->pairs != NULL, S.L = S.fr ? w->pairs : &S.own;
+    const long rebuilds0 = S.L->rebuilds;
     double *v = calloc(len, sizeof(double)), *f = calloc(len, sizeof(double));
+    if (S.fr) {
+        S.fw = calloc((size_t)n + 1, sizeof(double)), S.vw = calloc((size_t)n + 1, sizeof(double));
+        S.dX = calloc(3 * (size_t)n + 1, sizeof(double));
+    }
     S.threads = w->threads > 1 ? w->threads : 1; /* a world made without it: one */
     S.search.threads = S.threads;
     S.par = n >= PARALLEL && S.threads > 1;
     gb_status st = GB_OK;
-    if (!v || !f) {
+    if (!v || !f || (S.fr && (!S.fw || !S.vw || !S.dX))) {
         st = gb_fail(err, GB_ENOMEM, "out of memory for the relaxation of %d grains", n);
         goto done;
     }
@@ -237,6 +302,11 @@ gb_status gb_fire_relax_scaled(const gb_fire_world *w, const gb_fire_goal *goal,
         rmin = fmin(rmin, w->g[i].r), c2 += 4 * w->g[i].r * w->g[i].r;
         if (w->r0) S.r0max = fmax(S.r0max, w->r0[i]);
     }
+    /* With friction a contact's tangential spring acting on both discs' rims and centres is stiffer
+     * than its normal one on the centres alone (its largest eigenvalue 4 kt against 2 kn), the
+     * rolling spring kr / r^2 on the rims: the step is bounded by the stiffest. */
+    for (int k = 0; S.fr && k < 3; k++)
+        kn = fmax(kn, fmax(2 * w->mat[k]->kt, 2 * w->mat[k]->kr / (rmin * rmin)));
     const double m = PI * rmin * rmin, inv_m = 1 / m;
     /* ln(scale) as the length c ln(scale), c^2 = sum (2 ri)^2: a unit move of it then strains the
      * contacts about as much as a unit move of a disc its own, so that it shares the discs' mass
@@ -279,8 +349,14 @@ gb_status gb_fire_relax_scaled(const gb_fire_world *w, const gb_fire_goal *goal,
             /* half a step back: the descent went past a minimum along v */
 #pragma omp parallel for schedule(static) num_threads(S.threads) if (S.par)
             for (int i = 0; i < n; i++) w->g[i].x -= 0.5 * dt * v[2 * i], w->g[i].y -= 0.5 * dt * v[2 * i + 1];
+            for (int i = 0; S.fr && i < n; i++) { /* a move as any other for the tangential springs */
+                double *d = S.dX + 3 * i, back = -0.5 * dt * S.vw[i];
+                d[0] -= 0.5 * dt * v[2 * i], d[1] -= 0.5 * dt * v[2 * i + 1], d[2] += back;
+                w->g[i].rot += back / w->g[i].r;
+            }
             if (free_scale) set_scale(&S, S.scale * exp(-0.5 * dt * v[2 * n] / c));
             memset(v, 0, len * sizeof(double));
+            if (S.fr) memset(S.vw, 0, (size_t)n * sizeof(double));
             S.vv = 0;
         }
         /* semi-implicit Euler: the velocity first, v + h F, mixed towards the force while descending
@@ -306,7 +382,8 @@ gb_status gb_fire_relax_scaled(const gb_fire_world *w, const gb_fire_goal *goal,
          * list's rebuild, |v|^2 */
         S.scale = next;
         double drift2 = 0;
-        const double *r0 = w->r0;
+        const double *r0 = w->r0, *fw = S.fw;
+        double *vw = S.vw, *dX = S.dX;
         gb_grain *g = w->g;
         const int nb = blocks(n);
 #pragma omp parallel for schedule(static) num_threads(S.threads) if (S.par) reduction(max : drift2)
@@ -316,8 +393,15 @@ gb_status gb_fire_relax_scaled(const gb_fire_world *w, const gb_fire_goal *goal,
                 double *u = v + 2 * i, *F = f + 2 * i;
                 u[0] = keep * (u[0] + h * F[0]) + mix * F[0], u[1] = keep * (u[1] + h * F[1]) + mix * F[1];
                 g[i].x += dt * u[0], g[i].y += dt * u[1];
+                if (dX) { /* the rotation, and the move the pairs will be updated with */
+                    vw[i] = keep * (vw[i] + h * fw[i]) + mix * fw[i];
+                    double *d = dX + 3 * i;
+                    d[0] += dt * u[0], d[1] += dt * u[1], d[2] += dt * vw[i];
+                    g[i].rot += dt * vw[i] / g[i].r;
+                    sv += vw[i] * vw[i];
+                }
                 if (r0) g[i].r = next * r0[i];
-                double q = gb_pairs_grain_drift2(&S.L, &S.world, i);
+                double q = gb_pairs_grain_drift2(S.L, &S.world, i);
                 if (q > drift2) drift2 = q;
                 sv += u[0] * u[0] + u[1] * u[1];
             }
@@ -330,7 +414,7 @@ gb_status gb_fire_relax_scaled(const gb_fire_world *w, const gb_fire_goal *goal,
     }
     worst = forces(&S, f, v, &P, rep, 1);
     rep->iterations = it;
-    rep->rebuilds = S.L.rebuilds;
+    rep->rebuilds = S.L->rebuilds - rebuilds0;
     rep->max_force = worst;
     if (w->r0) *scale = S.scale;
     if (ramp && goal->stress > 0 && p < goal->stress) rep->capped = 1;
@@ -344,8 +428,9 @@ gb_status gb_fire_relax_scaled(const gb_fire_world *w, const gb_fire_goal *goal,
                          goal->tol, goal->max_iter, worst);
     }
 done:
-    gb_pair_set_free(&S.L), gb_pair_search_free(&S.search);
-    free(S.gg), free(S.other), free(S.chunk), free(S.part);
+    gb_pair_set_free(&S.own), gb_pair_search_free(&S.search);
+    free(S.gg), free(S.other), free(S.gk), free(S.on), free(S.chunk), free(S.part);
+    free(S.fw), free(S.vw), free(S.dX);
     free(v), free(f);
     return st;
 }

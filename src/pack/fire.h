@@ -4,6 +4,10 @@
  * discs (linear normal springs pn = kn d, as gembem's contact law, and a body force), to a state
  * where every disc's force is below a tolerance. Frictionless discs in equilibrium are in
  * equilibrium with friction too (no tangential force), so gembem's own solver starts from there.
+ * With friction (a world with `pairs`), every contact follows gembem's own law (gb_pair_update:
+ * incremental tangential springs capped by Coulomb, rolling springs), each disc's rotation is a
+ * degree of freedom, and the damped dynamics is the explicit-DEM route to a frictional static
+ * state (as LAMMPS's and YADE's packings are made), its tangential forces kept in the pairs.
  * The radii, a common factor `scale` times the drawn ones, may grow while the discs relax: ramped
  * to a target, or free under a target mean stress (the enthalpy below). */
 #ifndef GB_PACK_FIRE_H
@@ -21,6 +25,12 @@ typedef struct {
     const double *r0;          /* the drawn radii, or NULL: the radii are held as they are */
     double area;               /* the region's, for the mean stress */
     int threads;               /* OpenMP threads of the passes (the scene's solver.threads) */
+    /* Friction, or NULL: the pairs, which then keep their tangential forces from one relaxation to
+     * the next (the caller frees them), and the laws of the grain-grain, grain-wall and
+     * grain-particle contacts (their kn as the kn_ above) with their tan(friction angle). */
+    gb_pair_set *pairs;
+    const gb_material *mat[3];
+    double tan_phi[3];
 } gb_fire_world;
 
 /* What a relaxation must reach. With r0: either the scale ramps to scale_to, growing at most `ramp`
@@ -43,8 +53,8 @@ typedef struct {
 
 typedef struct {
     long iterations;
-    long rebuilds;     /* of the pair list */
-    double max_force;  /* largest |F| of a disc at the end */
+    long rebuilds;     /* of the pair list, in this relaxation */
+    double max_force;  /* largest |F| of a disc at the end (with friction: |(Fx, Fy, M / r)|) */
     double virial;     /* sum over contacts of pn times the centre's distance to the contact point(s): 2 A p */
     int contacts;      /* force-carrying */
     int wall_contacts; /* of them, with the box's walls */

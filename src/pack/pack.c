@@ -1,6 +1,7 @@
 /* The packing protocols (docs/packing.md): the radii drawn, placed at random (scaled down so that
- * they fit), grown while FIRE relaxes them to their size or to the target, settled by FIRE to the accuracy,
- * then brought to equilibrium by gembem's own solver with the scene's friction. */
+ * they fit), grown while FIRE relaxes them to their size or to the target, settled by FIRE to the accuracy
+ * (frictionless, or with the scene's friction throughout), then brought to equilibrium by gembem's
+ * own solver with the scene's friction. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -58,6 +59,8 @@ typedef struct {
     const gb_pack_def *d;
     gb_region rg;
     gb_fire_world w;
+    gb_pair_set pairs;  /* with friction while packing: FIRE's pairs and their tangential forces */
+    gb_material gg;     /* the grains' law while packing: the scene's with pack.friction_deg */
     gb_particles bp;
     double *r;          /* drawn radii */
     double r_mean;      /* of the drawn radii */
@@ -173,8 +176,9 @@ static gb_status protocol(packer *P, gb_error *err)
 }
 
 /* Grains with fewer than `least` contacts carry no load: 3 in a frictionless packing without body
- * force (2D: d + 1), 2 under one (a grain rests on two); removed again and again, their contacts
- * with the others too; the coordination of those left. */
+ * force (2D: d + 1), 2 under one (a grain rests on two) or with friction while packing (two
+ * contacts whose forces lie on the line between them, each inside its friction cone, hold a disc);
+ * removed again and again, their contacts with the others too; the coordination of those left. */
 static void rattlers(const gb_contact *c, int m, int n, int least, gb_pack_result *res)
 {
     int *k = calloc((size_t)n + 1, sizeof(int));
@@ -211,7 +215,7 @@ static void rattlers(const gb_contact *c, int m, int n, int least, gb_pack_resul
 }
 
 /* What pack_info.yaml reports of the final state. */
-static gb_status measure(const gb_sim *sim, gb_pack_result *res, gb_error *err)
+static gb_status measure(const gb_sim *sim, const gb_pack_def *d, gb_pack_result *res, gb_error *err)
 {
     int m;
     gb_contact *c = gb_sim_contacts_copy(sim, &m, err);
@@ -234,7 +238,8 @@ static gb_status measure(const gb_sim *sim, gb_pack_result *res, gb_error *err)
     res->mean_stress = virial / (2 * res->area);
     res->coordination = (2.0 * res->contacts_grains + res->contacts_boundary) / res->n;
     const double *b = gb_sim_scene(sim)->body_force_per_area;
-    rattlers(c, m, res->n, b[0] == 0 && b[1] == 0 ? 3 : 2, res);
+    res->rattler_contacts = b[0] == 0 && b[1] == 0 && !(d->friction_deg > 0) ? 3 : 2;
+    rattlers(c, m, res->n, res->rattler_contacts, res);
     free(c);
     return res->rattlers < 0 ? gb_fail(err, GB_ENOMEM, "out of memory counting rattlers") : GB_OK;
 }
@@ -248,11 +253,32 @@ static gb_status on_step(void *user, const gb_sim *sim, const gb_step_report *re
     return GB_OK;
 }
 
+/* With friction while packing, the tangential forces and rolling moments that FIRE's contacts carry at
+ * the end become the scene's initial contacts (as a state's: gb_contact_init), so that gembem's
+ * solver starts from the frictional state FIRE found instead of from none. */
+static gb_status keep_contacts(packer *P, gb_error *err)
+{
+    const gb_pair_set *L = &P->pairs;
+    gb_restart *r = &P->s->restart;
+    if (!(P->d->friction_deg > 0)) return GB_OK;
+    if (!(r->contacts = malloc(((size_t)L->n + 1) * sizeof *r->contacts)))
+        return gb_fail(err, GB_ENOMEM, "out of memory for %d contacts", L->n);
+    r->n_contacts = 0;
+    for (int k = 0; k < L->n; k++) {
+        const gb_pair *p = &L->p[k];
+        if (p->d > 0 && (p->pt != 0 || p->mr != 0))
+            r->contacts[r->n_contacts++] = (gb_contact_init){p->i, p->j, p->pt, p->mr};
+    }
+    return GB_OK;
+}
+
 /* The packing as the scene's grains, admitted, then gembem's relax with friction (host rigid). */
 static gb_status equilibrium(packer *P, const gb_bem_mesh *mesh, gb_sim **sim, gb_error *err)
 {
     gb_scene *s = P->s;
     double t0 = gb_clock_seconds();
+    gb_status st = keep_contacts(P, err);
+    if (st) return st;
     snprintf(s->grains_file, sizeof s->grains_file, "%s (the packing)", s->path);
     if (mesh) { /* as a run scene's: the box only bounds the grains for reports */
         s->box.left = s->box.bottom = HUGE_VAL, s->box.right = s->box.top = -HUGE_VAL;
@@ -267,10 +293,10 @@ static gb_status equilibrium(packer *P, const gb_bem_mesh *mesh, gb_sim **sim, g
     s->n_stages = 1;
     s->stages[0].kind = GB_STAGE_RELAX, s->stages[0].steps = 1;
     s->checkpoint_every = 0;
-    gb_status st = gb_scene_admit(s, mesh, err);
+    st = gb_scene_admit(s, mesh, err);
     if (!st) st = gb_sim_create(s, sim, err);
     if (!st) st = gb_sim_run(*sim, NULL, on_step, P->res, err);
-    if (!st) st = measure(*sim, P->res, err);
+    if (!st) st = measure(*sim, P->d, P->res, err);
     P->res->seconds[GB_PACK_EQUILIBRIUM] = gb_clock_seconds() - t0;
     return st;
 }
@@ -303,10 +329,15 @@ gb_status gb_pack_make(gb_scene *scene, const gb_bem_mesh *mesh, const gb_pack_d
         if (!st) st = gb_particles_create(&P.bp, mesh, elem, m, err);
         free(elem);
     }
+    P.gg = scene->grain_grain;
+    P.gg.friction_deg = def->friction_deg;
     gb_fire_world w = {scene->grains, n, mesh ? NULL : &scene->box, mesh ? &P.bp : NULL, scene->grain_grain.kn,
                        scene->grain_wall.kn, scene->grain_boundary.kn,
                        {scene->body_force_per_area[0], scene->body_force_per_area[1]}, P.r, P.rg.area,
-                       scene->solver.threads};
+                       scene->solver.threads, def->friction_deg > 0 ? &P.pairs : NULL,
+                       {&P.gg, &scene->grain_wall, &scene->grain_boundary},
+                       {tan(def->friction_deg * PI / 180), tan(scene->grain_wall.friction_deg * PI / 180),
+                        tan(scene->grain_boundary.friction_deg * PI / 180)}};
     P.w = w;
     P.tol = SETTLE * scene->solver.accuracy;
     res->n = n;
@@ -316,6 +347,7 @@ gb_status gb_pack_make(gb_scene *scene, const gb_bem_mesh *mesh, const gb_pack_d
     for (int i = 0; i < n; i++) res->grain_area += PI * scene->grains[i].r * scene->grains[i].r;
     res->solid_fraction = res->grain_area / res->area;
     gb_particles_free(&P.bp);
+    gb_pair_set_free(&P.pairs);
     free(P.r);
     if (st) {
         gb_sim_free(*sim);

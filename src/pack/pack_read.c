@@ -158,6 +158,7 @@ static gb_status read_pack(gb_ymap *top, gb_scene *s, const gb_bem_mesh *mesh, v
         (st = gb_ymap_number(&m, "solid_fraction", GB_Y_POSITIVE, &d->solid_fraction, err)) ||
         (st = gb_ymap_number(&m, "stress", GB_Y_POSITIVE, &d->stress, err)) ||
         (st = gb_ymap_int(&m, "max_iterations", 0, 1, 2000000000L, &d->max_iterations, err)) ||
+        (st = gb_ymap_number(&m, "friction_deg", 0, &d->friction_deg, err)) ||
         (st = read_sizes(&m, &d->sizes, err)))
         return st;
     d->seed = (uint64_t)seed, d->count = count;
@@ -168,6 +169,14 @@ static gb_status read_pack(gb_ymap *top, gb_scene *s, const gb_bem_mesh *mesh, v
         return gb_yaml_fail(m.doc, v, err, "pack.protocol: expected 'deposition' (the grains fall and settle) or "
                                            "'growth' (they grow to a solid fraction or a stress), found '%s'",
                             protocol);
+    }
+    if (!(d->friction_deg >= 0 && d->friction_deg <= s->grain_grain.friction_deg)) {
+        struct fy_node *v;
+        gb_ymap_find(&m, "friction_deg", 0, &v, err);
+        return gb_yaml_fail(m.doc, v, err, "pack.friction_deg: %g is outside 0 to %g, the grains' friction angle "
+                                           "(materials.grain_grain.friction_deg): packed with more friction than the "
+                                           "scene's, the grains would slip once it applies", d->friction_deg,
+                            s->grain_grain.friction_deg);
     }
     if ((st = gb_ymap_close(&m, err))) return st;
     return check(&m, s, mesh, d, err);

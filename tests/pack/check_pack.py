@@ -96,6 +96,8 @@ def main():
     p.add_argument("--weight", type=float, default=0.0)
     p.add_argument("--solid-fraction", type=float)
     p.add_argument("--tolerance", type=float, default=1e-9)
+    p.add_argument("--friction-deg", type=float, help="packed with this friction: every contact inside its cone, "
+                   "and most contacts carrying a tangential force")
     a = p.parse_args()
     fails = []
     g = [(float(r["x"]), float(r["y"]), float(r["r"])) for r in csv.DictReader(open(a.dir + "/state_grains.csv"))]
@@ -150,6 +152,20 @@ def main():
             gg += 1
         else:
             bd += 1
+    if a.friction_deg is not None:
+        # Coulomb (K 13) at the packing's angle; a packing made frictionless has no tangential force
+        # (the solver finds it in balance at once), so most contacts carrying one says friction acted
+        mu, cones, carrying, n = math.tan(math.radians(a.friction_deg)), 0, 0, 0
+        for c in csv.DictReader(open(a.dir + "/state_contacts.csv")):
+            pn, pt = float(c["pn"]), float(c["pt"])
+            n += 1
+            cones += abs(pt) > mu * pn * (1 + 1e-9)
+            carrying += abs(pt) > 1e-3 * pn
+        if cones:
+            fails.append(f"{cones} contacts outside the Coulomb cone of {a.friction_deg} degrees")
+        if not carrying > n / 2:
+            fails.append(f"only {carrying} of {n} contacts carry a tangential force above 1e-3 of their normal one")
+        print(f"{a.dir}: {carrying} of {n} contacts carry a tangential force, none outside the cone")
     fmax = max(math.sqrt(f[0] ** 2 + f[1] ** 2 + f[2] ** 2) for f in F)
     if fmax > a.accuracy:
         fails.append(f"a grain is out of balance by {fmax:.4g}, more than the accuracy {a.accuracy}")

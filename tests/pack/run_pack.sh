@@ -2,8 +2,9 @@
 # gembem pack, checked by check_pack.py without gembem's code (its docstring says what), and:
 # a seeded packing made twice gives the same bytes; the solid fraction target is reached to 1e-9
 # (the radii are scaled to it); the stress target is within 2 % of the walls' stresses that gembem
-# run measures from the state; a run scene starts from the cavity packing's state; 4 500 discs
-# grown on 1 and on 2 threads (solver.threads) give the same bytes.
+# run measures from the state; a run scene starts from the cavity packing's state; a packing with
+# friction (pack.friction_deg) is in balance, inside its cone and looser; 4 500 discs grown on 1 and
+# on 2 threads (solver.threads) give the same bytes, frictionless and with friction.
 #   run_pack.sh GEMBEM GMSH PYTHON
 set -u
 gembem=$1; gmsh=$2; python=$3; dir=$(cd "$(dirname "$0")" && pwd); root=$dir/../..
@@ -45,6 +46,19 @@ p = 0.5 * (float(row["s1"]) + float(row["s2"]))
 print(f"stress: the walls' mean stress {p:.6g}, target 1e5")
 sys.exit(0 if abs(p - 1e5) <= 0.02e5 else 1)
 PY
+# pack.friction_deg: the grains packed with friction are in balance with their tangential forces
+# (moments too, check_pack.py), inside the cone of the packing's angle, and looser than the same
+# seed packed frictionless (frictional discs jam at a lower solid fraction: docs/packing.md)
+scene_edit box_stress.yaml -o friction.yaml --add pack.friction_deg=20   # of 25
+run pack friction.yaml -o friction
+check friction --box 0 10 0 10 --max-overlap 0.05 --accuracy 100 --friction-deg 20
+"$python" - <<'PY' || fail=$((fail + 1))
+import sys
+phi = {d: float(next(l for l in open(d + "/pack_info.yaml") if l.startswith("solid_fraction:")).split()[1])
+       for d in ("stress", "friction")}
+print(f"friction: solid fraction {phi['friction']:.4f} packed at 20 degrees, {phi['stress']:.4f} frictionless")
+sys.exit(0 if phi["friction"] < phi["stress"] - 0.01 else 1)
+PY
 # solver.threads: 4 500 discs (above FIRE's threshold for its threads) grown with 1 and 2 threads
 # give the same bytes (src/pack/fire.c's fixed decomposition); FIRE calls no BLAS, so only its own loops'
 # thread count differs between the two runs
@@ -52,10 +66,14 @@ for t in 1 2; do
   scene_edit box_growth.yaml -o threads$t.yaml --set pack.count=4500 --set box.right=38 --set box.top=38 \
     --add solver.threads=$t   # of 300 grains in 10 x 10
   run pack threads$t.yaml -o threads$t
+  scene_edit threads$t.yaml -o friction_threads$t.yaml --add pack.friction_deg=10   # the frictional loop
+  run pack friction_threads$t.yaml -o friction_threads$t
 done
 for f in state_grains.csv state_contacts.csv; do
-  cmp -s threads1/$f threads2/$f && echo "ok   $f: the same bytes on 1 and 2 threads" ||
-    { echo "FAIL $f differs between 1 and 2 threads"; fail=$((fail + 1)); }
+  for d in threads friction_threads; do
+    cmp -s ${d}1/$f ${d}2/$f && echo "ok   $d $f: the same bytes on 1 and 2 threads" ||
+      { echo "FAIL $d $f differs between 1 and 2 threads"; fail=$((fail + 1)); }
+  done
 done
 echo "$fail failures"
 [ $fail -eq 0 ]

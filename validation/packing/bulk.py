@@ -15,10 +15,16 @@ import gembem  # noqa: E402
 d, x0, x1, y0, y1 = sys.argv[1], *map(float, sys.argv[2:6])
 n = int(sys.argv[6]) if len(sys.argv) > 6 else 400
 g = gembem.read_state(d).grains
-xs, ys = np.meshgrid(np.linspace(x0, x1, n), np.linspace(y0, y1, n))
-p = np.column_stack([xs.ravel(), ys.ravel()])
-covered = np.zeros(len(p), bool)
+xs, ys = np.linspace(x0, x1, n), np.linspace(y0, y1, n)
+covered = np.zeros((n, n), bool)  # [row: y, column: x]
+hx, hy = (x1 - x0) / (n - 1), (y1 - y0) / (n - 1)
 for x, y, r in zip(g["x"], g["y"], g["r"]):
-    near = (np.abs(p[:, 0] - x) < r) & (np.abs(p[:, 1] - y) < r)
-    covered[near] |= (p[near, 0] - x) ** 2 + (p[near, 1] - y) ** 2 < r * r
+    # only the grid's points in the disc's bounding box (a margin of one point each side)
+    i0, i1 = max(0, int((x - r - x0) / hx) - 1), min(n, int((x + r - x0) / hx) + 2)
+    j0, j1 = max(0, int((y - r - y0) / hy) - 1), min(n, int((y + r - y0) / hy) + 2)
+    if i0 >= i1 or j0 >= j1:
+        continue
+    px, py = xs[i0:i1], ys[j0:j1]
+    covered[j0:j1, i0:i1] |= ((px[None, :] - x) ** 2 + (py[:, None] - y) ** 2 < r * r) & \
+        (np.abs(px[None, :] - x) < r) & (np.abs(py[:, None] - y) < r)
 print(f"{d}: solid fraction {covered.mean():.4f} in [{x0}, {x1}] x [{y0}, {y1}] ({n} x {n} points)")
