@@ -186,6 +186,9 @@ static inline double gb_pair_dtheta_r(const gb_pair *p, const gb_world *w, const
  * the rolling spring (slip -dtheta_r - dmr/kr times the mean moment, mr^2/(2 kr) on opening). */
 double gb_pair_update(gb_pair *p, const gb_world *w, const double *dX, const double *wall_dx,
                       const gb_material *mat, double tan_phi);
+/* The same forces without the energy dissipated (FIRE's packings, src/pack/fire.c, need none). */
+void gb_pair_update_forces(gb_pair *p, const gb_world *w, const double *dX, const double *wall_dx,
+                           const gb_material *mat, double tan_phi);
 
 /* Brute-force O(N^2) candidate pairs within `range` of touching, for tests. Returns the count and
  * fills out (sorted by (i, j), grains only) up to cap. */

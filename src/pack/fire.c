@@ -2,7 +2,7 @@
  * Contacts come from the contact module (its cell list and geometry: walls, grains and half-disc
  * boundary particles as gembem's solver sees them); without friction the grain-grain pairs, nearly
  * all of them, are tested first on squared distances so that a pair that does not touch costs no
- * root; with friction each pair is updated by gembem's law (gb_pair_update) from the discs' moves
+ * root; with friction each pair is updated by gembem's law (gb_pair_update_forces) from the discs' moves
  * since the last evaluation. */
 #include <math.h>
 #include <stdlib.h>
@@ -77,7 +77,7 @@ static int friction_pair(fire_state *S, gb_pair *p, double *f, double *fw, doubl
 {
     const gb_fire_world *w = S->w;
     int k = kind_of(p->j), i = p->i, j = p->j;
-    gb_pair_update(p, &S->world, S->dX, S->wall_dx, w->mat[k], w->tan_phi[k]);
+    gb_pair_update_forces(p, &S->world, S->dX, S->wall_dx, w->mat[k], w->tan_phi[k]);
     if (!(p->d > 0)) return 0;
     const gb_grain *g = w->g;
     double c = p->nx, s = p->ny, pn = p->pn, pt = p->pt, fx = c * pn - s * pt, fy = s * pn + c * pt;
