@@ -11,9 +11,10 @@ static void usage(FILE *to)
 {
     fprintf(to, "usage: gembem pack SCENE.yaml -o RUNDIR [--overwrite] [--quiet]\n"
                 "  Fills the scene's box or host cavity with grains (its pack: section: sizes, count or solid\n"
-                "  fraction, protocol deposition or growth, seed), brings them to equilibrium with gembem's solver\n"
-                "  and writes RUNDIR/state.yaml (a run scene starts from it with initial_state:), pack_info.yaml\n"
-                "  (solid fraction, coordination, largest force, times) and a copy of the scene.\n"
+                "  fraction, protocol deposition or growth, seed, friction_deg while packing), brings them to\n"
+                "  equilibrium with gembem's solver and writes RUNDIR/state.yaml (a run scene starts from it with\n"
+                "  initial_state:), pack_info.yaml (solid fraction, coordination, largest force, times) and a copy\n"
+                "  of the scene.\n"
                 "  Exit status: 0 done, 2 bad input (nothing written), 3 a relaxation did not converge, 4 an output\n"
                 "  could not be written.\n");
 }
