@@ -1,7 +1,7 @@
 /* Packings made by gembem (`gembem pack`, docs/packing.md): grains drawn from a size distribution,
- * placed at random in a box or a host's cavity, grown or settled by FIRE (frictionless, or with the
- * scene's friction throughout), then brought to equilibrium by gembem's own solver with the scene's
- * friction. */
+ * placed at random in a box or a host's cavity, grown or settled by FIRE (frictionless, or with a
+ * friction angle up to the scene's), then brought to equilibrium by gembem's own solver with the
+ * scene's friction. */
 #ifndef GEMBEM_PACK_H
 #define GEMBEM_PACK_H
 

@@ -4,7 +4,7 @@
  * discs (linear normal springs pn = kn d, as gembem's contact law, and a body force), to a state
  * where every disc's force is below a tolerance. Frictionless discs in equilibrium are in
  * equilibrium with friction too (no tangential force), so gembem's own solver starts from there.
- * With friction (a world with `pairs`), every contact follows gembem's own law (gb_pair_update:
+ * With friction (a world with `pairs`), every contact follows gembem's own law (gb_pair_update_forces:
  * incremental tangential springs capped by Coulomb, rolling springs), each disc's rotation is a
  * degree of freedom, and the damped dynamics is the explicit-DEM route to a frictional static
  * state (as LAMMPS's and YADE's packings are made), its tangential forces kept in the pairs.

@@ -1,7 +1,7 @@
 /* The packing protocols (docs/packing.md): the radii drawn, placed at random (scaled down so that
  * they fit), grown while FIRE relaxes them to their size or to the target, settled by FIRE to the accuracy
- * (frictionless, or with the scene's friction throughout), then brought to equilibrium by gembem's
- * own solver with the scene's friction. */
+ * (frictionless, or with pack.friction_deg's friction), then brought to equilibrium by gembem's own
+ * solver with the scene's friction. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
