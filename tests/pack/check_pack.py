@@ -98,6 +98,8 @@ def main():
     p.add_argument("--tolerance", type=float, default=1e-9)
     p.add_argument("--friction-deg", type=float, help="packed with this friction: every contact inside its cone, "
                    "and most contacts carrying a tangential force")
+    p.add_argument("--eta", type=float, help="with --friction-deg: the grains' rolling limit, every rolling moment "
+                   "within it")
     a = p.parse_args()
     fails = []
     g = [(float(r["x"]), float(r["y"]), float(r["r"])) for r in csv.DictReader(open(a.dir + "/state_grains.csv"))]
@@ -134,21 +136,23 @@ def main():
         fails.append(f"{len(g)} grains written, {inf['grains']} reported")
     # balance (K 5): a contact pushes grain i by -(pn n + pt t), n the unit normal from i to j and
     # t = (-ny, nx), and j by the opposite; its tangential force turns both by pt times their radius
-    # (in force units: pt). Plus the weight. Until session 11 this check added +pt t to i: right
+    # (in force units: pt), and a rolling moment mr turns i by -mr and j by +mr (over their radius,
+    # in the same units). Plus the weight. Until session 11 this check added +pt t to i: right
     # only while every pt was 0 (the frictionless settling), 260 dyn off once friction acted.
     F = [[0.0, -a.weight * math.pi * r * r, 0.0] for _, _, r in g]
     gg = bd = 0
     for c in csv.DictReader(open(a.dir + "/state_contacts.csv")):
         i, pn, pt, nx, ny = int(c["i"]), float(c["pn"]), float(c["pt"]), float(c["nx"]), float(c["ny"])
+        mr = float(c.get("mr") or 0)  # rolling resistance: mr on i, -mr on j (a moment: over the radius)
         fx, fy = -(pn * nx + pt * -ny), -(pn * ny + pt * nx)
         F[i][0] += fx
         F[i][1] += fy
-        F[i][2] += pt
+        F[i][2] += pt - mr / g[i][2]
         if c["j"].isdigit():
             j = int(c["j"])
             F[j][0] -= fx
             F[j][1] -= fy
-            F[j][2] += pt
+            F[j][2] += pt + mr / g[j][2]
             gg += 1
         else:
             bd += 1
@@ -160,12 +164,15 @@ def main():
             pn, pt = float(c["pn"]), float(c["pt"])
             n += 1
             cones += abs(pt) > mu * pn * (1 + 1e-9)
+            if a.eta is not None and c["j"].isdigit():  # the rolling limit eta R* pn, R* = ri rj / (ri + rj)
+                ri, rj = g[int(c["i"])][2], g[int(c["j"])][2]
+                cones += abs(float(c["mr"])) > a.eta * ri * rj / (ri + rj) * pn * (1 + 1e-9)
             carrying += abs(pt) > 1e-3 * pn
         if cones:
-            fails.append(f"{cones} contacts outside the Coulomb cone of {a.friction_deg} degrees")
+            fails.append(f"{cones} contacts outside the Coulomb cone of {a.friction_deg} degrees (or the rolling limit)")
         if not carrying > n / 2:
             fails.append(f"only {carrying} of {n} contacts carry a tangential force above 1e-3 of their normal one")
-        print(f"{a.dir}: {carrying} of {n} contacts carry a tangential force, none outside the cone")
+        print(f"{a.dir}: {carrying} of {n} contacts carry a tangential force, {cones} outside the cone")
     fmax = max(math.sqrt(f[0] ** 2 + f[1] ** 2 + f[2] ** 2) for f in F)
     if fmax > a.accuracy:
         fails.append(f"a grain is out of balance by {fmax:.4g}, more than the accuracy {a.accuracy}")

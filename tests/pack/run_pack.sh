@@ -3,7 +3,8 @@
 # a seeded packing made twice gives the same bytes; the solid fraction target is reached to 1e-9
 # (the radii are scaled to it); the stress target is within 2 % of the walls' stresses that gembem
 # run measures from the state; a run scene starts from the cavity packing's state; a packing with
-# friction (pack.friction_deg) is in balance, inside its cone and looser; 4 500 discs grown on 1 and
+# friction (pack.friction_deg), and one with rolling resistance too, is in balance, inside its cone
+# and looser; 4 500 discs grown on 1 and
 # on 2 threads (solver.threads) give the same bytes, frictionless and with friction.
 #   run_pack.sh GEMBEM GMSH PYTHON
 set -u
@@ -59,6 +60,10 @@ phi = {d: float(next(l for l in open(d + "/pack_info.yaml") if l.startswith("sol
 print(f"friction: solid fraction {phi['friction']:.4f} packed at 20 degrees, {phi['stress']:.4f} frictionless")
 sys.exit(0 if phi["friction"] < phi["stress"] - 0.01 else 1)
 PY
+# with rolling resistance too (its moments in the balance, each within eta R* pn)
+scene_edit friction.yaml -o rolling.yaml --add materials.grain_grain.rolling='{kr: 1.0e6, eta: 0.2}'
+run pack rolling.yaml -o rolling
+check rolling --box 0 10 0 10 --max-overlap 0.05 --accuracy 100 --friction-deg 20 --eta 0.2
 # solver.threads: 4 500 discs (above FIRE's threshold for its threads) grown with 1 and 2 threads
 # give the same bytes (src/pack/fire.c's fixed decomposition); FIRE calls no BLAS, so only its own loops'
 # thread count differs between the two runs
