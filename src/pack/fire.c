@@ -107,49 +107,52 @@ static void pair_forces(fire_state *S, int first, double *f, int full, int *cont
     for (int q = 0; q < half; q++) {
         int c = first + 2 * q;
         double virial = 0, wr = 0;
-        for (int k = chunk[c]; S->fr && k < chunk[c + 1]; k++) {
-            /* a pair that did not touch and does not: nothing to update (a new contact's tangential
-             * force starts at 0 whatever its history), and its 56 bytes stay unread */
-            int i = gg[2 * k], j = gg[2 * k + 1];
-            double dx = g[j].x - g[i].x, dy = g[j].y - g[i].y, sum = g[i].r + g[j].r;
-            if (!S->on[k] && dx * dx + dy * dy >= sum * sum) continue;
-            gb_pair *p = &S->L->p[S->gk[k]];
-            S->on[k] = (unsigned char)friction_pair(S, p, f, S->fw, &virial, &wr);
-            if (S->on[k] && full) lo = fmax(lo, p->d / fmin(g[i].r, g[j].r)), nc++;
-        }
-        for (int k = chunk[c]; !S->fr && k < chunk[c + 1]; k++) {
-            int i = gg[2 * k], j = gg[2 * k + 1];
-            double dx = g[j].x - g[i].x, dy = g[j].y - g[i].y, sum = g[i].r + g[j].r, d2 = dx * dx + dy * dy;
-            if (d2 >= sum * sum) continue;
-            double dist = sqrt(d2), d = sum - dist, pn = kn * d, fx = pn, fy = 0;
-            if (dist > 0) { /* coincident centres: pushed along x */
-                double h = pn / dist;
-                fx = h * dx, fy = h * dy;
+        if (S->fr)
+            for (int k = chunk[c]; k < chunk[c + 1]; k++) {
+                /* a pair that did not touch and does not: nothing to update (a new contact's
+                 * tangential force starts at 0 whatever its history), and its 56 bytes stay unread */
+                int i = gg[2 * k], j = gg[2 * k + 1];
+                double dx = g[j].x - g[i].x, dy = g[j].y - g[i].y, sum = g[i].r + g[j].r;
+                if (!S->on[k] && dx * dx + dy * dy >= sum * sum) continue;
+                gb_pair *p = &S->L->p[S->gk[k]];
+                S->on[k] = (unsigned char)friction_pair(S, p, f, S->fw, &virial, &wr);
+                if (S->on[k] && full) lo = fmax(lo, p->d / fmin(g[i].r, g[j].r)), nc++;
             }
-            f[2 * i] -= fx, f[2 * i + 1] -= fy;
-            f[2 * j] += fx, f[2 * j + 1] += fy;
-            virial += pn * dist, wr += pn * sum;
-            if (full) lo = fmax(lo, d / fmin(g[i].r, g[j].r)), nc++;
-        }
+        else
+            for (int k = chunk[c]; k < chunk[c + 1]; k++) {
+                int i = gg[2 * k], j = gg[2 * k + 1];
+                double dx = g[j].x - g[i].x, dy = g[j].y - g[i].y, sum = g[i].r + g[j].r, d2 = dx * dx + dy * dy;
+                if (d2 >= sum * sum) continue;
+                double dist = sqrt(d2), d = sum - dist, pn = kn * d, fx = pn, fy = 0;
+                if (dist > 0) { /* coincident centres: pushed along x */
+                    double h = pn / dist;
+                    fx = h * dx, fy = h * dy;
+                }
+                f[2 * i] -= fx, f[2 * i + 1] -= fy;
+                f[2 * j] += fx, f[2 * j + 1] += fy;
+                virial += pn * dist, wr += pn * sum;
+                if (full) lo = fmax(lo, d / fmin(g[i].r, g[j].r)), nc++;
+            }
         part[2 * c] = virial, part[2 * c + 1] = wr;
     }
     *largest = lo, *contacts = nc;
 }
 
-/* Forces of the springs and the body force into f (2 per disc); returns the largest |F|, in
- * *power the discs' share of F.v (v: their velocities) and in S->ff their sum of |F|^2. With `full`, the report's contact counts,
- * walls and largest overlap too. */
+/* Forces of the springs and the body force into f (2 per disc), with friction the moments into
+ * S->fw; returns the largest |F|, in *power the discs' share of F.v (v: their velocities) and in
+ * S->ff their sum of |F|^2. With `full`, the report's contact counts, walls and largest overlap too. */
 static double forces(fire_state *S, double *f, const double *v, double *power, gb_fire_report *rep, int full)
 {
     const gb_fire_world *w = S->w;
     const gb_grain *g = w->g;
     const int n = w->n, nb = blocks(n);
     const double bx = w->body[0], by = w->body[1];
+    const int body = bx != 0 || by != 0;
     double *fw = S->fw;
     /* on the threads, not memset on one while the others wait: 9 % of a 1e5-disc frictional step */
 #pragma omp parallel for schedule(static) num_threads(S->threads) if (S->par)
     for (int i = 0; i < n; i++) {
-        double a = bx != 0 || by != 0 ? PI * g[i].r * g[i].r : 0;
+        double a = body ? PI * g[i].r * g[i].r : 0;
         f[2 * i] = bx * a, f[2 * i + 1] = by * a;
         if (fw) fw[i] = 0;
     }

@@ -174,9 +174,9 @@ static gb_status read_pack(gb_ymap *top, gb_scene *s, const gb_bem_mesh *mesh, v
         struct fy_node *v;
         gb_ymap_find(&m, "friction_deg", 0, &v, err);
         return gb_yaml_fail(m.doc, v, err, "pack.friction_deg: %g is outside 0 to %g, the grains' friction angle "
-                                           "(materials.grain_grain.friction_deg): packed with more friction than the "
-                                           "scene's, the grains would slip once it applies", d->friction_deg,
-                            s->grain_grain.friction_deg);
+                                           "(materials.grain_grain.friction_deg)%s", d->friction_deg,
+                            s->grain_grain.friction_deg, d->friction_deg > 0 ? ": packed with more friction than "
+                            "the scene's, the grains would slip once it applies" : "");
     }
     if ((st = gb_ymap_close(&m, err))) return st;
     return check(&m, s, mesh, d, err);
