@@ -45,6 +45,18 @@ typedef struct {
     double diss;     /* energy dissipated at this contact in the current load step */
 } gb_pair;
 
+/* The law a pair's other end takes (the scene's grain_grain, grain_wall, grain_boundary): gembem's
+ * solver (gb_sim_material) and FIRE's packings (src/pack/fire.c) index their materials by it. */
+enum { GB_END_GRAIN, GB_END_WALL, GB_END_PARTICLE };
+static inline int gb_pair_end(int j) { return j >= 0 ? GB_END_GRAIN : GB_IS_PARTICLE(j) ? GB_END_PARTICLE : GB_END_WALL; }
+
+/* (K 2): a contact's forces pn, pt in the plane, pn n + pt t with t = (-ny, nx): on j, the
+ * opposite on i. */
+static inline void gb_pair_force(const gb_pair *p, double pn, double pt, double *fx, double *fy)
+{
+    *fx = p->nx * pn - p->ny * pt, *fy = p->ny * pn + p->nx * pt;
+}
+
 /* The candidate pairs and where they were found: part of a simulation's state (src/gem/sim.h),
  * saved and restored with the grains. */
 typedef struct {

@@ -12,8 +12,12 @@ static const double SINGULAR_REL = 1e-10;
 
 const gb_material *gb_sim_material(const gb_sim *sim, int j)
 {
-    if (j >= 0) return &sim->scene->grain_grain;
-    return GB_IS_PARTICLE(j) ? &sim->scene->grain_boundary : &sim->scene->grain_wall;
+    const gb_scene *s = sim->scene;
+    switch (gb_pair_end(j)) {
+    case GB_END_GRAIN: return &s->grain_grain;
+    case GB_END_WALL: return &s->grain_wall;
+    default: return &s->grain_boundary;
+    }
 }
 
 double gb_sim_tan_phi(const gb_sim *sim, int j)
@@ -37,7 +41,7 @@ static inline void contact_terms_of(const gb_sim *sim, const gb_pair *p, double 
     t->c = c, t->s = s, t->kn = kn, t->kt = kt;
     t->s00 = kn * c * c + kt * s * s, t->s01 = (kn - kt) * c * s, t->s11 = kn * s * s + kt * c * c;
     t->pn = sign * p->pn, t->pt = sign * p->pt;
-    t->fx = c * t->pn - s * t->pt, t->fy = s * t->pn + c * t->pt;
+    gb_pair_force(p, t->pn, t->pt, &t->fx, &t->fy);
     /* Rolling resistance (docs/method.md section 3.1): the moment mr on i, -mr on j; in the DOF
      * r w its stiffness is kr / r^2, kept at the cap as kt is (K 8). */
     t->mr = sign * p->mr, t->kr = sign * mat->kr;

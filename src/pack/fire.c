@@ -67,8 +67,6 @@ typedef struct {
     double wall_dx[2 * GB_N_WALLS]; /* the walls' moves: none, they are held */
 } fire_state;
 
-static int kind_of(int j) { return j >= 0 ? 0 : GB_IS_PARTICLE(j) ? 2 : 1; }
-
 /* A frictional pair updated by gembem's law from the moves dX (K 6, 13, 25) and its forces added to
  * its discs: f and fw, the opposite of (K 5)'s out-of-balance terms (K 2: -(pn n + pt t) on i, with
  * t = (-ny, nx), and -pt at its rim; the rolling moment mr on i, -mr on j). Its pn times the
@@ -77,11 +75,12 @@ static int kind_of(int j) { return j >= 0 ? 0 : GB_IS_PARTICLE(j) ? 2 : 1; }
 static int friction_pair(fire_state *S, gb_pair *p, double *f, double *fw, double *virial, double *wr)
 {
     const gb_fire_world *w = S->w;
-    int k = kind_of(p->j), i = p->i, j = p->j;
+    int k = gb_pair_end(p->j), i = p->i, j = p->j;
     gb_pair_update_forces(p, &S->world, S->dX, S->wall_dx, w->mat[k], w->tan_phi[k]);
     if (!(p->d > 0)) return 0;
     const gb_grain *g = w->g;
-    double c = p->nx, s = p->ny, pn = p->pn, pt = p->pt, fx = c * pn - s * pt, fy = s * pn + c * pt;
+    double pn = p->pn, pt = p->pt, fx, fy;
+    gb_pair_force(p, pn, pt, &fx, &fy);
     f[2 * i] -= fx, f[2 * i + 1] -= fy;
     fw[i] -= p->mr != 0 ? pt - p->mr / g[i].r : pt;
     if (j >= 0) {

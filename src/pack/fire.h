@@ -27,7 +27,8 @@ typedef struct {
     int threads;               /* OpenMP threads of the passes (the scene's solver.threads) */
     /* Friction, or NULL: the pairs, which then keep their tangential forces from one relaxation to
      * the next (the caller frees them), and the laws of the grain-grain, grain-wall and
-     * grain-particle contacts (their kn as the kn_ above) with their tan(friction angle). */
+     * grain-particle contacts, indexed by gb_pair_end (their kn as the kn_ above), with their
+     * tan(friction angle). */
     gb_pair_set *pairs;
     const gb_material *mat[3];
     double tan_phi[3];

@@ -335,9 +335,11 @@ gb_status gb_pack_make(gb_scene *scene, const gb_bem_mesh *mesh, const gb_pack_d
                        scene->grain_wall.kn, scene->grain_boundary.kn,
                        {scene->body_force_per_area[0], scene->body_force_per_area[1]}, P.r, P.rg.area,
                        scene->solver.threads, def->friction_deg > 0 ? &P.pairs : NULL,
-                       {&P.gg, &scene->grain_wall, &scene->grain_boundary},
-                       {tan(def->friction_deg * PI / 180), tan(scene->grain_wall.friction_deg * PI / 180),
-                        tan(scene->grain_boundary.friction_deg * PI / 180)}};
+                       {[GB_END_GRAIN] = &P.gg, [GB_END_WALL] = &scene->grain_wall,
+                        [GB_END_PARTICLE] = &scene->grain_boundary},
+                       {[GB_END_GRAIN] = tan(def->friction_deg * PI / 180),
+                        [GB_END_WALL] = tan(scene->grain_wall.friction_deg * PI / 180),
+                        [GB_END_PARTICLE] = tan(scene->grain_boundary.friction_deg * PI / 180)}};
     P.w = w;
     P.tol = SETTLE * scene->solver.accuracy;
     res->n = n;
