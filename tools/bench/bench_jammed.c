@@ -89,7 +89,7 @@ int main(int argc, char **argv)
     int contacts = load.contacts;
     struct rusage ru;
     getrusage(RUSAGE_SELF, &ru);
-    printf("| %s | %d | %d | %ld (%.1f s) | %.3g | %.3g | %s%.0f | %.3e | %.1f | %.1f | %.0f |\n", method, gb_sim_n_grains(sim), contacts,
+    printf("| %s | %d | %d | %ld (%.1f s) | %.3g | %.3g | %s%.0f | %.3e | %.1f | %.3g | %.0f |\n", method, gb_sim_n_grains(sim), contacts,
            prep, t_prep, sr, sc.solver.accuracy, done < steps ? "not converged after " : "",
            done < steps ? (double)it : (double)it / steps, t_steps / (it ? it : 1),
            1e9 * t_steps / (contact_its ? contact_its : 1), t_steps, ru.ru_maxrss / 1024.0);
