@@ -1,5 +1,5 @@
 /* The packing protocols (docs/packing.md): the radii drawn, placed at random (scaled down so that
- * they fit), grown while FIRE relaxes them to their size or to the target, settled by FIRE to about the accuracy
+ * they fit), grown while FIRE relaxes them to their size or to the target, settled by FIRE to the accuracy
  * (frictionless, or with pack.friction_deg's friction), then brought to equilibrium by gembem's own
  * solver with the scene's friction. */
 #include <math.h>
@@ -42,23 +42,23 @@ static const double GROW_FORCE = 0.1;
  * 10) the free scale's balance, sum pn (ri + rj) = 2 A p, and Love's stress with the centres'
  * distances differ by more than the 0.5 % the relaxation asks. */
 static const double OVERSHOOT = 10, OVER_MAX = 1e-3;
-/* FIRE settles the grains until every |F| is below SETTLE times the scene's accuracy, then
- * gembem's solver, with the scene's friction, brings them to it. Near jamming FIRE's last factors
- * of the force are the slow ones, and after a growth with friction while packing the solver takes
- * them for less, the scene's cone being wider than the packing's: 1e4 discs grown to 1e-4 kn
- * at 10 degrees (seeds 1-6, one thread, session 18) took 38.7 s in all settled to the accuracy
- * (the solver then 0 iterations), 30.0 s to twice it (the solver 21-657 iterations, at most
- * 0.54 s), 32.1 s to 4 times (up to 5 221, 4.2 s), 206 s to 8 times; 1e5 discs 20 528 FIRE
- * iterations against 14 057 and 39 of the solver's (0.6 s). The written states' balance,
- * recomputed by tests/pack/check_pack.py, stayed within the accuracy in each run. Otherwise to the
- * accuracy: a frictionless packing stays frictionless (0 iterations of the solver, no tangential
- * force: tools/jammed_packing.sh keeps only its grains; to twice the accuracy 13 % less time at
- * 1e4, but tangential forces), and a deposit under its weight is the solver's hard case
- * (docs/solvers.md: 1e3 discs to twice the accuracy took FIRE 135 108 iterations instead of
- * 138 759 and the solver 47 551, 3.1 s, on top). The solver at the packing's angle instead of the
- * scene's was far slower (1e4 discs at 10 degrees: 44 000-86 000 iterations, or none converged in
- * 100 000; frictionless the same). */
-static const double SETTLE = 1, SETTLE_FRICTION = 2;
+/* FIRE settles the grains until every |F| is below SETTLE times the scene's accuracy; gembem's
+ * solver, with the scene's friction, then checks them (0 iterations) or finishes. Near jamming
+ * FIRE's last factors of the force are the slow ones, and a looser settling leaves gembem's solver
+ * more to do (session 18, 10 degrees of friction while packing, the scene's 25): 1e4 discs grown
+ * to 1e-4 kn (seeds 1-6, one thread) took 38.7 s in all settled to the accuracy, 30.0 s to twice
+ * it (the solver 21-657 iterations, at most 0.54 s), 32.1 s to 4 times (up to 5 221, 4.2 s), 206 s
+ * to 8 times; 1e5 discs on two threads 64-69 s, and to twice it 45.3 and 45.6 s (FIRE 20 528 ->
+ * 14 057 iterations, the solver 0.53 s); but 1e6 discs, 35 minutes to the accuracy, had not
+ * finished after 49 minutes to twice it, the last ones (sampled twice) in the solver's smoother,
+ * whose steps grow with the packing's side. Twice the accuracy also costs more
+ * than it saves in a deposit under its weight (1e3 discs: FIRE 138 759 -> 135 108 iterations, the
+ * solver 47 551 on top, 3.1 s) and leaves a frictionless packing tangential forces
+ * (tools/jammed_packing.sh keeps only its grains). The solver at the packing's own angle was far
+ * slower still (1e4 at 10 degrees: 44 000-86 000 iterations, or no convergence in 100 000). The
+ * written states' balance, recomputed by tests/pack/check_pack.py, was within the accuracy in each
+ * run. */
+static const double SETTLE = 1;
 /* A target stress is reached within this share of it (the settling aims at half of it). */
 static const double STRESS_TOL = 0.01;
 
@@ -73,7 +73,7 @@ typedef struct {
     double *r;          /* drawn radii */
     double r_mean;      /* of the drawn radii */
     double grain_area;  /* of the drawn radii */
-    double tol;         /* the settling's: SETTLE or SETTLE_FRICTION times the accuracy */
+    double tol;         /* the settling's: SETTLE times the accuracy */
     gb_pack_result *res;
 } packer;
 
@@ -349,8 +349,7 @@ gb_status gb_pack_make(gb_scene *scene, const gb_bem_mesh *mesh, const gb_pack_d
                         [GB_END_WALL] = tan(scene->grain_wall.friction_deg * PI / 180),
                         [GB_END_PARTICLE] = tan(scene->grain_boundary.friction_deg * PI / 180)}};
     P.w = w;
-    P.tol = (def->protocol == GB_PACK_GROWTH && def->friction_deg > 0 ? SETTLE_FRICTION : SETTLE) *
-            scene->solver.accuracy;
+    P.tol = SETTLE * scene->solver.accuracy;
     res->n = n;
     res->area = P.rg.area;
     if (!st) st = protocol(&P, err);

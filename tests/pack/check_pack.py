@@ -96,12 +96,8 @@ def main():
     p.add_argument("--weight", type=float, default=0.0)
     p.add_argument("--solid-fraction", type=float)
     p.add_argument("--tolerance", type=float, default=1e-9)
-    p.add_argument("--friction-deg", type=float, help="the scene's friction, the last relaxation's: every contact "
-                   "inside its cone, and most contacts carrying a tangential force")
-    p.add_argument("--packed-deg", type=float, help="with --friction-deg: packed at this smaller angle, so that at "
-                   "most --packed-share of the contacts lie outside its cone (the solver's last relaxation at the "
-                   "scene's angle moves a few there)")
-    p.add_argument("--packed-share", type=float, default=0.1)
+    p.add_argument("--friction-deg", type=float, help="packed with this friction: every contact inside its cone, "
+                   "and most contacts carrying a tangential force")
     p.add_argument("--eta", type=float, help="with --friction-deg: the grains' rolling limit, every rolling moment "
                    "within it")
     a = p.parse_args()
@@ -161,16 +157,13 @@ def main():
         else:
             bd += 1
     if a.friction_deg is not None:
-        # Coulomb (K 13) at the scene's angle (the last relaxation's); a packing made frictionless
-        # has no tangential force (the solver finds it in balance at once), so most contacts
-        # carrying one says friction acted
+        # Coulomb (K 13) at the packing's angle; a packing made frictionless has no tangential force
+        # (the solver finds it in balance at once), so most contacts carrying one says friction acted
         mu, cones, carrying, n = math.tan(math.radians(a.friction_deg)), 0, 0, 0
-        mu_packed, beyond = math.tan(math.radians(a.packed_deg if a.packed_deg is not None else 90)), 0
         for c in csv.DictReader(open(a.dir + "/state_contacts.csv")):
             pn, pt = float(c["pn"]), float(c["pt"])
             n += 1
             cones += abs(pt) > mu * pn * (1 + 1e-9)
-            beyond += abs(pt) > mu_packed * pn * (1 + 1e-9)
             if a.eta is not None and c["j"].isdigit():  # the rolling limit eta R* pn, R* = ri rj / (ri + rj)
                 ri, rj = g[int(c["i"])][2], g[int(c["j"])][2]
                 cones += abs(float(c["mr"])) > a.eta * ri * rj / (ri + rj) * pn * (1 + 1e-9)
@@ -179,11 +172,7 @@ def main():
             fails.append(f"{cones} contacts outside the Coulomb cone of {a.friction_deg} degrees (or the rolling limit)")
         if not carrying > n / 2:
             fails.append(f"only {carrying} of {n} contacts carry a tangential force above 1e-3 of their normal one")
-        if a.packed_deg is not None and beyond > a.packed_share * n:
-            fails.append(f"{beyond} of {n} contacts outside the cone of {a.packed_deg} degrees, the packing's: "
-                         f"more than {a.packed_share} of them")
-        print(f"{a.dir}: {carrying} of {n} contacts carry a tangential force, {cones} outside the cone"
-              + (f", {beyond} outside the packing's of {a.packed_deg} degrees" if a.packed_deg is not None else ""))
+        print(f"{a.dir}: {carrying} of {n} contacts carry a tangential force, {cones} outside the cone")
     fmax = max(math.sqrt(f[0] ** 2 + f[1] ** 2 + f[2] ** 2) for f in F)
     if fmax > a.accuracy:
         fails.append(f"a grain is out of balance by {fmax:.4g}, more than the accuracy {a.accuracy}")
