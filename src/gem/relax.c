@@ -22,8 +22,11 @@ const gb_material *gb_sim_material(const gb_sim *sim, int j)
 
 double gb_sim_tan_phi(const gb_sim *sim, int j)
 {
-    if (j >= 0) return sim->tan_phi_gg;
-    return GB_IS_PARTICLE(j) ? sim->tan_phi_gb : sim->tan_phi_gw;
+    switch (gb_pair_end(j)) {
+    case GB_END_GRAIN: return sim->tan_phi_gg;
+    case GB_END_WALL: return sim->tan_phi_gw;
+    default: return sim->tan_phi_gb;
+    }
 }
 
 /* What a contact adds to its ends (K 5, 8, 25), times sign. */

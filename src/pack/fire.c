@@ -48,7 +48,7 @@ typedef struct {
     double scale0;      /* at the last rebuild */
     double r0max;
     double wr;          /* sum of pn (ri + rj), or pn ri with a wall or particle: -dU/dln(scale) */
-    int *gg, n_gg;      /* the grain pairs of the list, (i, j) packed: 8 bytes a pair instead of a gb_pair's 56 */
+    int *gg, n_gg;      /* the grain pairs of the list, (i, j) packed: 8 bytes a pair instead of a gb_pair's 64 */
     int *gk;            /* with friction: each grain pair's index in the list */
     unsigned char *on;  /* with friction: each grain pair touches (at its last update) */
     int *other, n_other; /* the list's pairs with walls and particles, by index */
@@ -109,7 +109,7 @@ static void pair_forces(fire_state *S, int first, double *f, int full, int *cont
         if (S->fr)
             for (int k = chunk[c]; k < chunk[c + 1]; k++) {
                 /* a pair that did not touch and does not: nothing to update (a new contact's
-                 * tangential force starts at 0 whatever its history), and its 56 bytes stay unread */
+                 * tangential force starts at 0 whatever its history), and its 64 bytes stay unread */
                 int i = gg[2 * k], j = gg[2 * k + 1];
                 double dx = g[j].x - g[i].x, dy = g[j].y - g[i].y, sum = g[i].r + g[j].r;
                 if (!S->on[k] && dx * dx + dy * dy >= sum * sum) continue;
@@ -350,11 +350,13 @@ gb_status gb_fire_relax_scaled(const gb_fire_world *w, const gb_fire_goal *goal,
             }
             /* half a step back: the descent went past a minimum along v */
 #pragma omp parallel for schedule(static) num_threads(S.threads) if (S.par)
-            for (int i = 0; i < n; i++) w->g[i].x -= 0.5 * dt * v[2 * i], w->g[i].y -= 0.5 * dt * v[2 * i + 1];
-            for (int i = 0; S.fr && i < n; i++) { /* a move as any other for the tangential springs */
-                double *d = S.dX + 3 * i;
-                d[0] = -0.5 * dt * v[2 * i], d[1] = -0.5 * dt * v[2 * i + 1], d[2] = -0.5 * dt * S.vw[i];
-                w->g[i].rot += d[2] / w->g[i].r;
+            for (int i = 0; i < n; i++) {
+                w->g[i].x -= 0.5 * dt * v[2 * i], w->g[i].y -= 0.5 * dt * v[2 * i + 1];
+                if (S.fr) { /* a move as any other for the tangential springs */
+                    double *d = S.dX + 3 * i;
+                    d[0] = -0.5 * dt * v[2 * i], d[1] = -0.5 * dt * v[2 * i + 1], d[2] = -0.5 * dt * S.vw[i];
+                    w->g[i].rot += d[2] / w->g[i].r;
+                }
             }
             back = S.fr;
             if (free_scale) set_scale(&S, S.scale * exp(-0.5 * dt * v[2 * n] / c));
