@@ -278,6 +278,14 @@ double gb_gem_fixing_work(const gb_sim *sim)
     return w;
 }
 
+void gb_gem_stress_residuals(const gb_sim *sim, const gb_wall_control *wc, double t[2])
+{
+    const gb_box *b = &sim->state.box;
+    const double *f = sim->state.wall_force;
+    t[0] = wc->s2 * (b->top - b->bottom) - 0.5 * (f[GB_WALL_LEFT] + f[GB_WALL_RIGHT]);
+    t[1] = wc->s1 * (b->right - b->left) - 0.5 * (f[GB_WALL_BOTTOM] + f[GB_WALL_TOP]);
+}
+
 /* Wall moves of this iteration; returns the walls' residual force (0 for fixed walls). */
 double gb_gem_wall_moves(gb_sim *sim, const gb_wall_control *wc)
 {
@@ -292,8 +300,9 @@ double gb_gem_wall_moves(gb_sim *sim, const gb_wall_control *wc)
     if (wc->mode == GB_WALLS_STRESS) {
         /* Each axis: the mean force of its two walls against the target stress times the side
          * (K section 2.6); the walls move symmetrically by their own stiffness, grains held. */
-        double ty = wc->s1 * W - 0.5 * (f[GB_WALL_BOTTOM] + f[GB_WALL_TOP]);
-        double tx = wc->s2 * H - 0.5 * (f[GB_WALL_LEFT] + f[GB_WALL_RIGHT]);
+        double t[2];
+        gb_gem_stress_residuals(sim, wc, t);
+        double tx = t[0], ty = t[1];
         dy = ty / fmax(0.5 * (k[GB_WALL_BOTTOM] + k[GB_WALL_TOP]), kmin);
         dx = tx / fmax(0.5 * (k[GB_WALL_LEFT] + k[GB_WALL_RIGHT]), kmin);
         residual = fmax(fabs(ty), fabs(tx));

@@ -234,6 +234,9 @@ void gb_gem_grain_move(const gb_sim *sim, int i, double dX[3]);
 double gb_gem_fixing_work(const gb_sim *sim);
 /* The walls' moves of an iteration (sim->scratch.wall_dx); returns their residual (0 for fixed walls). */
 double gb_gem_wall_moves(gb_sim *sim, const gb_wall_control *wc);
+/* Stress-controlled walls' residuals, each axis's target stress times its side minus its two walls'
+ * mean force: t[0] the x axis (left and right walls), t[1] the y axis. */
+void gb_gem_stress_residuals(const gb_sim *sim, const gb_wall_control *wc, double t[2]);
 /* The global solver's merit (src/solver): squared fixing forces of the grains in the system, of the
  * boundary particles, and the walls' residual squared. */
 double gb_gem_merit(const gb_sim *sim, const unsigned char *in_system, double wall_residual);

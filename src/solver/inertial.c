@@ -2,7 +2,8 @@
  * FIRE (Bitzek, Koskinen, Gaehler, Moseler and Gumbsch, Phys. Rev. Lett. 97, 170201, 2006, with
  * its published parameters), in which each grain's mass is its own contact stiffness S (K 8): its
  * acceleration is its reference move (K 9-12 at alpha = 1), a time step of 1 is one Jacobi sweep of
- * the reference iteration, and servo walls follow at every step by their own move (K section 2.6).
+ * the reference iteration, and servo walls follow at every step (K section 2.6), stress-controlled ones
+ * with the whole packing (affine_walls).
  * A hybrid scene's boundary particles move with the grains, each by its own stiffness (the host's
  * and its contacts': particle_move): without them, the localisation sweep's line search stalled
  * with what was left on the particles (4 of its 8 cases, session 10).
@@ -56,6 +57,61 @@ static void advance(double *v, double *d, int dofs, double dt, double cap)
     for (int k = 0; k < dofs; k++) d[k] *= f, v[k] *= f;
 }
 
+/* The packing's uniform strain that the walls' move of a step carries (zero unless the walls are
+ * stress-controlled): grain i moves by (ax (x_i - xc), ay (y_i - yc)) with them. */
+typedef struct {
+    double ax, ay, xc, yc;
+} affine_move;
+
+/* Stress-controlled walls (K section 2.6) move, in the smoother, with the whole packing: each axis
+ * by Newton's step along the affine mode (every grain moved with the box), whose stiffness is the
+ * touching contacts' sum of kn (n.E l)^2 + kt (t.E l)^2 (E the unit strain of the axis, l the branch
+ * vector: the other centre, or the contact point at r n for a wall). Moving a wall by its own
+ * contacts' stiffness with the grains held (gb_gem_wall_moves) lets the packing follow by a wave
+ * from the walls, and on the +5 % stress step of tools/bench_scaling.sh at 1e5 discs no grain was
+ * out of balance for the smoother's last 2 700 of 3 444 steps, only the walls' stress (session 19,
+ * docs/solver/research.md): 36.7 s -> 1.6 s, 143 steps. Each wall's move is at most solver.max_move
+ * times the mean radius (or its own-stiffness move if larger: a loose packing whose affine
+ * stiffness is near zero is pressed at that pace). Constant-mean-stress walls keep their own moves. */
+static affine_move affine_walls(gb_sim *sim, const gb_wall_control *wc, double max_move)
+{
+    affine_move a = {0, 0, 0, 0};
+    if (wc->mode != GB_WALLS_STRESS) return a;
+    const gb_box *b = &sim->state.box;
+    const gb_grain *g = sim->state.g;
+    const gb_pair_set *P = &sim->state.pairs;
+    double W = b->right - b->left, H = b->top - b->bottom, kx = 0, ky = 0, r = 0;
+    for (int k = 0; k < P->n; k++) {
+        const gb_pair *p = &P->p[k];
+        if (!(p->d > 0)) continue;
+        const gb_material *m = gb_sim_material(sim, p->j);
+        double lx = p->j >= 0 ? g[p->j].x - g[p->i].x : g[p->i].r * p->nx;
+        double ly = p->j >= 0 ? g[p->j].y - g[p->i].y : g[p->i].r * p->ny;
+        double nx = p->nx, ny = p->ny; /* t = (-ny, nx) */
+        kx += m->kn * (nx * lx) * (nx * lx) + m->kt * (ny * lx) * (ny * lx);
+        ky += m->kn * (ny * ly) * (ny * ly) + m->kt * (nx * ly) * (nx * ly);
+    }
+    for (int i = 0; i < sim->state.n; i++) r += g[i].r;
+    double cap = max_move * (sim->state.n ? r / sim->state.n : 0);
+    /* the walls' own moves (inward positive): grains held */
+    double own[2] = {sim->scratch.wall_dx[GB_WALL_LEFT][0], sim->scratch.wall_dx[GB_WALL_BOTTOM][1]};
+    double t[2];
+    gb_gem_stress_residuals(sim, wc, t);
+    /* d(F_a + F_b)/d(inward move of both) along the mode: the strain is 2 move / side */
+    double k[2] = {kx * 4 / (W * W), ky * 4 / (H * H)}, move[2];
+    for (int q = 0; q < 2; q++) {
+        double newton = k[q] > 0 ? 2 * t[q] / k[q] : HUGE_VAL * t[q];
+        double most = fmax(cap, fabs(own[q]));
+        move[q] = fabs(newton) <= most ? newton : copysign(most, t[q]);
+        if (!(t[q] != 0)) move[q] = 0;
+    }
+    sim->scratch.wall_dx[GB_WALL_LEFT][0] = move[0], sim->scratch.wall_dx[GB_WALL_RIGHT][0] = -move[0];
+    sim->scratch.wall_dx[GB_WALL_BOTTOM][1] = move[1], sim->scratch.wall_dx[GB_WALL_TOP][1] = -move[1];
+    a.ax = -2 * move[0] / W, a.ay = -2 * move[1] / H;
+    a.xc = 0.5 * (b->left + b->right), a.yc = 0.5 * (b->bottom + b->top);
+    return a;
+}
+
 gb_status gb_solver_inertial(gb_solver *s, gb_sim *sim, const gb_wall_control *wc, double target, int max_steps,
                              double stall_check, int *stalled, gb_error *err)
 {
@@ -76,6 +132,7 @@ gb_status gb_solver_inertial(gb_solver *s, gb_sim *sim, const gb_wall_control *w
     for (; step < max_steps; step++) {
         /* servo walls follow the grains, each step by their own stiffness (K section 2.6) */
         double wall_residual = gb_gem_wall_moves(sim, wc);
+        affine_move aff = affine_walls(sim, wc, max_move);
         /* One pass over the grains (the step's cost is its pass over the contacts, and this): the
          * merit and the largest force (gb_gem_merit, gb_gem_largest_grain_force2), the second
          * half of the last move's fixing work (the trapezoid of gb_gem_balance), the moves, and
@@ -134,6 +191,7 @@ gb_status gb_solver_inertial(gb_solver *s, gb_sim *sim, const gb_wall_control *w
             double *vi = &v[3 * i], *d = &sim->scratch.dX[3 * i];
             for (int k = 0; k < 3; k++) vi[k] += dt * acc[3 * i + k];
             advance(vi, d, 3, dt, max_move * sim->state.g[i].r);
+            d[0] += aff.ax * (sim->state.g[i].x - aff.xc), d[1] += aff.ay * (sim->state.g[i].y - aff.yc);
             for (int k = 0; k < 3; k++) work += sim->scratch.F[3 * i + k] * d[k];
         }
         for (int e = 0; e < np; e++) {
