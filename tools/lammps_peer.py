@@ -140,7 +140,7 @@ compute         fmax all reduce max v_fres
 variable        fmax equal c_fmax
 thermo_style    custom step time ke c_fmax
 thermo          10000
-thermo_modify   norm no
+thermo_modify   norm no flush yes
 {load(a, box)}fix             halt all halt 50 v_fmax < {a.accuracy:.17g} error continue
 
 variable        quench loop 100000
