@@ -73,14 +73,14 @@ typedef struct {
  * docs/solver/research.md): 36.7 s -> 1.6 s, 143 steps. Each wall's move is at most solver.max_move
  * times the mean radius (or its own-stiffness move if larger: a loose packing whose affine
  * stiffness is near zero is pressed at that pace). Constant-mean-stress walls keep their own moves. */
-static affine_move affine_walls(gb_sim *sim, const gb_wall_control *wc, double max_move)
+static affine_move affine_walls(gb_sim *sim, const gb_wall_control *wc, double cap)
 {
     affine_move a = {0, 0, 0, 0};
     if (wc->mode != GB_WALLS_STRESS) return a;
     const gb_box *b = &sim->state.box;
     const gb_grain *g = sim->state.g;
     const gb_pair_set *P = &sim->state.pairs;
-    double W = b->right - b->left, H = b->top - b->bottom, kx = 0, ky = 0, r = 0;
+    double W = b->right - b->left, H = b->top - b->bottom, kx = 0, ky = 0;
     for (int k = 0; k < P->n; k++) {
         const gb_pair *p = &P->p[k];
         if (!(p->d > 0)) continue;
@@ -91,8 +91,6 @@ static affine_move affine_walls(gb_sim *sim, const gb_wall_control *wc, double m
         kx += m->kn * (nx * lx) * (nx * lx) + m->kt * (ny * lx) * (ny * lx);
         ky += m->kn * (ny * ly) * (ny * ly) + m->kt * (nx * ly) * (nx * ly);
     }
-    for (int i = 0; i < sim->state.n; i++) r += g[i].r;
-    double cap = max_move * (sim->state.n ? r / sim->state.n : 0);
     /* the walls' own moves (inward positive): grains held */
     double own[2] = {sim->scratch.wall_dx[GB_WALL_LEFT][0], sim->scratch.wall_dx[GB_WALL_BOTTOM][1]};
     double t[2];
@@ -129,10 +127,15 @@ gb_status gb_solver_inertial(gb_solver *s, gb_sim *sim, const gb_wall_control *w
     double a2 = sim->accuracy * sim->accuracy, max_move = s->set->max_move;
     int threads = s->set->threads;
     int step = 0;
+    /* the affine walls' largest move: max_move mean radii (the radii do not change here) */
+    double r_sum = 0;
+    for (int i = 0; i < n; i++) r_sum += sim->state.g[i].r;
+    double wall_cap = max_move * (n ? r_sum / n : 0);
     for (; step < max_steps; step++) {
-        /* servo walls follow the grains, each step by their own stiffness (K section 2.6) */
+        /* servo walls follow the grains at every step (K section 2.6): by their own stiffness, and
+         * stress-controlled ones then with the whole packing */
         double wall_residual = gb_gem_wall_moves(sim, wc);
-        affine_move aff = affine_walls(sim, wc, max_move);
+        affine_move aff = affine_walls(sim, wc, wall_cap);
         /* One pass over the grains (the step's cost is its pass over the contacts, and this): the
          * merit and the largest force (gb_gem_merit, gb_gem_largest_grain_force2), the second
          * half of the last move's fixing work (the trapezoid of gb_gem_balance), the moves, and
