@@ -286,6 +286,15 @@ void gb_gem_stress_residuals(const gb_sim *sim, const gb_wall_control *wc, doubl
     t[1] = wc->s1 * (b->right - b->left) - 0.5 * (f[GB_WALL_BOTTOM] + f[GB_WALL_TOP]);
 }
 
+double gb_gem_mean_stress_error(const gb_sim *sim, const gb_wall_control *wc)
+{
+    const gb_box *b = &sim->state.box;
+    const double *f = sim->state.wall_force;
+    double s1 = (f[GB_WALL_BOTTOM] + f[GB_WALL_TOP]) / (2 * (b->right - b->left));
+    double s2 = (f[GB_WALL_LEFT] + f[GB_WALL_RIGHT]) / (2 * (b->top - b->bottom));
+    return wc->mean - 0.5 * (s1 + s2);
+}
+
 /* Wall moves of this iteration; returns the walls' residual force (0 for fixed walls). */
 double gb_gem_wall_moves(gb_sim *sim, const gb_wall_control *wc)
 {
@@ -293,7 +302,7 @@ double gb_gem_wall_moves(gb_sim *sim, const gb_wall_control *wc)
     if (wc->mode == GB_WALLS_FIXED) return 0;
     const gb_box *b = &sim->state.box;
     double W = b->right - b->left, H = b->top - b->bottom;
-    const double *f = sim->state.wall_force, *k = sim->scratch.wall_k;
+    const double *k = sim->scratch.wall_k;
     /* A wall that touches nothing moves as if it had one grain-wall contact. */
     double kmin = sim->scene->grain_wall.kn;
     double dy, dx, residual;
@@ -309,9 +318,7 @@ double gb_gem_wall_moves(gb_sim *sim, const gb_wall_control *wc)
     } else {
         /* Constant mean stress: an isotropic strain de (de1 = de2) cancels the mean-stress error
          * by the walls' stiffness, leaving the imposed shear unchanged (K section 2.6). */
-        double s1 = (f[GB_WALL_BOTTOM] + f[GB_WALL_TOP]) / (2 * W);
-        double s2 = (f[GB_WALL_LEFT] + f[GB_WALL_RIGHT]) / (2 * H);
-        double err = wc->mean - 0.5 * (s1 + s2);
+        double err = gb_gem_mean_stress_error(sim, wc);
         double ky = fmax(k[GB_WALL_BOTTOM] + k[GB_WALL_TOP], 2 * kmin);
         double kx = fmax(k[GB_WALL_LEFT] + k[GB_WALL_RIGHT], 2 * kmin);
         double dmean_de = 0.5 * (ky * sim->ref_height / (4 * W) + kx * sim->ref_width / (4 * H));

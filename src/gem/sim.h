@@ -237,6 +237,8 @@ double gb_gem_wall_moves(gb_sim *sim, const gb_wall_control *wc);
 /* Stress-controlled walls' residuals, each axis's target stress times its side minus its two walls'
  * mean force: t[0] the x axis (left and right walls), t[1] the y axis. */
 void gb_gem_stress_residuals(const gb_sim *sim, const gb_wall_control *wc, double t[2]);
+/* Constant-mean-stress walls' error: the target mean stress minus the walls' (s1 + s2) / 2. */
+double gb_gem_mean_stress_error(const gb_sim *sim, const gb_wall_control *wc);
 /* The global solver's merit (src/solver): squared fixing forces of the grains in the system, of the
  * boundary particles, and the walls' residual squared. */
 double gb_gem_merit(const gb_sim *sim, const unsigned char *in_system, double wall_residual);

@@ -319,9 +319,8 @@ static void wall_residuals(gb_global *gl, const gb_sim *sim, const gb_wall_contr
         gl->rhs[d + W_X] = -(f[GB_WALL_LEFT] + f[GB_WALL_RIGHT] - 2 * wc->s2 * H);
         gl->rhs[d + W_Y] = -(f[GB_WALL_BOTTOM] + f[GB_WALL_TOP] - 2 * wc->s1 * W);
     } else if (wc->mode == GB_WALLS_MEAN) {
-        double s1 = (f[GB_WALL_BOTTOM] + f[GB_WALL_TOP]) / (2 * W), s2 = (f[GB_WALL_LEFT] + f[GB_WALL_RIGHT]) / (2 * H);
         gl->held[d + W_MEAN] = 0;
-        gl->rhs[d + W_MEAN] = -(0.5 * (s1 + s2) - wc->mean) * (W * sim->ref_height + H * sim->ref_width);
+        gl->rhs[d + W_MEAN] = gb_gem_mean_stress_error(sim, wc) * (W * sim->ref_height + H * sim->ref_width);
     }
 }
 

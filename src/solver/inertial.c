@@ -2,8 +2,8 @@
  * FIRE (Bitzek, Koskinen, Gaehler, Moseler and Gumbsch, Phys. Rev. Lett. 97, 170201, 2006, with
  * its published parameters), in which each grain's mass is its own contact stiffness S (K 8): its
  * acceleration is its reference move (K 9-12 at alpha = 1), a time step of 1 is one Jacobi sweep of
- * the reference iteration, and servo walls follow at every step (K section 2.6), stress-controlled ones
- * with the whole packing (affine_walls).
+ * the reference iteration, and servo walls follow at every step (K section 2.6) with the whole
+ * packing (affine_walls).
  * A hybrid scene's boundary particles move with the grains, each by its own stiffness (the host's
  * and its contacts': particle_move): without them, the localisation sweep's line search stalled
  * with what was left on the particles (4 of its 8 cases, session 10).
@@ -63,24 +63,26 @@ typedef struct {
     double ax, ay, xc, yc;
 } affine_move;
 
-/* Stress-controlled walls (K section 2.6) move, in the smoother, with the whole packing: each axis
- * by Newton's step along the affine mode (every grain moved with the box), whose stiffness is the
- * touching contacts' sum of kn (n.E l)^2 + kt (t.E l)^2 (E the unit strain of the axis, l the branch
- * vector: the other centre, or the contact point at r n for a wall). Moving a wall by its own
- * contacts' stiffness with the grains held (gb_gem_wall_moves) lets the packing follow by a wave
- * from the walls, and on the +5 % stress step of tools/bench_scaling.sh at 1e5 discs no grain was
- * out of balance for the smoother's last 2 700 of 3 444 steps, only the walls' stress (session 19,
- * docs/solver/research.md): 36.7 s -> 1.6 s, 143 steps. Each wall's move is at most solver.max_move
- * times the mean radius (or its own-stiffness move if larger: a loose packing whose affine
- * stiffness is near zero is pressed at that pace). Constant-mean-stress walls keep their own moves. */
+/* Servo walls (K section 2.6) move, in the smoother, with the whole packing: by Newton's step along
+ * the affine mode (every grain moved with the box), whose stiffness is the touching contacts' sum of
+ * kn (n.E l)^2 + kt (t.E l)^2 (E the mode's unit strain, l the branch vector: the other centre, or
+ * the contact point at r n for a wall). Stress control: each axis by its own mode (E = diag(1, 0)
+ * and diag(0, 1)); constant mean stress: the isotropic strain of gb_gem_wall_moves, against the
+ * mean-stress error times the area change per unit strain (the global solver's W_MEAN residual,
+ * global.c). Moving a wall by its own contacts' stiffness with the grains held (gb_gem_wall_moves)
+ * lets the packing follow by a wave from the walls, and on the +5 % stress step of
+ * tools/bench_scaling.sh at 1e5 discs no grain was out of balance for the smoother's last 2 700 of
+ * 3 444 steps, only the walls' stress (session 19, docs/solver/research.md): 36.7 s -> 1.6 s, 143
+ * steps. Each wall's move is at most solver.max_move times the mean radius (or its own-stiffness
+ * move if larger: a loose packing whose affine stiffness is near zero is pressed at that pace). */
 static affine_move affine_walls(gb_sim *sim, const gb_wall_control *wc, double cap)
 {
     affine_move a = {0, 0, 0, 0};
-    if (wc->mode != GB_WALLS_STRESS) return a;
+    if (wc->mode != GB_WALLS_STRESS && wc->mode != GB_WALLS_MEAN) return a;
     const gb_box *b = &sim->state.box;
     const gb_grain *g = sim->state.g;
     const gb_pair_set *P = &sim->state.pairs;
-    double W = b->right - b->left, H = b->top - b->bottom, kx = 0, ky = 0;
+    double W = b->right - b->left, H = b->top - b->bottom, kxx = 0, kyy = 0, kxy = 0;
     for (int k = 0; k < P->n; k++) {
         const gb_pair *p = &P->p[k];
         if (!(p->d > 0)) continue;
@@ -88,20 +90,34 @@ static affine_move affine_walls(gb_sim *sim, const gb_wall_control *wc, double c
         double lx = p->j >= 0 ? g[p->j].x - g[p->i].x : g[p->i].r * p->nx;
         double ly = p->j >= 0 ? g[p->j].y - g[p->i].y : g[p->i].r * p->ny;
         double nx = p->nx, ny = p->ny; /* t = (-ny, nx) */
-        kx += m->kn * (nx * lx) * (nx * lx) + m->kt * (ny * lx) * (ny * lx);
-        ky += m->kn * (ny * ly) * (ny * ly) + m->kt * (nx * ly) * (nx * ly);
+        kxx += m->kn * (nx * lx) * (nx * lx) + m->kt * (ny * lx) * (ny * lx);
+        kyy += m->kn * (ny * ly) * (ny * ly) + m->kt * (nx * ly) * (nx * ly);
+        kxy += (m->kn - m->kt) * nx * ny * lx * ly;
     }
     /* the walls' own moves (inward positive): grains held */
-    double own[2] = {sim->scratch.wall_dx[GB_WALL_LEFT][0], sim->scratch.wall_dx[GB_WALL_BOTTOM][1]};
-    double t[2];
-    gb_gem_stress_residuals(sim, wc, t);
-    /* d(F_a + F_b)/d(inward move of both) along the mode: the strain is 2 move / side */
-    double k[2] = {kx * 4 / (W * W), ky * 4 / (H * H)}, move[2];
-    for (int q = 0; q < 2; q++) {
-        double newton = k[q] > 0 ? 2 * t[q] / k[q] : HUGE_VAL * t[q];
-        double most = fmax(cap, fabs(own[q]));
-        move[q] = fabs(newton) <= most ? newton : copysign(most, t[q]);
-        if (!(t[q] != 0)) move[q] = 0;
+    double own[2] = {sim->scratch.wall_dx[GB_WALL_LEFT][0], sim->scratch.wall_dx[GB_WALL_BOTTOM][1]}, move[2];
+    if (wc->mode == GB_WALLS_STRESS) {
+        double t[2];
+        gb_gem_stress_residuals(sim, wc, t);
+        /* d(F_a + F_b)/d(inward move of both) along the mode: the strain is 2 move / side */
+        double k[2] = {kxx * 4 / (W * W), kyy * 4 / (H * H)};
+        for (int q = 0; q < 2; q++) {
+            double newton = k[q] > 0 ? 2 * t[q] / k[q] : HUGE_VAL * t[q];
+            double most = fmax(cap, fabs(own[q]));
+            move[q] = fabs(newton) <= most ? newton : copysign(most, t[q]);
+            if (!(t[q] != 0)) move[q] = 0;
+        }
+    } else {
+        /* the isotropic strain de moves the walls by de W_ref / 2 and de H_ref / 2 (gb_gem_wall_moves):
+         * the packing's strains ex = de W_ref / W, ey = de H_ref / H */
+        double ex = sim->ref_width / W, ey = sim->ref_height / H;
+        double k = kxx * ex * ex + 2 * kxy * ex * ey + kyy * ey * ey;
+        double r = gb_gem_mean_stress_error(sim, wc) * (W * sim->ref_height + H * sim->ref_width);
+        double half = 0.5 * fmax(sim->ref_width, sim->ref_height), most = fmax(cap, fmax(fabs(own[0]), fabs(own[1])));
+        double de = k > 0 ? r / k : copysign(HUGE_VAL, r);
+        if (!(fabs(de) * half <= most)) de = copysign(most / half, r);
+        if (!(r != 0)) de = 0;
+        move[0] = 0.5 * de * sim->ref_width, move[1] = 0.5 * de * sim->ref_height;
     }
     sim->scratch.wall_dx[GB_WALL_LEFT][0] = move[0], sim->scratch.wall_dx[GB_WALL_RIGHT][0] = -move[0];
     sim->scratch.wall_dx[GB_WALL_BOTTOM][1] = move[1], sim->scratch.wall_dx[GB_WALL_TOP][1] = -move[1];

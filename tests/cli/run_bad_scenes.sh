@@ -52,6 +52,20 @@ for scene in "$dir"/warn/*.yaml; do
     { echo "FAIL $name: run_info.yaml lacks the warning"; fail=$((fail + 1)); continue; }
   echo "ok   $name: $msg"
 done
+# A stress that frictionless walls cannot reach under the grains' weight (src/run/program.c,
+# weight_reachable): two discs of radius 1 weighing 1.5e5 dyn/cm^2 of area each in a box 4 wide,
+# whose mean vertical wall stress is at least 2 pi 1.5e5 / (2 4) - 100 / 4 = 117 785 dyn/cm: its
+# first step's 7.5e4 is refused at once (exit 2), the initial state kept; 1.5e4 of weight runs.
+n=$((n + 1))
+sed 's/^solver:/body_force: {weight_per_area: 1.5e5}\nsolver:/' "$dir/good.yaml" > "$out/heavy.yaml"
+msg=$("$gembem" run "$out/heavy.yaml" -o "$out/heavy" --quiet 2>&1 >/dev/null); code=$?
+want="loading[0].isotropic: the walls cannot reach s1 75000 and s2 75000 dyn/cm under the grains' weight (0, -942478 dyn)"
+if [ $code -ne 2 ]; then echo "FAIL heavy: exit status $code, expected 2 ($msg)"; fail=$((fail + 1))
+elif case "$msg" in *"$want"*"s1 >= 117785"*) false;; *) true;; esac; then echo "FAIL heavy: message '$msg' lacks '$want'"; fail=$((fail + 1))
+elif [ "$(wc -l < "$out/heavy/steps.csv")" != 2 ]; then echo "FAIL heavy: steps.csv should hold the initial state"; fail=$((fail + 1))
+else echo "ok   heavy: $msg"; fi
+sed 's/^solver:/body_force: {weight_per_area: 1.5e4}\nsolver:/' "$dir/good.yaml" > "$out/light.yaml"
+"$gembem" run "$out/light.yaml" -o "$out/light" --quiet || { echo "FAIL light.yaml (1.5e4 of weight) did not run"; fail=$((fail + 1)); }
 # The good scene runs (so that the bad ones fail for their own reason).
 "$gembem" run "$dir/good.yaml" -o "$out/good" --quiet || { echo "FAIL good.yaml did not run"; fail=$((fail + 1)); }
 "$gembem" run "$dir/good_host.yaml" -o "$out/good_host" --quiet || { echo "FAIL good_host.yaml did not run"; fail=$((fail + 1)); }
