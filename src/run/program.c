@@ -144,6 +144,7 @@ static gb_status relax(gb_sim *sim, const gb_wall_control *wc, long cap, double 
 static gb_status weight_reachable(const gb_sim *sim, const gb_stage *sg, const gb_wall_control *wc, gb_error *err)
 {
     const gb_material *m = &sim->scene->grain_wall;
+    if (wc->mode != GB_WALLS_STRESS && wc->mode != GB_WALLS_MEAN) return GB_OK;
     if (!sim->world.box || !sim->body || m->friction_deg != 0 || m->cohesion != 0) return GB_OK;
     double bx = 0, by = 0;
     for (int i = 0; i < sim->state.n; i++) bx += sim->body[2 * i], by += sim->body[2 * i + 1];
@@ -153,7 +154,6 @@ static gb_status weight_reachable(const gb_sim *sim, const gb_stage *sg, const g
     double s1 = fmax(0, 0.5 * fabs(by) / W - a / W), s2 = fmax(0, 0.5 * fabs(bx) / H - a / H);
     if (wc->mode == GB_WALLS_STRESS && wc->s1 >= s1 && wc->s2 >= s2) return GB_OK;
     if (wc->mode == GB_WALLS_MEAN && wc->mean >= 0.5 * (s1 + s2)) return GB_OK;
-    if (wc->mode != GB_WALLS_STRESS && wc->mode != GB_WALLS_MEAN) return GB_OK;
     char target[96];
     if (wc->mode == GB_WALLS_MEAN) snprintf(target, sizeof target, "a mean stress of %.6g", wc->mean);
     else snprintf(target, sizeof target, "s1 %.6g and s2 %.6g", wc->s1, wc->s2);
