@@ -148,8 +148,8 @@ gb_status gb_solver_inertial(gb_solver *s, gb_sim *sim, const gb_wall_control *w
     for (int i = 0; i < n; i++) r_sum += sim->state.g[i].r;
     double wall_cap = max_move * (n ? r_sum / n : 0);
     for (; step < max_steps; step++) {
-        /* servo walls follow the grains at every step (K section 2.6): by their own stiffness, and
-         * stress-controlled ones then with the whole packing */
+        /* servo walls follow the grains at every step (K section 2.6): by their own stiffness,
+         * then (stress or mean-stress control) with the whole packing */
         double wall_residual = gb_gem_wall_moves(sim, wc);
         affine_move aff = affine_walls(sim, wc, wall_cap);
         /* One pass over the grains (the step's cost is its pass over the contacts, and this): the
