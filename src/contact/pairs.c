@@ -62,6 +62,7 @@ void gb_particles_free(gb_particles *bp)
 double gb_pair_update(gb_pair *p, const gb_world *w, const double *dX, const double *wall_dx,
                       const gb_material *mat, double tan_phi)
 {
+    if (gb_pair_stays_apart(p, w)) return 0;
     int was_contact = p->d > 0;
     double du_t, dth, pt0 = p->pt, mr0 = p->mr, diss = 0;
     gb_pair_moves(p, w, dX, wall_dx, mat, &du_t, &dth);
