@@ -353,21 +353,16 @@ gb_status gb_pairs_rebuild(gb_pair_set *P, gb_pair_search *S, const gb_world *w,
     return GB_OK;
 }
 
-void gb_pairs_drift(const gb_pair_set *P, const gb_world *w, double *grain, double *wall)
+double gb_pairs_wall_drift(const gb_pair_set *P, const gb_world *w)
 {
     const gb_box *box = w->box;
-    *wall = 0;
+    double wall = 0;
     if (box)
-        *wall = fmax(fmax(fabs(box->left - P->box0.left), fabs(box->right - P->box0.right)),
-                     fmax(fabs(box->bottom - P->box0.bottom), fabs(box->top - P->box0.top)));
+        wall = fmax(fmax(fabs(box->left - P->box0.left), fabs(box->right - P->box0.right)),
+                    fmax(fabs(box->bottom - P->box0.bottom), fabs(box->top - P->box0.top)));
     for (int e = 0; w->bp && e < w->bp->n; e++)
-        *wall = fmax(*wall, hypot(w->bp->x[e] - P->px0[2 * e], w->bp->y[e] - P->px0[2 * e + 1]));
-    double max2 = 0;
-    for (int i = 0; i < w->n; i++) { /* a comparison, not fmax (a call): this runs at every move */
-        double d2 = gb_pairs_grain_drift2(P, w, i);
-        if (d2 > max2) max2 = d2;
-    }
-    *grain = sqrt(max2);
+        wall = fmax(wall, hypot(w->bp->x[e] - P->px0[2 * e], w->bp->y[e] - P->px0[2 * e + 1]));
+    return wall;
 }
 
 int gb_pairs_drift_stale(const gb_pair_search *S, double grain, double wall)
@@ -378,9 +373,12 @@ int gb_pairs_drift_stale(const gb_pair_search *S, double grain, double wall)
 
 int gb_pairs_stale(const gb_pair_set *P, const gb_pair_search *S, const gb_world *w)
 {
-    double grain, wall;
-    gb_pairs_drift(P, w, &grain, &wall);
-    return gb_pairs_drift_stale(S, grain, wall);
+    double max2 = 0;
+    for (int i = 0; i < w->n; i++) {
+        double d2 = gb_pairs_grain_drift2(P, w, i);
+        if (d2 > max2) max2 = d2;
+    }
+    return gb_pairs_drift_stale(S, sqrt(max2), gb_pairs_wall_drift(P, w));
 }
 
 int gb_pairs_brute_force(const gb_grain *g, int n, double range, int *out_i, int *out_j, int cap)

@@ -30,11 +30,11 @@ typedef struct {
 #define GB_ONE 4
     double *pair_diss;  /* a move's contact update: the energy each pair dissipated */
     int pair_diss_cap;
-    /* The pairs of each grain, for the contacts' sums on threads (src/gem/relax.c): grain i's are
-     * pairs inc[inc_start[i] .. inc_start[i + 1]) in the list's order, the walls' and particles'
-     * pairs inc[inc_start[n] ..); built for the list of generation inc_of. */
-    int *inc_start, *inc, inc_cap;
-    long inc_of;
+    /* The pair list in chunks, for the contacts' sums on threads (src/gem/relax.c): chunk c's
+     * pairs are [chunk[c], chunk[c + 1]); edge[0 .. n_edges) the pairs with a wall or a particle;
+     * built for the list of generation chunk_of. */
+    int *chunk, n_chunks, chunk_cap, *edge, n_edges, edge_cap;
+    long chunk_of;
     double wall_k[GB_N_WALLS];     /* wall contact stiffness: sum of kn of its contacts */
     double wall_dx[GB_N_WALLS][2]; /* wall translation of the current iteration */
     double *bp_F;       /* fixing force of each boundary particle: host force K u + f0 minus contacts */

@@ -141,7 +141,7 @@ gb_status gb_solver_inertial(gb_solver *s, gb_sim *sim, const gb_wall_control *w
     int since_uphill = 0;
     gb_status st = GB_OK;
     double a2 = sim->accuracy * sim->accuracy, max_move = s->set->max_move;
-    int threads = s->set->threads;
+    int threads = s->set->threads, par = threads > 1 && n >= GB_PARALLEL_GRAINS, nb = (int)gb_smoother_blocks(n) - 1;
     int step = 0;
     /* the affine walls' largest move: max_move mean radii (the radii do not change here) */
     double r_sum = 0;
@@ -152,25 +152,37 @@ gb_status gb_solver_inertial(gb_solver *s, gb_sim *sim, const gb_wall_control *w
          * then (stress or mean-stress control) with the whole packing */
         double wall_residual = gb_gem_wall_moves(sim, wc);
         affine_move aff = affine_walls(sim, wc, wall_cap);
-        /* One pass over the grains (the step's cost is its pass over the contacts, and this): the
-         * merit and the largest force (gb_gem_merit, gb_gem_largest_grain_force2), the second
+        /* One pass over the grains (the step's cost is its pass over the contacts, and this), in
+         * blocks on solver.threads threads (GB_SMOOTHER_BLOCK): the merit and the largest force (gb_gem_merit, gb_gem_largest_grain_force2), the second
          * half of the last move's fixing work (the trapezoid of gb_gem_balance), the moves, and
          * the power of the forces (minus the fixing forces) on the velocities. */
         double merit = wall_residual * wall_residual, work = 0, power = 0, vv = 0, aa = 0;
         int balanced = 1;
-        /* each grain's move on solver.threads threads (each writes its own), the sums in order */
-#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1 && n >= GB_PARALLEL_GRAINS)
+#pragma omp parallel for schedule(static) num_threads(threads) if (par)
         for (int i = 0; i < n; i++) gb_gem_grain_move(sim, i, &acc[3 * i]);
-        for (int i = 0; i < n; i++) {
-            const double *F = &sim->scratch.F[3 * i];
-            if (s->in_system[i]) merit += F[0] * F[0], merit += F[1] * F[1], merit += F[2] * F[2];
-            balanced &= gb_gem_force2(sim, i) <= a2;
-            for (int q = 3 * i; q < 3 * i + 3; q++) {
-                work += sim->scratch.F[q] * sim->scratch.dX[q];
-                acc[q] *= inv_alpha;
-                power -= sim->scratch.F[q] * v[q];
-                vv += v[q] * v[q], aa += acc[q] * acc[q];
+#pragma omp parallel for schedule(static) num_threads(threads) if (par)
+        for (int b = 0; b < nb; b++) {
+            /* block 0 starts from the walls' merit: one block sums as the grains' order would */
+            double m = b ? 0 : merit, wk = 0, pw = 0, v2 = 0, a2s = 0, out = 0;
+            for (int i = b * GB_SMOOTHER_BLOCK, e = i + GB_SMOOTHER_BLOCK < n ? i + GB_SMOOTHER_BLOCK : n; i < e; i++) {
+                const double *F = &sim->scratch.F[3 * i];
+                if (s->in_system[i]) m += F[0] * F[0], m += F[1] * F[1], m += F[2] * F[2];
+                if (!(gb_gem_force2(sim, i) <= a2)) out = 1;
+                for (int q = 3 * i; q < 3 * i + 3; q++) {
+                    wk += sim->scratch.F[q] * sim->scratch.dX[q];
+                    acc[q] *= inv_alpha;
+                    pw -= sim->scratch.F[q] * v[q];
+                    v2 += v[q] * v[q], a2s += acc[q] * acc[q];
+                }
             }
+            double *sum = &s->block_sums[GB_SMOOTHER_SUMS * b];
+            sum[0] = m, sum[1] = wk, sum[2] = pw, sum[3] = v2, sum[4] = a2s, sum[5] = out;
+        }
+        for (int b = 0; b < nb; b++) {
+            const double *sum = &s->block_sums[GB_SMOOTHER_SUMS * b];
+            merit = b ? merit + sum[0] : sum[0];
+            work += sum[1], power += sum[2], vv += sum[3], aa += sum[4];
+            if (sum[5] != 0) balanced = 0;
         }
         sim->state.acc.relaxation -= 0.5 * work;
         for (int e = 0; e < np; e++) {
@@ -198,21 +210,29 @@ gb_status gb_solver_inertial(gb_solver *s, gb_sim *sim, const gb_wall_control *w
             check_merit = merit, next_check += stall_check;
         }
         if (power > 0) { /* downhill: turn the velocity towards the force, and speed up */
-            double mix = aa > 0 ? mixing * sqrt(vv / aa) : 0;
-            for (int q = 0; q < dofs; q++) v[q] = (1 - mixing) * v[q] + mix * acc[q];
+            double keep = 1 - mixing, mix = aa > 0 ? mixing * sqrt(vv / aa) : 0;
+#pragma omp parallel for schedule(static) num_threads(threads) if (par)
+            for (int q = 0; q < dofs; q++) v[q] = keep * v[q] + mix * acc[q];
             if (++since_uphill > N_MIN) dt = fmin(F_INC * dt, DT_MAX), mixing *= F_ALPHA;
         } else if (step > 0) { /* uphill: stop, and go on more carefully */
             since_uphill = 0, dt *= F_DEC, mixing = ALPHA_START;
             memset(v, 0, (size_t)dofs * sizeof(double));
         }
-        work = 0;
-        for (int i = 0; i < n; i++) { /* semi-implicit Euler */
-            double *vi = &v[3 * i], *d = &sim->scratch.dX[3 * i];
-            for (int k = 0; k < 3; k++) vi[k] += dt * acc[3 * i + k];
-            advance(vi, d, 3, dt, max_move * sim->state.g[i].r);
-            d[0] += aff.ax * (sim->state.g[i].x - aff.xc), d[1] += aff.ay * (sim->state.g[i].y - aff.yc);
-            for (int k = 0; k < 3; k++) work += sim->scratch.F[3 * i + k] * d[k];
+        /* semi-implicit Euler, the moves' work summed by blocks as above */
+#pragma omp parallel for schedule(static) num_threads(threads) if (par)
+        for (int b = 0; b < nb; b++) {
+            double wk = 0;
+            for (int i = b * GB_SMOOTHER_BLOCK, e = i + GB_SMOOTHER_BLOCK < n ? i + GB_SMOOTHER_BLOCK : n; i < e; i++) {
+                double *vi = &v[3 * i], *d = &sim->scratch.dX[3 * i];
+                for (int k = 0; k < 3; k++) vi[k] += dt * acc[3 * i + k];
+                advance(vi, d, 3, dt, max_move * sim->state.g[i].r);
+                d[0] += aff.ax * (sim->state.g[i].x - aff.xc), d[1] += aff.ay * (sim->state.g[i].y - aff.yc);
+                for (int k = 0; k < 3; k++) wk += sim->scratch.F[3 * i + k] * d[k];
+            }
+            s->block_sums[GB_SMOOTHER_SUMS * b] = wk;
         }
+        work = 0;
+        for (int b = 0; b < nb; b++) work += s->block_sums[GB_SMOOTHER_SUMS * b];
         for (int e = 0; e < np; e++) {
             double *vp = &v[3 * n + 2 * e];
             for (int k = 0; k < 2; k++) vp[k] += dt * acc[3 * n + 2 * e + k];

@@ -12,7 +12,7 @@ void gb_solver_free(gb_solver *s)
     gb_global_free(s->global);
     free(s->in_system);
     gb_state_free(&s->trial), gb_state_free(&s->smoothed);
-    free(s->direction), free(s->velocity), free(s->acceleration);
+    free(s->direction), free(s->velocity), free(s->acceleration), free(s->block_sums);
     free(s);
 }
 
@@ -42,7 +42,8 @@ gb_status gb_solver_create(gb_sim *sim, const gb_solver_settings *set, gb_error 
             s->direction = malloc((3 * n + 2 * np + 2 * GB_N_WALLS) * sizeof(double));
             s->velocity = malloc((3 * n + 2 * np) * sizeof(double));
             s->acceleration = malloc((3 * n + 2 * np) * sizeof(double));
-            ok = ok && s->direction && s->velocity && s->acceleration;
+            s->block_sums = malloc(GB_SMOOTHER_SUMS * gb_smoother_blocks(sim->state.n) * sizeof(double));
+            ok = ok && s->direction && s->velocity && s->acceleration && s->block_sums;
         }
     }
     if (!st && !ok) st = gb_fail(err, GB_ENOMEM, "out of memory for the global solver of %d grains", sim->state.n);

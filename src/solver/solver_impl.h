@@ -21,10 +21,17 @@ struct gb_solver {
     gb_solver_damping damping;  /* newton: damped */
     double *direction;          /* newton: line_search: the Newton direction of grains, particles, walls */
     double *velocity, *acceleration; /* its smoother's: 3 per grain, 2 per boundary particle */
+    double *block_sums;         /* its smoother's sums over blocks of grains (inertial.c) */
     double length;              /* the share of Newton's step the last line search took (0: the smoother) */
     gb_solver_work work;        /* since the start of the process: only its changes within a load step are
                                    reported, so a resumed run needs none of it */
 };
+
+/* The smoother's sums over the grains run on solver.threads threads in blocks of
+ * GB_SMOOTHER_BLOCK grains, each summed in its order, then the blocks in theirs: the same bits on
+ * any thread count (and, below a block's size, the grains' order). GB_SMOOTHER_SUMS per block. */
+enum { GB_SMOOTHER_BLOCK = 512, GB_SMOOTHER_SUMS = 6 };
+static inline size_t gb_smoother_blocks(int n) { return (size_t)(n + GB_SMOOTHER_BLOCK - 1) / GB_SMOOTHER_BLOCK + 1; }
 
 /* Which grains the global system moves (s->in_system), from the current contacts. */
 void gb_solver_mark_system(gb_solver *s, const gb_sim *sim);

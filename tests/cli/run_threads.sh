@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
-# solver.threads (the contacts' update on OpenMP threads, src/gem/relax.c): the same run with 1 and
-# with 2 threads gives the same bits, since every sum over pairs is taken in the pairs' order
-# (tests/cli/scenes/threads.yaml: 800 discs, more pairs than the threshold of the parallel update,
-# a friction relaxation and 3 strain steps of the line search). Also refused: threads 0.
+# solver.threads (the contacts' update and sums on OpenMP threads, src/gem/relax.c, and the
+# smoother's sums over the grains, src/solver/inertial.c): the same run with 1 and with 2 threads
+# gives the same bits, since every sum is taken in an order that the pair list and the grains fix
+# (tests/cli/scenes/threads.yaml: 800 discs, more than the thresholds of the parallel update, of
+# the contacts' chunks and of the smoother's blocks; a friction relaxation and 3 strain steps of
+# the line search). Also refused: threads 0.
 # Bits are compared on purpose: both runs make the same BLAS and UMFPACK calls with the same
 # OPENBLAS_NUM_THREADS (inherited); only gembem's own loops change their thread count, and their
 # sums are taken in a fixed order (the property under test, not an accident of one machine).
