@@ -112,9 +112,9 @@ gb_status gb_grains_cell_order(const gb_grain *g, int n, int *order, gb_error *e
 /* True when some grain or wall has moved far enough since the last rebuild that a new contact
  * could be missing from the list. */
 int gb_pairs_stale(const gb_pair_set *P, const gb_pair_search *S, const gb_world *w);
-/* The same test in parts, for callers that move few grains or measure the grains' drift as they
- * move them: the test on the largest displacement since the rebuild of a grain (`grain`) and of
- * a wall or particle (`wall`), the latter, and the squared displacement of one grain. */
+/* The same test in parts, for callers that measure the grains' drift as they move them: the test
+ * on the largest displacement since the rebuild of a grain (`grain`) and of a wall or particle
+ * (`wall`), the walls' and particles' largest displacement, and one grain's squared one. */
 int gb_pairs_drift_stale(const gb_pair_search *S, double grain, double wall);
 double gb_pairs_wall_drift(const gb_pair_set *P, const gb_world *w);
 static inline double gb_pairs_grain_drift2(const gb_pair_set *P, const gb_world *w, int i)

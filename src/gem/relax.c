@@ -328,17 +328,17 @@ static inline void update_pair(gb_sim *sim, int k)
                                                gb_sim_material(sim, p->j), gb_sim_tan_phi(sim, p->j));
 }
 
-/* The pairs' update runs on solver.threads OpenMP threads from GB_PARALLEL_PAIRS pairs: they are
- * independent (each reads the bodies and writes itself); what is summed over pairs is summed
- * afterwards in the pairs' order, so that every result is the same bits whatever the thread
- * count. On one thread the update is fused with the sums (gb_gem_move_and_forces): one pass over
- * the pairs instead of two, the same operations in the same order. */
+/* The pairs' update alone (gb_gem_apply_moves: the reference iteration sums the forces later) runs
+ * on solver.threads OpenMP threads from GB_PARALLEL_PAIRS pairs: they are independent (each reads
+ * the bodies and writes itself); what is summed over pairs is summed afterwards in the pairs'
+ * order, so that every result is the same bits whatever the thread count. The smoother's moves
+ * update the pairs in the pass that sums them (contact_sums). */
 static int pairs_parallel(const gb_sim *sim)
 {
     return sim->scene->solver.threads > 1 && sim->state.pairs.n >= GB_PARALLEL_PAIRS;
 }
 
-/* Updates every pair (update_pair); about half of a smoother step's time (src/solver/inertial.c). */
+/* Updates every pair (update_pair); most of a reference iteration's time. */
 static gb_status update_pairs(gb_sim *sim, gb_error *err)
 {
     gb_status st = pair_diss_room(sim, err);

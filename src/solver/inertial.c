@@ -141,7 +141,7 @@ gb_status gb_solver_inertial(gb_solver *s, gb_sim *sim, const gb_wall_control *w
     int since_uphill = 0;
     gb_status st = GB_OK;
     double a2 = sim->accuracy * sim->accuracy, max_move = s->set->max_move;
-    int threads = s->set->threads, par = threads > 1 && n >= GB_PARALLEL_GRAINS, nb = (int)gb_smoother_blocks(n) - 1;
+    int threads = s->set->threads, par = threads > 1 && n >= GB_PARALLEL_GRAINS, nb = gb_smoother_blocks(n);
     int step = 0;
     /* the affine walls' largest move: max_move mean radii (the radii do not change here) */
     double r_sum = 0;
@@ -152,10 +152,11 @@ gb_status gb_solver_inertial(gb_solver *s, gb_sim *sim, const gb_wall_control *w
          * then (stress or mean-stress control) with the whole packing */
         double wall_residual = gb_gem_wall_moves(sim, wc);
         affine_move aff = affine_walls(sim, wc, wall_cap);
-        /* One pass over the grains (the step's cost is its pass over the contacts, and this), in
-         * blocks on solver.threads threads (GB_SMOOTHER_BLOCK): the merit and the largest force (gb_gem_merit, gb_gem_largest_grain_force2), the second
-         * half of the last move's fixing work (the trapezoid of gb_gem_balance), the moves, and
-         * the power of the forces (minus the fixing forces) on the velocities. */
+        /* The grains' moves, then one pass over the grains in blocks on solver.threads threads
+         * (GB_SMOOTHER_BLOCK; the step's cost is its pass over the contacts, and these): the
+         * merit and the largest force (gb_gem_merit, gb_gem_largest_grain_force2), the second
+         * half of the last move's fixing work (the trapezoid of gb_gem_balance), and the power
+         * of the forces (minus the fixing forces) on the velocities. */
         double merit = wall_residual * wall_residual, work = 0, power = 0, vv = 0, aa = 0;
         int balanced = 1;
 #pragma omp parallel for schedule(static) num_threads(threads) if (par)

@@ -31,7 +31,7 @@ struct gb_solver {
  * GB_SMOOTHER_BLOCK grains, each summed in its order, then the blocks in theirs: the same bits on
  * any thread count (and, below a block's size, the grains' order). GB_SMOOTHER_SUMS per block. */
 enum { GB_SMOOTHER_BLOCK = 512, GB_SMOOTHER_SUMS = 6 };
-static inline size_t gb_smoother_blocks(int n) { return (size_t)(n + GB_SMOOTHER_BLOCK - 1) / GB_SMOOTHER_BLOCK + 1; }
+static inline int gb_smoother_blocks(int n) { return (n + GB_SMOOTHER_BLOCK - 1) / GB_SMOOTHER_BLOCK; }
 
 /* Which grains the global system moves (s->in_system), from the current contacts. */
 void gb_solver_mark_system(gb_solver *s, const gb_sim *sim);
