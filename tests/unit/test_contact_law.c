@@ -21,9 +21,18 @@ int main(void)
      * du_t = dx.t + r dw + r' dw' (K 25). */
     dX[1] = 1e-6, dX[2] = 2e-6, dX[5] = 3e-6;
     g[0].y += dX[1];
-    gb_pair_update(&p, &world, dX, walls, &m, tan_phi);
+    double stick = gb_pair_update(&p, &world, dX, walls, &m, tan_phi);
     CHECK_NEAR(p.pt, m.kt * (1e-6 + 2e-6 + 3e-6), 1e-6);
     CHECK_NEAR(p.pn, m.kn * (2 - hypot(1.99, 1e-6)), 1e-3);
+    /* below the cap a move is all elastic: du_d = du_t - dpt/kt = 0 (K 26), nothing dissipated
+     * (exactly: computed, du_d was a rounding of either sign) */
+    CHECK(stick == 0);
+    double stick_pt = p.pt;
+    dX[1] = 1.3e-6, dX[2] = 0.7e-6, dX[5] = -0.1e-6;
+    g[0].y += dX[1];
+    stick = gb_pair_update(&p, &world, dX, walls, &m, tan_phi);
+    CHECK_NEAR(p.pt, stick_pt + m.kt * (1.3e-6 + 0.7e-6 - 0.1e-6), 1e-6);
+    CHECK(stick == 0);
 
     /* A large tangential move: |pt| is capped at pn tan(phi) (K 13); the slip beyond the elastic
      * part dissipates mean(pt) x (du_t - dpt/kt) (K 26-28). */
@@ -59,7 +68,12 @@ int main(void)
     CHECK_NEAR(diss, pt_before * pt_before / (2 * m.kt), 1e-12 * diss);
     CHECK_NEAR(p.pn, 0, 0);
     CHECK_NEAR(p.pt, 0, 0);
-    dX[0] = 0.015, dX[1] = 1e-4;
+    /* Staying apart (gb_pair_stays_apart: no update): still no force, nothing dissipated. */
+    dX[0] = -1e-3, dX[1] = 0;
+    g[0].x += dX[0];
+    diss = gb_pair_update(&p, &world, dX, walls, &m, tan_phi);
+    CHECK(p.d <= 0 && diss == 0 && p.pn == 0 && p.pt == 0);
+    dX[0] = 0.015 + 1e-3, dX[1] = 1e-4;
     g[0].x += dX[0];
     g[0].y += dX[1];
     gb_pair_update(&p, &world, dX, walls, &m, tan_phi);
