@@ -129,8 +129,12 @@ void gb_run_record_times(FILE *f, const gb_sim *sim, double total, double close)
         const gb_global_stats *g = gb_solver_statistics(sim);
         if (g) {
             fprintf(f, "  assembly: %.3f   # within solve\n  analysis: %.3f   # within solve, %ld symbolic analyses\n"
-                       "  factorisation: %.3f   # within solve, %ld factorisations\n  linear_solve: %.3f   # within solve\n",
-                    g->assemble, g->analyse, g->analyses, g->factorise, g->factorisations, g->solve);
+                       "  factorisation: %.3f   # within solve, %ld factorisations",
+                    g->assemble, g->analyse, g->analyses, g->factorise, g->factorisations);
+            /* the last one's flops, as the solver counts them (0: not counted, PETSc), against
+             * which the line search weighs a factorisation in smoother steps (line_search.c) */
+            if (g->factor_flops > 0) fprintf(f, ", the last %.3g flops", g->factor_flops);
+            fprintf(f, "\n  linear_solve: %.3f   # within solve\n", g->solve);
         }
     }
     fprintf(f, "  measure: %.3f   # steps.csv's errors, micromechanics.csv, localisation.csv, fields/\n", p.measure);
