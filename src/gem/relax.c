@@ -442,7 +442,8 @@ static double contact_sums(gb_sim *sim, int update)
         contact_terms_of(sim, p, 1, &t);
         add_to_boundary(sim, p->j, &t);
     }
-    for (int k = 0; k < np && update; k++) diss += z->pair_diss[k];
+    if (update)
+        for (int k = 0; k < np; k++) diss += z->pair_diss[k];
     return diss;
 }
 

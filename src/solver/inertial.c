@@ -165,7 +165,7 @@ gb_status gb_solver_inertial(gb_solver *s, gb_sim *sim, const gb_wall_control *w
         for (int b = 0; b < nb; b++) {
             /* block 0 starts from the walls' merit: one block sums as the grains' order would */
             double m = b ? 0 : merit, wk = 0, pw = 0, v2 = 0, a2s = 0, out = 0;
-            for (int i = b * GB_SMOOTHER_BLOCK, e = i + GB_SMOOTHER_BLOCK < n ? i + GB_SMOOTHER_BLOCK : n; i < e; i++) {
+            for (int i = b * GB_SMOOTHER_BLOCK, e = gb_smoother_block_end(b, n); i < e; i++) {
                 const double *F = &sim->scratch.F[3 * i];
                 if (s->in_system[i]) m += F[0] * F[0], m += F[1] * F[1], m += F[2] * F[2];
                 if (!(gb_gem_force2(sim, i) <= a2)) out = 1;
@@ -223,7 +223,7 @@ gb_status gb_solver_inertial(gb_solver *s, gb_sim *sim, const gb_wall_control *w
 #pragma omp parallel for schedule(static) num_threads(threads) if (par)
         for (int b = 0; b < nb; b++) {
             double wk = 0;
-            for (int i = b * GB_SMOOTHER_BLOCK, e = i + GB_SMOOTHER_BLOCK < n ? i + GB_SMOOTHER_BLOCK : n; i < e; i++) {
+            for (int i = b * GB_SMOOTHER_BLOCK, e = gb_smoother_block_end(b, n); i < e; i++) {
                 double *vi = &v[3 * i], *d = &sim->scratch.dX[3 * i];
                 for (int k = 0; k < 3; k++) vi[k] += dt * acc[3 * i + k];
                 advance(vi, d, 3, dt, max_move * sim->state.g[i].r);

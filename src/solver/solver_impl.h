@@ -32,6 +32,8 @@ struct gb_solver {
  * any thread count (and, below a block's size, the grains' order). GB_SMOOTHER_SUMS per block. */
 enum { GB_SMOOTHER_BLOCK = 512, GB_SMOOTHER_SUMS = 6 };
 static inline int gb_smoother_blocks(int n) { return (n + GB_SMOOTHER_BLOCK - 1) / GB_SMOOTHER_BLOCK; }
+/* The end of block b's grains (it starts at b GB_SMOOTHER_BLOCK). */
+static inline int gb_smoother_block_end(int b, int n) { return b < n / GB_SMOOTHER_BLOCK ? (b + 1) * GB_SMOOTHER_BLOCK : n; }
 
 /* Which grains the global system moves (s->in_system), from the current contacts. */
 void gb_solver_mark_system(gb_solver *s, const gb_sim *sim);
