@@ -99,7 +99,7 @@ gb_status gb_solver_line_search_move(gb_solver *s, gb_sim *sim, const gb_wall_co
     /* While Newton's whole steps fail, the smoother goes first and Newton only where it stalls. */
     if (d->smoother_first > 0 && !d->newton_due) {
         s->length = 0;
-        double check = ldexp(d->smoother_first, d->newton_failures > 1 ? d->newton_failures - 1 : 0);
+        double check = ldexp(d->smoother_first, d->newton_failures);
         st = gb_solver_inertial(s, sim, wc, SMOOTHED * m0, MAX_SMOOTHING, check, &stalled, err);
         d->newton_due = stalled;
         return st;
@@ -126,8 +126,12 @@ gb_status gb_solver_line_search_move(gb_solver *s, gb_sim *sim, const gb_wall_co
     }
     /* A failed whole step wasted its factorisation: from the next iteration on (and in the next
      * load steps) the smoother goes first, checked for a stall every so many steps as cost about
-     * one factorisation, twice as many after each further failure in this relaxation (so that
-     * the factorisations of failed steps cost at most about what the smoother does). A new
+     * one factorisation, times 2^k after k failures in this relaxation (so that the
+     * factorisations of failed steps cost at most about what the smoother does). A failure says
+     * the next whole step on this packing, still rearranging, is likely to fail too, so the
+     * doubling starts at the first: the 1e6 peer relaxation (docs/benchmarks.md, session 22)
+     * tried a second whole step after 2 043 smoother steps, which failed, and the smoother
+     * finished 540 steps later; with 4 086 it finished without it (463 -> 268 s). A new
      * relaxation starts from one factorisation's cost again: Newton's steps may work there (a
      * loose packing pressed in 5 steps: after 10 failures in the first, the later steps' stall
      * checks came too seldom for Newton to be tried, 63 699 smoother steps against 14 025). */
