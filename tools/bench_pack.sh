@@ -21,7 +21,9 @@ sizes=${*:-10000 100000}
 threads=${THREADS:-1}
 stress=${STRESS:-} # another target stress than box_growth.yaml's 1.0e4 dyn/cm (its own directories)
 # FRICTION_DEG=f packs with the grains' friction angle f (pack.friction_deg, at most the scene's 25)
-# instead of frictionless, in runs/bench_pack/nN_fF: the porosity then rises with f (docs/packing.md)
+# instead of frictionless, in runs/bench_pack/nN_fF: the porosity then rises with f (docs/packing.md);
+# the scene's solver is then the global one (method: global), which finishes FIRE's settling from
+# twice the accuracy (src/pack/pack.c's SETTLE_FINISHED)
 friction=${FRICTION_DEG:-}
 echo "machine: $(nproc --all) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); $(date -u '+%Y-%m-%d %H:%M'); load average $(cut -d' ' -f1-3 /proc/loadavg); threads $threads, OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-unset}${friction:+, friction while packing $friction deg}"
 echo
@@ -35,7 +37,7 @@ for n in $sizes; do
                                 for (k = 1; k <= 3; k++) s += 1 / (3 * pi * r[k] * r[k]);
                                 printf "%.6g", sqrt(n / s / 0.84) }')
   sed -e "s/right: 24.4/right: $side/; s/top: 24.4/top: $side/; s/count: 1000$/count: $n/" \
-      -e "s/^solver: {/solver: {threads: $threads, /" ${stress:+-e "s/stress: 1.0e4\$/stress: $stress/"} \
+      -e "s/^solver: {/solver: {${friction:+method: global, }threads: $threads, /" ${stress:+-e "s/stress: 1.0e4\$/stress: $stress/"} \
       ${friction:+-e "s/^pack:\$/pack:\n  friction_deg: $friction/"} \
     "$root/validation/packing/box_growth.yaml" > "$d/scene.yaml"
   grep -q "count: $n$" "$d/scene.yaml" && { [ -z "$friction" ] || grep -q "friction_deg: $friction$" "$d/scene.yaml"; } || { echo "bench_pack.sh: could not make the scene for $n discs" >&2; exit 1; }
