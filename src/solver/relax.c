@@ -42,7 +42,7 @@ gb_status gb_solver_create(gb_sim *sim, const gb_solver_settings *set, gb_error 
             s->direction = malloc((3 * n + 2 * np + 2 * GB_N_WALLS) * sizeof(double));
             s->velocity = malloc((3 * n + 2 * np) * sizeof(double));
             s->acceleration = malloc((3 * n + 2 * np) * sizeof(double));
-            s->block_sums = malloc(GB_SMOOTHER_SUMS * ((size_t)gb_smoother_blocks(sim->state.n) + 1) * sizeof(double));
+            s->block_sums = malloc(GB_SMOOTHER_SUMS * (size_t)gb_smoother_blocks((int)n) * sizeof(double));
             ok = ok && s->direction && s->velocity && s->acceleration && s->block_sums;
         }
     }
