@@ -53,8 +53,11 @@ static const double OVERSHOOT = 10, OVER_MAX = 1e-3;
  * finished after some 14 minutes (session 18), where the global solver's Newton step took one
  * iteration, 125 s (session 22: the packing 35 -> 25 minutes, FIRE 51 258 -> 35 773 iterations;
  * 1e5 discs 67-71 -> 46-48 s). So the settling stops at SETTLE_FINISHED times the accuracy where
- * the global solver follows a growth with friction while packing, at the accuracy otherwise:
- * twice the accuracy costs more than it saves in a deposit under its weight (1e3 discs: FIRE
+ * the global solver follows a growth to a stress with friction while packing, at the accuracy
+ * otherwise. A growth to a solid fraction saves little of FIRE there (no free scale to creep with
+ * the contacts' slips: 1e5 discs at 10 degrees to 0.822 and 0.83, settling 11 822 -> 11 524 and
+ * 6 886 -> 5 890 iterations, session 23) and pays the Newton step: 51.3 -> 54.7 s, 34.5 -> 37.1 s,
+ * 150 -> 910 MB. Twice the accuracy costs more than it saves in a deposit under its weight (1e3 discs: FIRE
  * 138 759 -> 135 108 iterations, the solver 47 551 on top, 3.1 s) and leaves a frictionless
  * packing tangential forces (tools/jammed_packing.sh keeps only its grains). The solver at the
  * packing's own angle was far slower still (1e4 at 10 degrees: 44 000-86 000 iterations, or no
@@ -351,7 +354,8 @@ gb_status gb_pack_make(gb_scene *scene, const gb_bem_mesh *mesh, const gb_pack_d
                         [GB_END_WALL] = tan(scene->grain_wall.friction_deg * PI / 180),
                         [GB_END_PARTICLE] = tan(scene->grain_boundary.friction_deg * PI / 180)}};
     P.w = w;
-    int finished = def->protocol == GB_PACK_GROWTH && def->friction_deg > 0 && scene->solver.method == GB_METHOD_GLOBAL;
+    int finished = def->protocol == GB_PACK_GROWTH && def->stress > 0 && def->friction_deg > 0 &&
+                   scene->solver.method == GB_METHOD_GLOBAL;
     P.tol = (finished ? SETTLE_FINISHED : SETTLE) * scene->solver.accuracy;
     res->n = n;
     res->area = P.rg.area;
