@@ -26,7 +26,7 @@ solid=${SOLID_FRACTION:-}
 # FRICTION_DEG=f packs with the grains' friction angle f (pack.friction_deg, at most the scene's 25)
 # instead of frictionless, in runs/bench_pack/nN_fF: the porosity then rises with f (docs/packing.md);
 # the scene's solver is then the global one (method: global), which finishes FIRE's settling from
-# twice the accuracy in a growth to a stress (src/pack/pack.c's SETTLE_FINISHED)
+# 4 times the accuracy in a growth to a stress (src/pack/pack.c's SETTLE_FINISHED)
 friction=${FRICTION_DEG:-}
 echo "machine: $(nproc --all) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); $(date -u '+%Y-%m-%d %H:%M'); load average $(cut -d' ' -f1-3 /proc/loadavg); threads $threads, OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-unset}${friction:+, friction while packing $friction deg}"
 echo

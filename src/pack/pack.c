@@ -28,8 +28,11 @@ static const double PLACE_PHI = 0.35;
 static const double RAMP = 1e-2, STAGE_OVERLAP = 1e-3;
 /* A growth to a stress ends once the stress is passed with every |F| below GROW_FORCE times the
  * contact force of the target (stress times a mean diameter): a jammed state, from which the
- * settling frees the scale under the target. */
-static const double GROW_FORCE = 0.1;
+ * settling frees the scale under the target. Where the global solver finishes (SETTLE_FINISHED
+ * below), at GROW_FORCE_FINISHED: the free relaxation at the overshoot, to 10 times the looser
+ * tolerance, takes over sooner (session 23, 1e5 discs at 10 degrees, settling at 4 times the
+ * accuracy: FIRE 10 059 -> 7 880 iterations, 38.6 -> 32.3 s; at 8 times 8 314 -> 5 620). */
+static const double GROW_FORCE = 0.1, GROW_FORCE_FINISHED = 1;
 /* The growth goes to OVERSHOOT times the target stress, FIRE relaxes the packing there (the scale
  * free, every |F| below OVERSHOOT times the tolerance: the same share of the contact forces), and
  * the settling then decompresses it to the target. A packing relaxes much faster at a higher
@@ -45,7 +48,8 @@ static const double OVERSHOOT = 10, OVER_MAX = 1e-3;
 /* FIRE settles the grains until every |F| is below SETTLE times the scene's accuracy; gembem's
  * solver, with the scene's friction, then checks them (0 iterations) or finishes. Near jamming
  * FIRE's last factors of the force are the slow ones, and a looser settling leaves gembem's solver
- * more to do (session 18, 10 degrees of friction while packing, the scene's 25): 1e4 discs grown
+ * more to do (session 18, 10 degrees of friction while packing, the scene's 25, its default
+ * reference iteration finishing): 1e4 discs grown
  * to 1e-4 kn (seeds 1-6, one thread) took 38.7 s in all settled to the accuracy, 30.0 s to twice
  * it (the solver 21-657 iterations, at most 0.54 s), 32.1 s to 4 times (up to 5 221, 4.2 s), 206 s
  * to 8 times. Which solver finishes matters at scale: Kishino's reference iteration (a scene's
@@ -54,16 +58,21 @@ static const double OVERSHOOT = 10, OVER_MAX = 1e-3;
  * iteration, 125 s (session 22: the packing 35 -> 25 minutes, FIRE 51 258 -> 35 773 iterations;
  * 1e5 discs 67-71 -> 46-48 s). So the settling stops at SETTLE_FINISHED times the accuracy where
  * the global solver follows a growth to a stress with friction while packing, at the accuracy
- * otherwise. A growth to a solid fraction saves little of FIRE there (no free scale to creep with
- * the contacts' slips: 1e5 discs at 10 degrees to 0.822 and 0.83, settling 11 822 -> 11 524 and
- * 6 886 -> 5 890 iterations, session 23) and pays the Newton step: 51.3 -> 54.7 s, 34.5 -> 37.1 s,
- * 150 -> 910 MB. Twice the accuracy costs more than it saves in a deposit under its weight (1e3 discs: FIRE
+ * otherwise; 4 times since session 23 (1e5 discs 50.0 -> 38.6 s; 1e6 with GROW_FORCE_FINISHED
+ * 1 477 -> 751 s). Not further: the solver's balance at the held radii lowers the mean stress (it
+ * opens the weakest contacts FIRE left) by at most 0.04 % from twice the accuracy, 0.17 % from 4
+ * times and 3.4 % from 8 (1e4 discs, seeds 1-6), past the STRESS_TOL a target is held to (1e5
+ * discs from 16 times: 2.1 %). A growth to a solid fraction saves little of FIRE there (no free
+ * scale to creep with the contacts' slips; session 23, twice the accuracy: 1e5 discs at 10 degrees
+ * to 0.822 and 0.83, settling 11 822 -> 11 524 and 6 886 -> 5 890 iterations) and pays the Newton
+ * step: 51.3 -> 54.7 s, 34.5 -> 37.1 s, 150 -> 910 MB. Twice the accuracy costs more than it saves
+ * in a deposit under its weight (1e3 discs: FIRE
  * 138 759 -> 135 108 iterations, the solver 47 551 on top, 3.1 s) and leaves a frictionless
  * packing tangential forces (tools/jammed_packing.sh keeps only its grains). The solver at the
  * packing's own angle was far slower still (1e4 at 10 degrees: 44 000-86 000 iterations, or no
  * convergence in 100 000). The written states' balance, recomputed by tests/pack/check_pack.py,
  * was within the accuracy in each run. */
-static const double SETTLE = 1, SETTLE_FINISHED = 2;
+static const double SETTLE = 1, SETTLE_FINISHED = 4;
 /* A target stress is reached within this share of it (the settling aims at half of it). */
 static const double STRESS_TOL = 0.01;
 
@@ -79,6 +88,7 @@ typedef struct {
     double r_mean;      /* of the drawn radii */
     double grain_area;  /* of the drawn radii */
     double tol;         /* the settling's: SETTLE or SETTLE_FINISHED times the accuracy */
+    double grow_force;  /* GROW_FORCE or GROW_FORCE_FINISHED */
     gb_pack_result *res;
 } packer;
 
@@ -176,7 +186,7 @@ static gb_status protocol(packer *P, gb_error *err)
         /* past the target (OVERSHOOT), relaxed there; a region whose densest packing cannot reach
          * that stress goes to the settling as it is, which refuses a target beyond it */
         double over = fmax(d->stress, fmin(OVERSHOOT * d->stress, OVER_MAX * P->w.kn_gg));
-        double jammed = GROW_FORCE * over * 2 * s * P->r_mean; /* s: the placement's scale */
+        double jammed = P->grow_force * over * 2 * s * P->r_mean; /* s: the placement's scale */
         int capped = 0;
         if ((st = relax(P, &s, 0, over, 1, fmax(P->tol, jammed), 0, GB_PACK_GROW, &capped, err))) return st;
         if (!capped && over > d->stress &&
@@ -357,6 +367,7 @@ gb_status gb_pack_make(gb_scene *scene, const gb_bem_mesh *mesh, const gb_pack_d
     int finished = def->protocol == GB_PACK_GROWTH && def->stress > 0 && def->friction_deg > 0 &&
                    scene->solver.method == GB_METHOD_GLOBAL;
     P.tol = (finished ? SETTLE_FINISHED : SETTLE) * scene->solver.accuracy;
+    P.grow_force = finished ? GROW_FORCE_FINISHED : GROW_FORCE;
     res->n = n;
     res->area = P.rg.area;
     if (!st) st = protocol(&P, err);
