@@ -59,7 +59,7 @@ static const double OVERSHOOT = 10, OVER_MAX = 1e-3;
  * 1e5 discs 67-71 -> 46-48 s). So the settling stops at SETTLE_FINISHED times the accuracy where
  * the global solver follows a growth to a stress with friction while packing, at the accuracy
  * otherwise; 4 times since session 23 (1e5 discs 50.0 -> 38.6 s; 1e6 with GROW_FORCE_FINISHED
- * 1 477 -> 751 s). Not further: the solver's balance at the held radii lowers the mean stress (it
+ * 1 477 -> 744-751 s). Not further: the solver's balance at the held radii lowers the mean stress (it
  * opens the weakest contacts FIRE left) by at most 0.04 % from twice the accuracy, 0.17 % from 4
  * times and 3.4 % from 8 (1e4 discs, seeds 1-6), past the STRESS_TOL a target is held to (1e5
  * discs from 16 times: 2.1 %). A growth to a solid fraction saves little of FIRE there (no free

@@ -2,10 +2,10 @@
 # gembem pack, checked by check_pack.py without gembem's code (its docstring says what), and:
 # a seeded packing made twice gives the same bytes; the solid fraction target is reached to 1e-9
 # (the radii are scaled to it); the stress target is within 2 % of the walls' stresses that gembem
-# run measures from the state (frictionless, and with friction finished by the global solver); a run scene starts from the cavity packing's state; a packing with
-# friction (pack.friction_deg), and one with rolling resistance too, is in balance, inside its cone
-# and looser; 4 500 discs grown on 1 and
-# on 2 threads (solver.threads) give the same bytes, frictionless and with friction.
+# run measures from the state (frictionless, and with friction finished by the global solver); a
+# run scene starts from the cavity packing's state; a packing with friction (pack.friction_deg),
+# and one with rolling resistance too, is in balance, inside its cone and looser; 4 500 discs
+# grown on 1 and on 2 threads (solver.threads) give the same bytes, frictionless and with friction.
 #   run_pack.sh GEMBEM GMSH PYTHON
 set -u
 gembem=$1; gmsh=$2; python=$3; dir=$(cd "$(dirname "$0")" && pwd); root=$dir/../..
