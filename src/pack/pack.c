@@ -47,31 +47,16 @@ static const double GROW_FORCE = 0.1, GROW_FORCE_FINISHED = 1;
 static const double OVERSHOOT = 10, OVER_MAX = 1e-3;
 /* FIRE settles the grains until every |F| is below SETTLE times the scene's accuracy; gembem's
  * solver, with the scene's friction, then checks them (0 iterations) or finishes. Near jamming
- * FIRE's last factors of the force are the slow ones, and a looser settling leaves gembem's solver
- * more to do (session 18, 10 degrees of friction while packing, the scene's 25, its default
- * reference iteration finishing): 1e4 discs grown
- * to 1e-4 kn (seeds 1-6, one thread) took 38.7 s in all settled to the accuracy, 30.0 s to twice
- * it (the solver 21-657 iterations, at most 0.54 s), 32.1 s to 4 times (up to 5 221, 4.2 s), 206 s
- * to 8 times. Which solver finishes matters at scale: Kishino's reference iteration (a scene's
- * default method) carries a disturbance about one grain a sweep, and at 1e6 discs it had not
- * finished after some 14 minutes (session 18), where the global solver's Newton step took one
- * iteration, 125 s (session 22: the packing 35 -> 25 minutes, FIRE 51 258 -> 35 773 iterations;
- * 1e5 discs 67-71 -> 46-48 s). So the settling stops at SETTLE_FINISHED times the accuracy where
- * the global solver follows a growth to a stress with friction while packing, at the accuracy
- * otherwise; 4 times since session 23 (1e5 discs 50.0 -> 38.6 s; 1e6 with GROW_FORCE_FINISHED
- * 1 477 -> 744-751 s). Not further: the solver's balance at the held radii lowers the mean stress (it
- * opens the weakest contacts FIRE left) by at most 0.04 % from twice the accuracy, 0.17 % from 4
- * times and 3.4 % from 8 (1e4 discs, seeds 1-6), past the STRESS_TOL a target is held to (1e5
- * discs from 16 times: 2.1 %). A growth to a solid fraction saves little of FIRE there (no free
- * scale to creep with the contacts' slips; session 23, twice the accuracy: 1e5 discs at 10 degrees
- * to 0.822 and 0.83, settling 11 822 -> 11 524 and 6 886 -> 5 890 iterations) and pays the Newton
- * step: 51.3 -> 54.7 s, 34.5 -> 37.1 s, 150 -> 910 MB. Twice the accuracy costs more than it saves
- * in a deposit under its weight (1e3 discs: FIRE
- * 138 759 -> 135 108 iterations, the solver 47 551 on top, 3.1 s) and leaves a frictionless
- * packing tangential forces (tools/jammed_packing.sh keeps only its grains). The solver at the
- * packing's own angle was far slower still (1e4 at 10 degrees: 44 000-86 000 iterations, or no
- * convergence in 100 000). The written states' balance, recomputed by tests/pack/check_pack.py,
- * was within the accuracy in each run. */
+ * FIRE's last factors of the force are the slow ones (at 10 degrees its grains keep slipping and
+ * recompacting), so where the global solver follows a growth to a stress with friction while
+ * packing, FIRE stops at SETTLE_FINISHED times the accuracy and one Newton step finishes (1e5 discs
+ * 50 -> 32 s, 1e6 24.6 -> 12.4 minutes with GROW_FORCE_FINISHED). Not looser: that step, at the
+ * held radii, lowers the mean stress (it opens the weakest contacts FIRE left), by up to 0.17 %
+ * from 4 times the accuracy but 3.4 % from 8, past STRESS_TOL. Not elsewhere: Kishino's reference
+ * iteration (a scene's default) finishes slowly (1e6 discs: not in 14 minutes); a growth to a solid
+ * fraction saves little of FIRE and pays the Newton step (1e5: 51 -> 55 s, 150 -> 910 MB); a deposit
+ * costs more (1e3 discs: the solver 47 551 iterations on top); a frictionless packing would be left
+ * tangential forces. The measurements: docs/packing.md, Measured, sessions 18, 22 and 23. */
 static const double SETTLE = 1, SETTLE_FINISHED = 4;
 /* A target stress is reached within this share of it (the settling aims at half of it). */
 static const double STRESS_TOL = 0.01;
