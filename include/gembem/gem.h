@@ -103,5 +103,10 @@ void gb_sim_fixing_force(const gb_sim *sim, int i, double F[3]);
 /* The boundary stresses s1 (vertical) and s2 (horizontal) of the walls (K section 4.1), from the
  * forces of the current contacts (recomputed: F, S and the walls' forces). */
 void gb_sim_stress(gb_sim *sim, double *s1, double *s2);
+/* The whole state mapped onto box `to`, of the box's shape, by one uniform scaling of positions,
+ * radii, overlaps and contact forces: a balanced state stays balanced, at the same stress (a
+ * packing's walls that moved to its target stress put back; src/gem/fit_box.c). Refused with a
+ * host or another shape. The forces recomputed. */
+gb_status gb_sim_fit_box(gb_sim *sim, const gb_box *to, gb_error *err);
 
 #endif

@@ -45,7 +45,8 @@ typedef enum {
     GB_STAGE_STRAIN = 1,         /* strain-controlled: de1, de2 per step */
     GB_STAGE_SHEAR_MEAN = 2,     /* constant mean stress shear: d(e1 - e2) per step */
     GB_STAGE_BIAXIAL_STRESS = 3, /* stress-controlled: s1, s2 targets */
-    GB_STAGE_RELAX = 4,          /* nothing imposed: equilibrium from the current placement */
+    GB_STAGE_RELAX = 4,          /* nothing imposed: equilibrium from the current placement (with
+                                  * mean_stress > 0, the packer's: walls at that mean stress) */
     GB_STAGE_HOST_DISPLACEMENT = 5, /* the host's 'displacement' groups moved by increments per step */
     GB_STAGE_HOST_LOAD = 6          /* the host's condition values and remote stress grown per step */
 } gb_stage_kind;
@@ -60,7 +61,7 @@ typedef struct {
     double s1, s2;       /* GB_STAGE_BIAXIAL_STRESS: target vertical and horizontal stress */
     double de1, de2;     /* GB_STAGE_STRAIN: strain increments per step (compression positive) */
     double d_shear;      /* GB_STAGE_SHEAR_MEAN: d(e1 - e2) per step */
-    double mean_stress;  /* GB_STAGE_SHEAR_MEAN: the mean stress held */
+    double mean_stress;  /* GB_STAGE_SHEAR_MEAN, and GB_STAGE_RELAX if > 0: the mean stress held */
     int reset_strain;    /* strains are measured from the box at the start of this stage */
     /* GB_STAGE_HOST_DISPLACEMENT, GB_STAGE_HOST_LOAD: per step, the values of group host_group[k]'s
      * condition grow by host_increment[k] (2 values, or 1 for a pressure or normal displacement),

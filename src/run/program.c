@@ -94,9 +94,11 @@ static void fill_report(gb_sim *sim, gb_step_report *r, double residual)
 }
 
 /* Whether a stage's walls are under stress control, where their residual is part of the test. */
-static int stress_controlled(gb_stage_kind k)
+static int stress_controlled(const gb_stage *sg)
 {
-    return k == GB_STAGE_ISOTROPIC || k == GB_STAGE_BIAXIAL_STRESS || k == GB_STAGE_SHEAR_MEAN;
+    gb_stage_kind k = sg->kind;
+    return k == GB_STAGE_ISOTROPIC || k == GB_STAGE_BIAXIAL_STRESS || k == GB_STAGE_SHEAR_MEAN ||
+           (k == GB_STAGE_RELAX && sg->mean_stress > 0);
 }
 
 /* The loads of a sub-step of size h: the host's loads grow (grains and cavity held: f0 changes),
@@ -197,6 +199,9 @@ static gb_status load_step(gb_sim *sim, const gb_stage *sg, double *max_force, d
         }
         wc.mode = GB_WALLS_MEAN;
         wc.mean = sg->mean_stress;
+        break;
+    case GB_STAGE_RELAX: /* a packing's equilibrium at its target stress (src/pack/pack.c) */
+        if (sg->mean_stress > 0) wc.mode = GB_WALLS_MEAN, wc.mean = sg->mean_stress;
         break;
     default: break;
     }
@@ -400,7 +405,7 @@ gb_status gb_sim_run(gb_sim *sim, gb_run_output *out, gb_step_fn on_step, void *
             rep.iterations = sim->cur.iters;
             rep.substeps = sim->cur.substeps;
             rep.work = gb_solver_work_minus(gb_solver_work_done(sim), sim->cur.work0);
-            fill_report(sim, &rep, stress_controlled(sg->kind) ? residual : NAN);
+            fill_report(sim, &rep, stress_controlled(sg) ? residual : NAN);
             add_step_work(sim);
             rep.seconds = gb_clock_seconds() - t0;
             gb_sim_position at = {s, k, step, {start[0], start[1]}, 0};

@@ -7,7 +7,7 @@ written grains and the region's area (shoelace), the force and moment balance of
 the written contact forces, and that pack_info.yaml reports these numbers.
 
   check_pack.py DIR (--box L R B T | --msh FILE --group NAME) --max-overlap F --accuracy A
-                [--weight W] [--solid-fraction PHI --tolerance T]
+                [--weight W] [--solid-fraction PHI --tolerance T] [--stress S --stress-tolerance T]
 """
 import argparse
 import csv
@@ -98,6 +98,9 @@ def main():
     p.add_argument("--tolerance", type=float, default=1e-9)
     p.add_argument("--friction-deg", type=float, help="packed with this friction: every contact inside its cone, "
                    "and most contacts carrying a tangential force")
+    p.add_argument("--stress", type=float, help="in a box: the target mean stress, against Love's from the "
+                   "written contacts")
+    p.add_argument("--stress-tolerance", type=float, default=0.01, help="relative, for --stress")
     p.add_argument("--eta", type=float, help="with --friction-deg: the grains' rolling limit, every rolling moment "
                    "within it")
     a = p.parse_args()
@@ -139,10 +142,18 @@ def main():
     # (in force units: pt), and a rolling moment mr turns i by -mr and j by +mr (over their radius,
     # in the same units). Plus the weight. Until session 11 this check added +pt t to i: right
     # only while every pt was 0 (the frictionless settling), 260 dyn off once friction acted.
+    # Love's mean stress, (1/2A) sum of f . l over the contacts, l from a grain's centre to the other's
+    # (pn |l|: the tangential force is normal to l) or to the wall (the centre's distance to it)
     F = [[0.0, -a.weight * math.pi * r * r, 0.0] for _, _, r in g]
     gg = bd = 0
+    virial = 0.0
     for c in csv.DictReader(open(a.dir + "/state_contacts.csv")):
         i, pn, pt, nx, ny = int(c["i"]), float(c["pn"]), float(c["pt"]), float(c["nx"]), float(c["ny"])
+        xi, yi = g[i][0], g[i][1]
+        if c["j"].isdigit():
+            virial += pn * math.hypot(g[int(c["j"])][0] - xi, g[int(c["j"])][1] - yi)
+        elif a.box:
+            virial += pn * {"left": xi - L, "right": R - xi, "bottom": yi - B, "top": T - yi}[c["j"]]
         mr = float(c.get("mr") or 0)  # rolling resistance: mr on i, -mr on j (a moment: over the radius)
         fx, fy = -(pn * nx + pt * -ny), -(pn * ny + pt * nx)
         F[i][0] += fx
@@ -178,6 +189,11 @@ def main():
         fails.append(f"a grain is out of balance by {fmax:.4g}, more than the accuracy {a.accuracy}")
     if inf["contacts"] != f"{{grain_grain: {gg}, boundary: {bd}}}":
         fails.append(f"contacts {gg} + {bd} written, {inf['contacts']} reported")
+    if a.stress is not None:
+        sigma = virial / (2 * area)
+        print(f"{a.dir}: mean stress {sigma:.6g} from the contacts (Love), target {a.stress:g}")
+        if not abs(sigma / a.stress - 1) <= a.stress_tolerance:
+            fails.append(f"mean stress {sigma:.6g}, target {a.stress:g} +- {100 * a.stress_tolerance:g} %")
     z = (2 * gg + bd) / len(g)
     if abs(z - float(inf["coordination"])) > 1e-12:
         fails.append(f"coordination {z} from the contacts, {inf['coordination']} reported")

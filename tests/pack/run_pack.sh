@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # gembem pack, checked by check_pack.py without gembem's code (its docstring says what), and:
 # a seeded packing made twice gives the same bytes; the solid fraction target is reached to 1e-9
-# (the radii are scaled to it); the stress target is within 2 % of the walls' stresses that gembem
-# run measures from the state (frictionless, and with friction finished by the global solver); a
+# (the radii are scaled to it); the stress target is within 1 % of Love's stress from the written
+# contacts, and within 2 % (1 % with friction finished by the global solver, whose walls follow the
+# target) of the walls' stresses that gembem run measures from the state; a
 # run scene starts from the cavity packing's state; a packing with friction (pack.friction_deg),
 # and one with rolling resistance too, is in balance, inside its cone and looser; 4 500 discs
 # grown on 1 and on 2 threads (solver.threads) give the same bytes, frictionless and with friction.
@@ -38,20 +39,21 @@ check growth --msh irregular.msh --max-overlap 0.05 --accuracy 0.001 --solid-fra
 run pack box_growth.yaml -o box
 check box --box 0 10 0 10 --max-overlap 0.02 --accuracy 100 --solid-fraction 0.82
 run pack box_stress.yaml -o stress
-check stress --box 0 10 0 10 --max-overlap 0.05 --accuracy 100
+check stress --box 0 10 0 10 --max-overlap 0.05 --accuracy 100 --stress 1e5
 # the walls' mean stress that gembem run measures from packing DIR's state, against the target 1e5
+# to TOLERANCE (relative)
 walls_stress() {
   scene_edit box_stress_run.yaml -o $1_run.yaml --set initial_state=$1/state.yaml
   run run $1_run.yaml -o $1_run
-  "$python" - "$1" <<'PY' || fail=$((fail + 1))
+  "$python" - "$1" "$2" <<'PY' || fail=$((fail + 1))
 import csv, sys
 row = next(csv.DictReader(open(f"{sys.argv[1]}_run/steps.csv")))
 p = 0.5 * (float(row["s1"]) + float(row["s2"]))
-print(f"{sys.argv[1]}: the walls' mean stress {p:.6g}, target 1e5")
-sys.exit(0 if abs(p - 1e5) <= 0.02e5 else 1)
+print(f"{sys.argv[1]}: the walls' mean stress {p:.6g}, target 1e5 +- {100 * float(sys.argv[2]):g} %")
+sys.exit(0 if abs(p / 1e5 - 1) <= float(sys.argv[2]) else 1)
 PY
 }
-walls_stress stress
+walls_stress stress 0.02
 # pack.friction_deg: the grains packed with friction are in balance with their tangential forces
 # (moments too, check_pack.py), inside the cone of the packing's angle, and looser than the same
 # seed packed frictionless (frictional discs jam at a lower solid fraction: docs/packing.md)
@@ -65,14 +67,15 @@ phi = {d: float(next(l for l in open(d + "/pack_info.yaml") if l.startswith("sol
 print(f"friction: solid fraction {phi['friction']:.4f} packed at 20 degrees, {phi['stress']:.4f} frictionless")
 sys.exit(0 if phi["friction"] < phi["stress"] - 0.01 else 1)
 PY
-# with the global solver, FIRE stops at 4 times the accuracy and the solver takes the last factor with
-# the scene's friction (src/pack/pack.c's SETTLE_FINISHED): the written state in balance all the same,
-# each tangential force within the scene's cone (25 degrees), where the solver leaves them, and the
-# target stress kept by the solver's last moves
+# with the global solver, FIRE stops at 8 times the accuracy and the solver takes the last factor with
+# the scene's friction and the walls at the target stress, the state then mapped back onto the box
+# (src/pack/pack.c's SETTLE_HELD, gb_sim_fit_box): the written state in balance all the same, each
+# tangential force within the scene's cone (25 degrees), where the solver leaves them, its solid
+# fraction as reported, and both Love's and the walls' stress at the target
 scene_edit friction.yaml -o friction_global.yaml --add solver.method=global
 run pack friction_global.yaml -o friction_global
-check friction_global --box 0 10 0 10 --max-overlap 0.05 --accuracy 100 --friction-deg 25
-walls_stress friction_global
+check friction_global --box 0 10 0 10 --max-overlap 0.05 --accuracy 100 --friction-deg 25 --stress 1e5
+walls_stress friction_global 0.01
 # with rolling resistance too (its moments in the balance, each within eta R* pn)
 scene_edit friction.yaml -o rolling.yaml --add materials.grain_grain.rolling='{kr: 1.0e6, eta: 0.2}'
 run pack rolling.yaml -o rolling
