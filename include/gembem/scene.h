@@ -149,6 +149,7 @@ typedef struct {
 /* The global solver's Levenberg-Marquardt damping as a state file left it, so that a restart
  * follows the path of the run it continues. */
 #define GB_SOLVER_HISTORY 10
+#define GB_SOLVER_MU_START 1e-6 /* the damping a solver starts from, without a state's */
 typedef struct {
     int present;
     double mu;

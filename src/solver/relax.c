@@ -23,7 +23,7 @@ gb_status gb_solver_create(gb_sim *sim, const gb_solver_settings *set, gb_error 
     gb_solver *s = calloc(1, sizeof *s);
     if (!s) return gb_fail(err, GB_ENOMEM, "out of memory");
     s->set = set;
-    s->damping.mu = 1e-6;
+    s->damping.mu = GB_SOLVER_MU_START;
     s->damping.best = INFINITY; /* reset at every relaxation: a restart needs no more */
     const gb_solver_state *from = &sim->scene->restart.solver;
     if (from->present) { /* a restart continues the damping of the run it continues */
