@@ -54,7 +54,7 @@ static const double OVERSHOOT = 10, OVER_MAX = 1e-3;
  * FIRE leaves the walls' stress below Love's (by 6.6 % at 1e5 discs from 8 times the accuracy) and
  * the solver's balance at the held radii lowers Love's, by up to 0.17 % from 4 times but 3.4 % from
  * 8, past STRESS_TOL. In a box without body force the walls follow the target stress instead
- * (solve_at_stress), and FIRE stops at SETTLE_HELD (1e6 discs 12.4 -> 11.3 minutes, both stresses
+ * (solve_at_stress), and FIRE stops at SETTLE_HELD (1e6 discs 12.4 -> 11.0 minutes, both stresses
  * within 0.5 %). Not elsewhere: Kishino's reference
  * iteration (a scene's default) finishes slowly (1e6 discs: not in 14 minutes); a growth to a solid
  * fraction saves little of FIRE and pays the Newton step (1e5: 51 -> 55 s, 150 -> 910 MB); a deposit
@@ -297,9 +297,9 @@ enum { EQUILIBRIUM_PASSES = 6 };
  * (seeds 1-3; for seed 2 it raised it, and the smoother started from FIRE's state all the same) and
  * at 1e6 (contacts that open, close and slip under it), so the solver's own rule after a failed
  * whole step (src/solver/line_search.c) is taken from the start: its smoother goes first, checked
- * for a stall every SMOOTHER_FIRST steps (some two factorisations' worth at 1e6 discs), and Newton
- * only where it stalls. 1e5 discs, seeds 1-3: 36.9, 29.0, 28.5 -> 32.9, 27.4, 25.6 s (seed 2 with no
- * factorisation: 864 -> 173 MB); 1e6: 671 -> 661 s (a stall, then Newton's step as before). */
+ * for a stall every SMOOTHER_FIRST steps (about a factorisation's worth at 1e6 discs), and Newton
+ * only where it stalls. 1e5 discs, seeds 1-3: 36.9, 29.0, 28.5 -> 33.3, 27.4, 25.6 s (seed 2 with no
+ * factorisation: 864 -> 173 MB); 1e6: 671 -> 660 s (a stall, then Newton's step as before). */
 static const double SMOOTHER_FIRST = 1000;
 static gb_status solve_at_stress(packer *P, gb_sim *sim, const gb_box *asked, gb_error *err)
 {
@@ -351,9 +351,11 @@ static gb_status equilibrium(packer *P, const gb_bem_mesh *mesh, gb_sim **sim, g
     if (!(s->stages = calloc(1, sizeof *s->stages))) return gb_fail(err, GB_ENOMEM, "out of memory");
     s->n_stages = 1;
     s->stages[0].kind = GB_STAGE_RELAX, s->stages[0].steps = 1;
-    if (P->hold_stress) s->stages[0].mean_stress = P->d->stress;
-    if (P->hold_stress) /* the solver as it starts, but its smoother first */
+    if (P->hold_stress) {
+        s->stages[0].mean_stress = P->d->stress;
+        /* the solver as it starts, but its smoother first */
         s->restart.solver = (gb_solver_state){.present = 1, .mu = GB_SOLVER_MU_START, .smoother_first = SMOOTHER_FIRST};
+    }
     s->checkpoint_every = 0;
     gb_box asked = s->box;
     st = gb_scene_admit(s, mesh, err);
