@@ -297,7 +297,8 @@ enum { EQUILIBRIUM_PASSES = 6 };
  * (seeds 1-3; for seed 2 it raised it, and the smoother started from FIRE's state all the same) and
  * at 1e6 (contacts that open, close and slip under it), so the solver's own rule after a failed
  * whole step (src/solver/line_search.c) is taken from the start: its smoother goes first, checked
- * for a stall every SMOOTHER_FIRST steps (about a factorisation's worth at 1e6 discs), and Newton
+ * for a stall every SMOOTHER_FIRST steps (at 1e6 discs some 100 s on one thread at session 19's
+ * rate, 0.11 s a step; Newton's analysis and factorisation there: 66 s), and Newton
  * only where it stalls. 1e5 discs, seeds 1-3: 36.9, 29.0, 28.5 -> 33.3, 27.4, 25.6 s (seed 2 with no
  * factorisation: 864 -> 173 MB); 1e6: 671 -> 660 s (a stall, then Newton's step as before). */
 static const double SMOOTHER_FIRST = 1000;
