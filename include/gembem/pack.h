@@ -58,6 +58,8 @@ typedef struct {
     long fire_iterations[GB_PACK_PHASES];
     double seconds[GB_PACK_PHASES];
     long equilibrium_iterations;  /* gembem's solver, friction on */
+    gb_solver_work equilibrium_work; /* its smoother's steps and factorisations (global solver) */
+    double equilibrium_linear_seconds; /* of them, the global system's assembly, analysis, factorisation and solve */
     double max_fixing_force;      /* largest |F| of the final state (K 14) */
     int contacts_grains, contacts_boundary; /* force-carrying: between grains, with walls or particles */
     double coordination;          /* (2 contacts_grains + contacts_boundary) / n */

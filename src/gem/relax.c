@@ -29,43 +29,39 @@ double gb_sim_tan_phi(const gb_sim *sim, int j)
     }
 }
 
-/* What a contact adds to its ends (K 5, 8, 25), times sign. */
+/* What a contact adds to its ends (K 5, 8, 25). */
 typedef struct {
     double c, s, kn, kt, kr, pn, pt, mr, fx, fy, s00, s01, s11;
-    double kn_mat, kr_mat; /* the material's, for one[] */
     int rolling;
 } contact_terms;
 
-static inline void contact_terms_of(const gb_sim *sim, const gb_pair *p, double sign, contact_terms *t)
+static inline void contact_terms_of(const gb_sim *sim, const gb_pair *p, contact_terms *t)
 {
     const gb_material *mat = gb_sim_material(sim, p->j);
-    double c = p->nx, s = p->ny, kn = sign * mat->kn, kt = sign * mat->kt;
+    double c = p->nx, s = p->ny, kn = mat->kn, kt = mat->kt;
     /* (K 8): S = sum T^t S_c T with T = [[c, s, 0], [-s, c, 1]] (K 2) */
     t->c = c, t->s = s, t->kn = kn, t->kt = kt;
     t->s00 = kn * c * c + kt * s * s, t->s01 = (kn - kt) * c * s, t->s11 = kn * s * s + kt * c * c;
-    t->pn = sign * p->pn, t->pt = sign * p->pt;
+    t->pn = p->pn, t->pt = p->pt;
     gb_pair_force(p, t->pn, t->pt, &t->fx, &t->fy);
     /* Rolling resistance (docs/method.md section 3.1): the moment mr on i, -mr on j; in the DOF
      * r w its stiffness is kr / r^2, kept at the cap as kt is (K 8). */
-    t->mr = sign * p->mr, t->kr = sign * mat->kr;
+    t->mr = p->mr, t->kr = mat->kr;
     t->rolling = mat->kr > 0; /* without, no divisions: they are a good part of a contact's cost */
-    t->kn_mat = mat->kn, t->kr_mat = mat->kr;
 }
 
 /* A contact's terms added to grain g, its side i (side 1) or j (side -1: B's block T' = [[-c, -s,
  * 0], [s, -c, 1]] (K 25), the same moment, the opposite force): negating is exact, so a grain gets
  * the same bits from either end. */
-static inline void add_to_grain(gb_sim *sim, int g, const contact_terms *t, double side, int count, int set_one)
+static inline void add_to_grain(gb_sim *sim, int g, const contact_terms *t, double side)
 {
     double r = sim->state.g[g].r, *F = &sim->scratch.F[3 * g], *S = &sim->scratch.S[6 * g];
     F[0] += side * t->fx, F[1] += side * t->fy, F[2] += t->rolling ? t->pt - side * t->mr / r : t->pt;
     S[0] += t->s00, S[1] += t->s01, S[2] += -side * t->kt * t->s, S[3] += t->s11, S[4] += side * t->kt * t->c;
     S[5] += t->rolling ? t->kt + t->kr / (r * r) : t->kt;
-    sim->scratch.nc[g] += count;
-    if (set_one) {
-        double *one = &sim->scratch.one[GB_ONE * g];
-        one[0] = side * t->c, one[1] = side * t->s, one[2] = t->kn_mat, one[3] = t->kr_mat;
-    }
+    sim->scratch.nc[g]++;
+    double *one = &sim->scratch.one[GB_ONE * g];
+    one[0] = side * t->c, one[1] = side * t->s, one[2] = t->kn, one[3] = t->kr;
 }
 
 /* A contact's terms added to its other end when that is a boundary particle or a wall. */
@@ -81,16 +77,6 @@ static inline void add_to_boundary(gb_sim *sim, int j, const contact_terms *t)
         sim->state.wall_force[w] += t->pn;
         sim->scratch.wall_k[w] += t->kn;
     }
-}
-
-void gb_gem_add_contact(gb_sim *sim, const gb_pair *p, double sign)
-{
-    contact_terms t;
-    contact_terms_of(sim, p, sign, &t);
-    int count = sign > 0 ? 1 : -1;
-    add_to_grain(sim, p->i, &t, 1, count, sign > 0);
-    if (p->j >= 0) add_to_grain(sim, p->j, &t, -1, count, sign > 0);
-    else add_to_boundary(sim, p->j, &t);
 }
 
 /* The forces before any contact: the body forces (K 5: F = sum T^t P - B), and on boundary
@@ -376,8 +362,10 @@ static int chunks(gb_sim *sim)
     int m = (n + width - 1) / width;
     if (m + 1 > z->chunk_cap) {
         int *q = realloc(z->chunk, ((size_t)m + 1) * sizeof(int));
-        if (!q) return 0;
-        z->chunk = q, z->chunk_cap = m + 1;
+        if (q) z->chunk = q;
+        double *a = q ? realloc(z->chunk_affine, 3 * ((size_t)m + 1) * sizeof(double)) : NULL;
+        if (!a) return 0;
+        z->chunk_affine = a, z->chunk_cap = m + 1;
     }
     if (edges > z->edge_cap) {
         int *q = realloc(z->edge, (size_t)edges * sizeof(int));
@@ -396,13 +384,28 @@ static int chunks(gb_sim *sim)
     return 1;
 }
 
-/* A contact's terms added to its grains (both when j is a grain), not to walls or particles. */
-static inline void add_to_grains(gb_sim *sim, const gb_pair *p)
+/* A touching contact's terms of sim->scratch.affine_k added to k. */
+static inline void add_affine(const gb_sim *sim, const gb_pair *p, const contact_terms *t, double k[3])
+{
+    const gb_grain *g = sim->state.g;
+    double lx = p->j >= 0 ? g[p->j].x - g[p->i].x : g[p->i].r * t->c;
+    double ly = p->j >= 0 ? g[p->j].y - g[p->i].y : g[p->i].r * t->s;
+    double cx = t->c * lx, sx = t->s * lx, cy = t->c * ly, sy = t->s * ly; /* t = (-s, c) */
+    k[0] += t->kn * cx * cx + t->kt * sx * sx;
+    k[1] += t->kn * sy * sy + t->kt * cy * cy;
+    k[2] += (t->kn - t->kt) * cx * sy;
+}
+
+/* A touching contact's force and stiffness (K 5, 8, 25) added to its grains (both when j is a
+ * grain), with `boundary` to its wall or particle too, and its affine terms to k. */
+static inline void add_contact(gb_sim *sim, const gb_pair *p, int boundary, double k[3])
 {
     contact_terms t;
-    contact_terms_of(sim, p, 1, &t);
-    add_to_grain(sim, p->i, &t, 1, 1, 1);
-    if (p->j >= 0) add_to_grain(sim, p->j, &t, -1, 1, 1);
+    contact_terms_of(sim, p, &t);
+    add_to_grain(sim, p->i, &t, 1);
+    if (p->j >= 0) add_to_grain(sim, p->j, &t, -1);
+    else if (boundary) add_to_boundary(sim, p->j, &t);
+    add_affine(sim, p, &t, k);
 }
 
 /* The forces and stiffnesses of every contact (K 5, 8), with `update` each pair first updated to
@@ -413,12 +416,13 @@ static double contact_sums(gb_sim *sim, int update)
     gb_sim_scratch *z = &sim->scratch;
     gb_pair *P = sim->state.pairs.p;
     int n = sim->state.n, np = sim->state.pairs.n, threads = sim->scene->solver.threads;
-    double diss = 0;
+    double diss = 0, *ka = z->affine_k;
+    ka[0] = ka[1] = ka[2] = 0;
     if (n < GB_PARALLEL_GRAINS || !chunks(sim)) {
         reset_forces(sim);
         for (int k = 0; k < np; k++) {
             if (update) update_pair(sim, k), diss += z->pair_diss[k];
-            if (P[k].d > 0) gb_gem_add_contact(sim, &P[k], 1);
+            if (P[k].d > 0) add_contact(sim, &P[k], 1, ka);
         }
         return diss;
     }
@@ -429,17 +433,23 @@ static double contact_sums(gb_sim *sim, int update)
     for (int first = 0; first < 2; first++) {
         int half = (z->n_chunks - first + 1) / 2;
 #pragma omp parallel for schedule(static) num_threads(threads) if (par)
-        for (int q = 0; q < half; q++)
-            for (int k = z->chunk[first + 2 * q]; k < z->chunk[first + 2 * q + 1]; k++) {
+        for (int q = 0; q < half; q++) {
+            int c = first + 2 * q;
+            double *kc = &z->chunk_affine[3 * c];
+            kc[0] = kc[1] = kc[2] = 0;
+            for (int k = z->chunk[c]; k < z->chunk[c + 1]; k++) {
                 if (update) update_pair(sim, k);
-                if (P[k].d > 0) add_to_grains(sim, &P[k]);
+                if (P[k].d > 0) add_contact(sim, &P[k], 0, kc);
             }
+        }
     }
+    for (int c = 0; c < z->n_chunks; c++)
+        for (int q = 0; q < 3; q++) ka[q] += z->chunk_affine[3 * c + q];
     for (int e = 0; e < z->n_edges; e++) {
         const gb_pair *p = &P[z->edge[e]];
         if (!(p->d > 0)) continue;
         contact_terms t;
-        contact_terms_of(sim, p, 1, &t);
+        contact_terms_of(sim, p, &t);
         add_to_boundary(sim, p->j, &t);
     }
     if (update)

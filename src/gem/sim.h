@@ -35,6 +35,13 @@ typedef struct {
      * built for the list of generation chunk_of. */
     int *chunk, n_chunks, chunk_cap, *edge, n_edges, edge_cap;
     long chunk_of;
+    double *chunk_affine; /* each chunk's 3 sums of affine_k (chunk_cap of them) */
+    /* The touching contacts' stiffness along the box's uniform strains, sum kn (n.E l)^2 + kt (t.E l)^2
+     * for E = diag(1, 0) and diag(0, 1), and their cross term (l the branch vector: to the other
+     * centre, or r n to a wall): kxx, kyy, kxy. Summed with the forces (the smoother's servo walls,
+     * src/solver/inertial.c, read it at every step: a pass of its own over the pairs cost a quarter
+     * of a 1e5-disc smoother step). */
+    double affine_k[3];
     double wall_k[GB_N_WALLS];     /* wall contact stiffness: sum of kn of its contacts */
     double wall_dx[GB_N_WALLS][2]; /* wall translation of the current iteration */
     double *bp_F;       /* fixing force of each boundary particle: host force K u + f0 minus contacts */
@@ -196,9 +203,6 @@ static inline double gb_gem_grain_work(const gb_sim *sim, int i)
     return F[0] * d[0] + F[1] * d[1] + F[2] * d[2];
 }
 
-/* Adds sign times a contact's force and stiffness (K 5, 8, 25) to its two ends: grains' F, S and
- * contact counts (and one[] if sign > 0), a particle's force and stiffness, a wall's. */
-void gb_gem_add_contact(gb_sim *sim, const gb_pair *p, double sign);
 
 /* Moves grains by dX, boundary particles by bp.dx and walls by wall_dx simultaneously, then updates
  * every contact. */

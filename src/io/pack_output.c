@@ -48,6 +48,9 @@ static void write_info(FILE *f, const char *command, const gb_scene *s, const gb
     fprintf(f, "fire_iterations: {grow: %ld, settle: %ld}\nequilibrium_iterations: %ld   # gembem's solver, "
                "the scene's friction\n", r->fire_iterations[GB_PACK_GROW], r->fire_iterations[GB_PACK_SETTLE],
             r->equilibrium_iterations);
+    fprintf(f, "equilibrium_work: {smoother_steps: %ld, factorisations: %ld, linear_seconds: %.3f}   # the global "
+               "solver's; linear: its system's assembly, analysis, factorisation and solve\n",
+            r->equilibrium_work.sweeps, r->equilibrium_work.factorisations, r->equilibrium_linear_seconds);
     double total = 0;
     for (int k = 0; k < GB_PACK_PHASES; k++) total += r->seconds[k];
     fprintf(f, "seconds: {place: %.3f, grow: %.3f, settle: %.3f, equilibrium: %.3f, total: %.3f}\n",

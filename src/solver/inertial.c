@@ -80,20 +80,9 @@ static affine_move affine_walls(gb_sim *sim, const gb_wall_control *wc, double c
     affine_move a = {0, 0, 0, 0};
     if (wc->mode != GB_WALLS_STRESS && wc->mode != GB_WALLS_MEAN) return a;
     const gb_box *b = &sim->state.box;
-    const gb_grain *g = sim->state.g;
-    const gb_pair_set *P = &sim->state.pairs;
-    double W = b->right - b->left, H = b->top - b->bottom, kxx = 0, kyy = 0, kxy = 0;
-    for (int k = 0; k < P->n; k++) {
-        const gb_pair *p = &P->p[k];
-        if (!(p->d > 0)) continue;
-        const gb_material *m = gb_sim_material(sim, p->j);
-        double lx = p->j >= 0 ? g[p->j].x - g[p->i].x : g[p->i].r * p->nx;
-        double ly = p->j >= 0 ? g[p->j].y - g[p->i].y : g[p->i].r * p->ny;
-        double nx = p->nx, ny = p->ny; /* t = (-ny, nx) */
-        kxx += m->kn * (nx * lx) * (nx * lx) + m->kt * (ny * lx) * (ny * lx);
-        kyy += m->kn * (ny * ly) * (ny * ly) + m->kt * (nx * ly) * (nx * ly);
-        kxy += (m->kn - m->kt) * nx * ny * lx * ly;
-    }
+    /* summed with the forces (src/gem/relax.c) */
+    double W = b->right - b->left, H = b->top - b->bottom, kxx = sim->scratch.affine_k[0],
+           kyy = sim->scratch.affine_k[1], kxy = sim->scratch.affine_k[2];
     /* the walls' own moves (inward positive): grains held */
     double own[2] = {sim->scratch.wall_dx[GB_WALL_LEFT][0], sim->scratch.wall_dx[GB_WALL_BOTTOM][1]}, move[2];
     if (wc->mode == GB_WALLS_STRESS) {
