@@ -237,10 +237,12 @@ static inline void gb_pair_law(gb_pair *p, const gb_world *w, int was_contact, d
         return;
     }
     p->pn = mat->kn * p->d;
-    p->pt = was_contact ? p->pt + mat->kt * du_t : 0.0;
+    double pt = was_contact ? p->pt + mat->kt * du_t : 0.0;
     double limit = p->pn * tan_phi + mat->cohesion; /* (K 13) */
-    if (p->pt > limit) p->pt = limit;
-    else if (p->pt < -limit) p->pt = -limit;
+    /* the cap as min and max without branches (slipping and sticking contacts mix unpredictably),
+     * a NaN kept: MINSD and MAXSD return their second operand when either is NaN */
+    pt = limit < pt ? limit : pt;
+    p->pt = -limit > pt ? -limit : pt;
     if (mat->kr > 0) {
         /* Rolling resistance (docs/method.md section 3.1): the same incremental law on the moment. */
         p->mr = was_contact ? p->mr - mat->kr * dth : 0.0;
