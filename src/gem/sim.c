@@ -31,7 +31,7 @@ void gb_gem_problem_free(gb_sim *sim)
     gb_particles_free(&sim->bp);
     free(sim->scratch.bp_F), free(sim->scratch.bp_S);
     free(sim->scratch.pair_diss);
-    free(sim->scratch.chunk), free(sim->scratch.edge), free(sim->scratch.chunk_affine);
+    free(sim->scratch.chunk), free(sim->scratch.edge), free(sim->scratch.chunk_sums);
     free(sim);
 }
 

@@ -28,14 +28,14 @@ typedef struct {
     int *nc;            /* contacts per grain */
     double *one;        /* per grain, GB_ONE values of its last contact: normal towards the other side, kn, kr */
 #define GB_ONE 4
-    double *pair_diss;  /* a move's contact update: the energy each pair dissipated */
+    double *pair_diss;  /* a move's contact update (the reference iteration's): the energy each pair dissipated */
     int pair_diss_cap;
     /* The pair list in chunks, for the contacts' sums on threads (src/gem/relax.c): chunk c's
      * pairs are [chunk[c], chunk[c + 1]); edge[0 .. n_edges) the pairs with a wall or a particle;
      * built for the list of generation chunk_of. */
     int *chunk, n_chunks, chunk_cap, *edge, n_edges, edge_cap;
     long chunk_of;
-    double *chunk_affine; /* each chunk's 3 sums of affine_k (chunk_cap of them) */
+    double *chunk_sums;   /* each chunk's sums (src/gem/relax.c's CHUNK_SUMS; chunk_cap of them) */
     /* The touching contacts' stiffness along the box's uniform strains, sum kn (n.E l)^2 + kt (t.E l)^2
      * for E = diag(1, 0) and diag(0, 1), and their cross term (l the branch vector: to the other
      * centre, or r n to a wall): kxx, kyy, kxy. Summed with the forces (the smoother's servo walls,
