@@ -58,35 +58,6 @@ void gb_particles_free(gb_particles *bp)
     memset(bp, 0, sizeof *bp);
 }
 
-
-double gb_pair_update(gb_pair *p, const gb_world *w, const double *dX, const double *wall_dx,
-                      const gb_material *mat, double tan_phi)
-{
-    if (gb_pair_stays_apart(p, w)) return 0;
-    int was_contact = p->d > 0;
-    double du_t, dth, pt0 = p->pt, mr0 = p->mr, diss = 0;
-    gb_pair_moves(p, w, dX, wall_dx, mat, &du_t, &dth);
-    gb_pair_law(p, w, was_contact, du_t, dth, mat, tan_phi);
-    if (!(p->d > 0)) {
-        /* the tangential (and rolling) spring's energy is lost */
-        if (was_contact && mat->kt > 0) diss = pt0 * pt0 / (2 * mat->kt);
-        if (was_contact && mat->kr > 0) diss += mr0 * mr0 / (2 * mat->kr);
-    } else {
-        /* Only a contact the cap held slips: where pt followed its spring (the law's pt0 + kt du_t,
-         * the same bits) du_d is zero, and not computed (a division: a tenth of this function's
-         * time in the 1e6 peer relaxation). */
-        if (was_contact && mat->kt > 0 && pt0 != 0 && p->pt != 0 && p->pt != pt0 + mat->kt * du_t) {
-            double slip = du_t - (p->pt - pt0) / mat->kt; /* (K 26, 27) */
-            diss = 0.5 * (pt0 + p->pt) * slip;            /* (K 28) */
-        }
-        if (mat->kr > 0 && was_contact && mr0 != 0 && p->mr != 0)
-            diss += 0.5 * (mr0 + p->mr) * (-dth - (p->mr - mr0) / mat->kr);
-    }
-    p->diss += diss;
-    return diss;
-}
-
-
 static gb_status grow(void **buf, int *cap, int need, size_t size, gb_error *err)
 {
     if (need <= *cap) return GB_OK;
