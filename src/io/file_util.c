@@ -162,3 +162,34 @@ void gb_csv_put(FILE *f, const char *fmt, double v)
     if (!c || !*e) return;
     fprintf(f, "%.*snan%s", (int)(c - fmt), fmt, e + 1);
 }
+
+void gb_write_rows(FILE *f, int m, int threads, gb_row_fn row, const void *ctx)
+{
+    enum { BLOCK = 2048 };
+    int T = threads > 1 ? threads : 1;
+    char *buf = malloc((size_t)T * BLOCK * GB_ROW_MAX);
+    size_t *len = malloc((size_t)T * sizeof *len);
+    if (!buf || !len) { /* row by row on one thread */
+        char one[GB_ROW_MAX];
+        for (int k = 0; k < m; k++) {
+            int n = row(one, sizeof one, k, ctx);
+            fwrite(one, 1, n < (int)sizeof one ? (size_t)n : sizeof one - 1, f);
+        }
+        free(buf), free(len);
+        return;
+    }
+    for (int k0 = 0; k0 < m; k0 += T * BLOCK) {
+#pragma omp parallel for schedule(static) num_threads(T) if (T > 1 && m - k0 > BLOCK)
+        for (int t = 0; t < T; t++) {
+            char *b = buf + (size_t)t * BLOCK * GB_ROW_MAX;
+            size_t at = 0;
+            for (int k = k0 + t * BLOCK, e = k + BLOCK < m ? k + BLOCK : m; k < e; k++) {
+                int n = row(b + at, GB_ROW_MAX, k, ctx);
+                at += n < GB_ROW_MAX ? (size_t)n : GB_ROW_MAX - 1;
+            }
+            len[t] = at;
+        }
+        for (int t = 0; t < T; t++) fwrite(buf + (size_t)t * BLOCK * GB_ROW_MAX, 1, len[t], f);
+    }
+    free(buf), free(len);
+}

@@ -9,14 +9,17 @@
 
 #include <stdlib.h>
 
+static int grain_row(char *buf, size_t cap, int i, const void *data)
+{
+    gb_grain g = gb_sim_grain(data, i);
+    return snprintf(buf, cap, "%.17g,%.17g,%.17g,%.17g\n", g.x, g.y, g.r, g.rot);
+}
+
 static void write_grains(FILE *f, const void *data)
 {
     const gb_sim *sim = data;
     fprintf(f, "x,y,r,rotation\n");
-    for (int i = 0; i < gb_sim_n_grains(sim); i++) {
-        gb_grain g = gb_sim_grain(sim, i);
-        fprintf(f, "%.17g,%.17g,%.17g,%.17g\n", g.x, g.y, g.r, g.rot);
-    }
+    gb_write_rows(f, gb_sim_n_grains(sim), sim->scene->solver.threads, grain_row, sim);
 }
 
 gb_status gb_grains_csv_write(const char *path, const gb_sim *sim, gb_error *err)
@@ -24,24 +27,36 @@ gb_status gb_grains_csv_write(const char *path, const gb_sim *sim, gb_error *err
     return gb_atomic_write(path, write_grains, sim, err);
 }
 
+typedef struct {
+    const gb_sim *sim;
+    const gb_contact *c;
+    int rolling; /* the column mr only where there is rolling resistance */
+} contact_rows;
+
 /* (xi, yi) - (xj, yj): grain i's centre to the contact's far end, for drawing force chains. */
+static int contact_row(char *buf, size_t cap, int k, const void *data)
+{
+    const contact_rows *r = data;
+    const gb_contact *c = &r->c[k];
+    const gb_material *mat = gb_sim_material(r->sim, c->j);
+    double e = gb_spring_energy(c->pn, c->pt, c->mr, mat);
+    gb_grain gi = gb_sim_grain(r->sim, c->i);
+    double xj, yj;
+    gb_contact_far_end(r->sim, c, &xj, &yj);
+    char side[32];
+    gb_side_name(c->j, side, sizeof side);
+    int n = snprintf(buf, cap, "%d,%s,%.17g,%.17g,%.17g,%.17g,%.17g,%.10e,%.10e,%.17g,%.17g,%.17g,%.17g", c->i, side,
+                     c->pn, c->pt, c->nx, c->ny, c->overlap, e, c->diss, gi.x, gi.y, xj, yj);
+    if (r->rolling && n >= 0 && (size_t)n < cap) n += snprintf(buf + n, cap - (size_t)n, ",%.17g", c->mr);
+    if (n >= 0 && (size_t)n + 1 < cap) buf[n++] = '\n', buf[n] = 0;
+    return n;
+}
+
 static void write_contacts(FILE *f, const gb_sim *sim, const gb_contact *c, int m)
 {
-    int rolling = gb_scene_rolling(sim->scene); /* the column only where there is rolling resistance */
-    fprintf(f, "i,j,pn,pt,nx,ny,overlap,energy,dissipation,xi,yi,xj,yj%s\n", rolling ? ",mr" : "");
-    for (int k = 0; k < m; k++) {
-        const gb_material *mat = gb_sim_material(sim, c[k].j);
-        double e = gb_spring_energy(c[k].pn, c[k].pt, c[k].mr, mat);
-        gb_grain gi = gb_sim_grain(sim, c[k].i);
-        double xj, yj;
-        gb_contact_far_end(sim, &c[k], &xj, &yj);
-        char side[32];
-        gb_side_name(c[k].j, side, sizeof side);
-        fprintf(f, "%d,%s,%.17g,%.17g,%.17g,%.17g,%.17g,%.10e,%.10e,%.17g,%.17g,%.17g,%.17g", c[k].i, side, c[k].pn,
-                c[k].pt, c[k].nx, c[k].ny, c[k].overlap, e, c[k].diss, gi.x, gi.y, xj, yj);
-        if (rolling) fprintf(f, ",%.17g", c[k].mr);
-        fprintf(f, "\n");
-    }
+    contact_rows r = {sim, c, gb_scene_rolling(sim->scene)};
+    fprintf(f, "i,j,pn,pt,nx,ny,overlap,energy,dissipation,xi,yi,xj,yj%s\n", r.rolling ? ",mr" : "");
+    gb_write_rows(f, m, sim->scene->solver.threads, contact_row, &r);
 }
 
 gb_status gb_contacts_csv_write(const char *path, const gb_sim *sim, gb_error *err)
