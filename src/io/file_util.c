@@ -165,31 +165,23 @@ void gb_csv_put(FILE *f, const char *fmt, double v)
 
 void gb_write_rows(FILE *f, int m, int threads, gb_row_fn row, const void *ctx)
 {
-    enum { BLOCK = 2048 };
-    int T = threads > 1 ? threads : 1;
-    char *buf = malloc((size_t)T * BLOCK * GB_ROW_MAX);
-    size_t *len = malloc((size_t)T * sizeof *len);
-    if (!buf || !len) { /* row by row on one thread */
-        char one[GB_ROW_MAX];
-        for (int k = 0; k < m; k++) {
-            int n = row(one, sizeof one, k, ctx);
-            fwrite(one, 1, n < (int)sizeof one ? (size_t)n : sizeof one - 1, f);
-        }
-        free(buf), free(len);
-        return;
-    }
-    for (int k0 = 0; k0 < m; k0 += T * BLOCK) {
-#pragma omp parallel for schedule(static) num_threads(T) if (T > 1 && m - k0 > BLOCK)
+    enum { BLOCK = 2048, MAX_THREADS = 64 };
+    int T = threads < 1 ? 1 : threads > MAX_THREADS ? MAX_THREADS : threads, rows = BLOCK;
+    size_t len[MAX_THREADS];
+    char one[GB_ROW_MAX], *buf = malloc((size_t)T * BLOCK * GB_ROW_MAX);
+    if (!buf) buf = one, T = 1, rows = 1; /* without the memory: row by row */
+    for (int k0 = 0; k0 < m; k0 += T * rows) {
+#pragma omp parallel for schedule(static) num_threads(T) if (T > 1 && m - k0 > rows)
         for (int t = 0; t < T; t++) {
-            char *b = buf + (size_t)t * BLOCK * GB_ROW_MAX;
+            char *b = buf + (size_t)t * rows * GB_ROW_MAX;
             size_t at = 0;
-            for (int k = k0 + t * BLOCK, e = k + BLOCK < m ? k + BLOCK : m; k < e; k++) {
+            for (int k = k0 + t * rows, e = k + rows < m ? k + rows : m; k < e; k++) {
                 int n = row(b + at, GB_ROW_MAX, k, ctx);
                 at += n < GB_ROW_MAX ? (size_t)n : GB_ROW_MAX - 1;
             }
             len[t] = at;
         }
-        for (int t = 0; t < T; t++) fwrite(buf + (size_t)t * BLOCK * GB_ROW_MAX, 1, len[t], f);
+        for (int t = 0; t < T; t++) fwrite(buf + (size_t)t * rows * GB_ROW_MAX, 1, len[t], f);
     }
-    free(buf), free(len);
+    if (buf != one) free(buf);
 }

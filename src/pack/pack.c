@@ -263,9 +263,6 @@ static gb_status on_step(void *user, const gb_sim *sim, const gb_step_report *re
     (void)sim, (void)err;
     gb_pack_result *res = user;
     res->equilibrium_iterations += rep->iterations; /* over the passes of solve_at_stress */
-    res->equilibrium_work.trials += rep->work.trials;
-    res->equilibrium_work.factorisations += rep->work.factorisations;
-    res->equilibrium_work.sweeps += rep->work.sweeps;
     res->max_fixing_force = rep->max_fixing_force;
     return GB_OK;
 }
@@ -368,7 +365,9 @@ static gb_status equilibrium(packer *P, const gb_bem_mesh *mesh, gb_sim **sim, g
     if (!st && P->hold_stress) st = solve_at_stress(P, *sim, &asked, err);
     else if (!st && !(st = gb_sim_run(*sim, NULL, on_step, P->res, err))) st = measure(*sim, P->d, P->res, err);
     P->res->seconds[GB_PACK_EQUILIBRIUM] = gb_clock_seconds() - t0;
-    const gb_global_stats *g = *sim ? gb_solver_statistics(*sim) : NULL;
+    if (!*sim) return st;
+    P->res->equilibrium_work = gb_solver_work_done(*sim); /* the simulation's solver: these passes' */
+    const gb_global_stats *g = gb_solver_statistics(*sim);
     if (g) P->res->equilibrium_linear_seconds = g->assemble + g->analyse + g->factorise + g->solve;
     return st;
 }
