@@ -299,11 +299,15 @@ enum { EQUILIBRIUM_PASSES = 6 };
  * (seeds 1-3; for seed 2 it raised it, and the smoother started from FIRE's state all the same) and
  * at 1e6 (contacts that open, close and slip under it), so the solver's own rule after a failed
  * whole step (src/solver/line_search.c) is taken from the start: its smoother goes first, checked
- * for a stall every SMOOTHER_FIRST steps (at 1e6 discs some 100 s on one thread at session 19's
- * rate, 0.11 s a step; Newton's analysis and factorisation there: 66 s), and Newton
- * only where it stalls. 1e5 discs, seeds 1-3: 36.9, 29.0, 28.5 -> 33.3, 27.4, 25.6 s (seed 2 with no
- * factorisation: 864 -> 173 MB); 1e6: 671 -> 660 s (a stall, then Newton's step as before). */
-static const double SMOOTHER_FIRST = 1000;
+ * for a stall every SMOOTHER_FIRST steps, and Newton only where it stalls. 1e5 discs, seeds 1-3:
+ * 36.9, 29.0, 28.5 -> 33.3, 27.4, 25.6 s (seed 2 with no factorisation: 864 -> 173 MB). The check
+ * reads the merit's fall over its stretch, and the smoother's merit is not monotone (FIRE): at 1e6
+ * discs it fell tenfold in 250 steps and was 5 times above its start at step 1 000, which a check
+ * there took for a stall; Newton's whole step then raised it 1 000 times (72 s and 8 GB wasted) and
+ * the smoother went on from the check's state to the accuracy in 1 262 more steps. Checked every 4 000
+ * steps, the smoother alone finishes in 2 266 (1e6: 596 -> 523 s, 9.7 -> 1.4 GB; session 26,
+ * docs/packing.md); 1e4 and 1e5 discs (289 and 1 181 steps, not stalled at 1 000) the same bits. */
+static const double SMOOTHER_FIRST = 4000;
 static gb_status solve_at_stress(packer *P, gb_sim *sim, const gb_box *asked, gb_error *err)
 {
     gb_solver_settings *sv = &P->s->solver;
