@@ -305,8 +305,9 @@ enum { EQUILIBRIUM_PASSES = 6 };
  * discs it fell tenfold in 250 steps and was 5 times above its start at step 1 000, which a check
  * there took for a stall; Newton's whole step then raised it 1 000 times (72 s and 8 GB wasted) and
  * the smoother went on from the check's state to the accuracy in 1 262 more steps. Checked every 4 000
- * steps, the smoother alone finishes in 2 266 (1e6: 596 -> 523 s, 9.7 -> 1.4 GB; session 26,
- * docs/packing.md); 1e4 and 1e5 discs (289 and 1 181 steps, not stalled at 1 000) the same bits. */
+ * steps, the smoother alone finishes in 2 266 (1e6: 596 -> 520-523 s, 9.7 -> 1.4 GB; session 26,
+ * docs/packing.md); 1e4 and 1e5 seeds 1-2 (289, 1 181, 908 steps, not stalled at 1 000) the same
+ * bits; 1e5 seed 3, stalled at 1 000 before, 1 427 steps and no factorisation (862 -> 185 MB). */
 static const double SMOOTHER_FIRST = 4000;
 static gb_status solve_at_stress(packer *P, gb_sim *sim, const gb_box *asked, gb_error *err)
 {
