@@ -176,8 +176,10 @@ void gb_write_rows(FILE *f, int m, int threads, gb_row_fn row, const void *ctx)
             char *b = buf + (size_t)t * rows * GB_ROW_MAX;
             size_t at = 0;
             for (int k = k0 + t * rows, e = k + rows < m ? k + rows : m; k < e; k++) {
+                /* snprintf's length: negative on an encoding error (nothing kept), at least
+                 * GB_ROW_MAX when cut (the rows' formats are bounded well below it) */
                 int n = row(b + at, GB_ROW_MAX, k, ctx);
-                at += n < GB_ROW_MAX ? (size_t)n : GB_ROW_MAX - 1;
+                at += n < 0 ? 0 : n < GB_ROW_MAX ? (size_t)n : GB_ROW_MAX - 1;
             }
             len[t] = at;
         }
