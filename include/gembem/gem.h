@@ -26,6 +26,18 @@ typedef struct {
                              whole step did not lower the merit tenfold */
 } gb_solver_work;
 
+/* Why a load step's relaxation stopped (steps.csv's stop, a failed step's message). */
+typedef enum {
+    GB_STOP_CONVERGED = 0, /* every fixing force and the walls' residual within the accuracy (K 14) */
+    GB_STOP_ITERATIONS,    /* solver.max_iterations spent */
+    GB_STOP_STALLED,       /* the largest fixing force stopped falling (gb_solver_relax's stall window) */
+    GB_STOP_TIME,          /* solver.max_step_seconds passed */
+    GB_STOP_ERROR          /* an error: non-finite forces, out of memory, an output that failed */
+} gb_solve_stop;
+
+/* "converged", "iterations", "stalled", "time", "error". */
+const char *gb_solve_stop_name(gb_solve_stop stop);
+
 /* One converged (or failed) load step. Stresses and strains: compression positive, 1 = vertical. */
 typedef struct {
     int stage;           /* 0-based stage of the loading program; -1 for the initial state */
@@ -37,6 +49,7 @@ typedef struct {
     long iterations;     /* of all attempts, sub-steps included */
     int substeps;        /* 1, or the sub-steps a cut-back step took (solver.cutbacks); 0 for step 0 */
     gb_solver_work work; /* of all attempts, sub-steps included */
+    gb_solve_stop cut_by; /* why the first attempt that was cut back stopped; GB_STOP_CONVERGED if none was */
     double max_fixing_force;  /* largest |F| over the grains (K 14) */
     double seconds;           /* wall-clock time of the step */
     int n_contacts;
@@ -77,6 +90,24 @@ typedef void (*gb_iteration_fn)(void *user, const gb_iteration_report *rep);
  * the run can take a checkpoint within the step (docs/run-directory.md, "Checkpoints and resume"). A non-OK
  * status fails the step with that error. */
 typedef gb_status (*gb_within_step_fn)(void *user, const gb_sim *sim, gb_error *err);
+
+/* A load step that runs far longer than the run's others, as it goes (gb_sim_on_progress). */
+typedef struct {
+    int step, stage_step, stage_steps; /* the step, and its place in its stage (stage_steps steps) */
+    int attempt;             /* its relaxations so far (cut-backs start new ones) */
+    long iterations;         /* of all its attempts so far */
+    long sweeps;             /* the smoother's steps so far (global, newton: line_search) */
+    double max_fixing_force; /* largest |F| at the last iteration's start */
+    double accuracy;         /* the step's a */
+    double seconds;          /* since the step started (in this process) */
+    double median_seconds;   /* the median of the run's earlier steps in this process (0 before any) */
+} gb_step_progress;
+
+typedef void (*gb_progress_fn)(void *user, const gb_step_progress *p);
+
+/* Calls fn every few seconds while a load step runs for longer than ten times the median of the
+ * run's earlier steps (and at least ten seconds); NULL: none. The CLI prints it. */
+void gb_sim_on_progress(gb_sim *sim, gb_progress_fn fn, void *user);
 
 /* Calls fn after every iteration that did not converge (for solver.history); NULL: none. gb_sim_run
  * with an output sets its own. */

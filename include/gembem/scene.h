@@ -89,6 +89,7 @@ typedef struct {
     double accuracy_relative; /* > 0: a = this times the step's force scale (src/gem/accuracy.c); 0: a given */
     int accuracy_default;  /* the scene gave no accuracy: accuracy_relative is GB_ACCURACY_RELATIVE_DEFAULT */
     long max_iterations;   /* cap per load step */
+    double max_step_seconds; /* > 0: a load step (all its attempts) fails once it has run this long; 0: no limit */
     int method;            /* GB_METHOD_REFERENCE (Jacobi-like, per grain) or GB_METHOD_GLOBAL */
     int linear;            /* global: GB_LINEAR_CHOLMOD, GB_LINEAR_UMFPACK or GB_LINEAR_PETSC */
     gb_petsc_settings petsc; /* linear: petsc */

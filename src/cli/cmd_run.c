@@ -38,6 +38,19 @@ static gb_status on_step(void *user, const gb_sim *sim, const gb_step_report *r,
     return GB_OK;
 }
 
+/* A step far longer than the run's others: a line every few seconds (a terminal's or a job's log). */
+static void on_progress(void *user, const gb_step_progress *p)
+{
+    const run_ctx *c = user;
+    if (c->quiet) return;
+    char median[64] = "";
+    if (p->median_seconds > 0) snprintf(median, sizeof median, " (the run's median step: %.3g s)", p->median_seconds);
+    fprintf(stderr, "%sgembem: step %d (%d of %d in its stage) has run %.0f s%s: attempt %d, %ld iterations, %ld "
+            "smoother steps, largest fixing force %.3g (accuracy %.3g)\n", c->progress ? "\r" : "", p->step,
+            p->stage_step, p->stage_steps, p->seconds, median, p->attempt, p->iterations, p->sweeps,
+            p->max_fixing_force, p->accuracy);
+}
+
 static void usage(FILE *to)
 {
     fprintf(to, "usage: gembem run SCENE.yaml -o RUNDIR [--overwrite] [--quiet]\n"
@@ -99,6 +112,7 @@ int gb_cli_run(int argc, char **argv)
         gb_scene_free(&scene);
         return gb_cli_report(&err);
     }
+    gb_sim_on_progress(sim, on_progress, &ctx);
     gb_status st = gb_sim_run(sim, out, on_step, &ctx, &err);
     if (ctx.progress && !quiet) fprintf(stderr, "\n");
     gb_error close_err = {0};

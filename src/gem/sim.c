@@ -26,6 +26,7 @@ void gb_gem_problem_free(gb_sim *sim)
     free(sim->scratch.one);
     gb_state_free(&sim->saved);
     gb_state_free(&sim->substep);
+    free(sim->watch.seconds);
     gb_pair_search_free(&sim->search);
     gb_host_free(sim->host);
     gb_particles_free(&sim->bp);

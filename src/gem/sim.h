@@ -100,6 +100,7 @@ typedef struct {
     gb_step_phase phase;
     long phase_iters;     /* iterations of the sub-step's relaxations that ended (shear_mean_stress: the first) */
     long relax_iters;     /* iterations done by the relaxation in progress (gb_solver_relax); 0 outside one */
+    gb_solve_stop cut_by; /* why the first attempt that was cut back stopped (GB_STOP_CONVERGED: none yet) */
     gb_solver_work work0; /* the solver's work counters of this process at the step's start */
 } gb_sim_step;
 
@@ -110,6 +111,31 @@ static inline long gb_sim_step_iterations(const gb_sim_step *c) { return c->iter
  * what an iteration leaves for the next and for the rest of the step (sim->cur, the last move, the
  * states a failure goes back to, the stall detection), is in a run's checkpoint
  * (src/io/checkpoint.c): a field added here that outlives an iteration belongs there too. */
+/* A load step's clock (src/gem/watch.c): its time limit and, where it runs far longer than the
+ * run's other steps, its progress; set at each step's start by the run (src/run/program.c). */
+typedef struct {
+    double t0;              /* when the step started (gb_clock_seconds; 0: no step is watched) */
+    double limit;           /* solver.max_step_seconds, 0: none */
+    double report_after;    /* seconds after t0 from which progress is reported */
+    double next_report;     /* the clock's time of the next report */
+    double report_every;    /* seconds between two reports */
+    double median;          /* the median of the run's earlier steps, seconds */
+    double max_force;       /* the largest fixing force at the last iteration's start */
+    double *seconds;        /* the run's completed steps' seconds (this process): n of them */
+    int n, cap;
+    gb_progress_fn fn;
+    void *user;
+} gb_step_watch;
+
+/* The step's clock: GB_STOP_TIME past its limit, with a progress report if one is due;
+ * GB_STOP_CONVERGED (go on) otherwise. sweeps: the smoother's steps in the step so far; max_force
+ * NaN: the last one given. */
+gb_solve_stop gb_sim_poll(gb_sim *sim, long sweeps, double max_force);
+/* A load step starts now: its limit and when its progress is reported. */
+void gb_sim_watch_step(gb_sim *sim, double now);
+/* A step ended after `seconds`: one more for the median (GB_ENOMEM: not recorded). */
+gb_status gb_sim_watch_done(gb_sim *sim, double seconds);
+
 struct gb_sim {
     const gb_scene *scene;
     gb_state state;     /* what iterations and load steps change */
@@ -146,6 +172,7 @@ struct gb_sim {
     gb_sim_step cur;          /* the load step in progress */
     gb_run_profile profile;   /* the loop's phases (src/run/program.c) */
     gb_within_step_fn on_within_step; /* between two iterations of a relaxation (checkpoints) */
+    gb_step_watch watch;      /* the step's clock */
     void *on_within_step_user;
 };
 

@@ -18,7 +18,7 @@
  * steps only, not read. */
 /* 3: each pair's rolling moment; 4: the line search's smoother-first state; 5: grains in the
  * simulation's order by cell (gb_sim.grain_order) */
-enum { FORMAT = 5 };
+enum { FORMAT = 6 };
 
 static uint64_t fnv(uint64_t h, const void *data, size_t n)
 {
@@ -184,6 +184,7 @@ static void put_step(FILE *f, const gb_sim *sim)
     fprintf(f, "work %ld %ld %ld\n", w.trials, w.factorisations, w.sweeps);
     const gb_solver_damping *d = gb_solver_damping_of(sim);
     fprintf(f, "stall %ld %a %d\n", d->since, d->best, d->newton_failures); /* "inf" before the solver's first move */
+    fprintf(f, "window %a %ld %ld %d\n", d->stall_ref, d->stall_at, d->relax_work0, (int)c->cut_by);
     fprintf(f, "moves\n");
     for (int i = 0; i < sim->state.n; i++)
         put_row(f, NULL, 0, &sim->scratch.dX[3 * i], 3, NULL, 0);
@@ -527,6 +528,13 @@ static void get_step(cursor *c, const gb_sim *sim, extras *x)
     if (!strcmp(w, "inf")) x->damping.best = INFINITY;
     else if (gb_parse_finite(w, &x->damping.best) != GB_NUMBER_OK) fail(c, "expected a number or inf");
     x->damping.newton_failures = (int)integer(c, 0, 2147483647LL);
+    expect(c, "window");
+    w = word(c);
+    if (!strcmp(w, "inf")) x->damping.stall_ref = INFINITY;
+    else if (gb_parse_finite(w, &x->damping.stall_ref) != GB_NUMBER_OK) fail(c, "expected a number or inf");
+    x->damping.stall_at = (long)integer(c, 0, (long long)1 << 62);
+    x->damping.relax_work0 = (long)integer(c, 0, (long long)1 << 62);
+    s->cut_by = (gb_solve_stop)integer(c, GB_STOP_CONVERGED, GB_STOP_ERROR);
     expect(c, "moves");
     x->dX = alloc(c, 3 * (size_t)sim->state.n, sizeof(double));
     for (int k = 0; k < 3 * sim->state.n && !c->st; k++) x->dX[k] = num(c);
@@ -625,6 +633,8 @@ gb_status gb_checkpoint_read(const char *dir, gb_sim *sim, uint64_t scene_hash, 
             sim->cur = x.cur;
             sim->attempt = x.attempt, d->since = x.damping.since, d->best = x.damping.best;
             d->newton_failures = x.damping.newton_failures;
+            d->stall_ref = x.damping.stall_ref, d->stall_at = x.damping.stall_at;
+            d->relax_work0 = x.damping.relax_work0;
         }
         /* for the restored pair list (its count and rebuilds) */
         c.st = gb_solver_resume(sim, x.unloading, err);

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/number.h"
 #include "scene/csv_read.h"
 
 static void warn(gb_run_verdict *v, const char *fmt, ...)
@@ -35,7 +36,39 @@ typedef struct {
     int loose_rattlers;
     int swing_steps, swing_step, swing_from, swing_to;
     int last_contacts;
+    double *work;         /* each step's iterations plus smoother steps (n_work of them) */
+    int n_work, cap_work, long_step, stalled_steps;
+    double long_work, long_seconds; /* the step of most work */
 } watch;
+
+/* A step's work (iterations plus smoother steps, which do not depend on the machine) far above the
+ * run's median: more than LONG_STEP times it, and more than LONG_STEP_WORK. */
+static const double LONG_STEP = 10, LONG_STEP_WORK = 10000;
+
+static void add_work(watch *w, double work)
+{
+    if (w->n_work == w->cap_work) {
+        int cap = w->cap_work ? 2 * w->cap_work : 64;
+        double *a = realloc(w->work, (size_t)cap * sizeof *a);
+        if (!a) return; /* a warning less, not a failure */
+        w->work = a, w->cap_work = cap;
+    }
+    w->work[w->n_work++] = work;
+}
+
+/* The longest step against the median (after read_steps): warns where it is far above. */
+static void long_steps(gb_run_verdict *v, watch *w)
+{
+    if (w->n_work < 3) return;
+    double median = gb_median(w->work, w->n_work); /* sorted in place: the longest is known already */
+    int far = 0;
+    for (int k = 0; k < w->n_work; k++) far += w->work[k] > LONG_STEP * median && w->work[k] > LONG_STEP_WORK;
+    if (far)
+        warn(v, "%d step(s) took more than %g times the median step's work (%.0f iterations and smoother steps): "
+                "the longest, step %d, %.0f of them in %.3g s. The packing rearranged there; smaller load steps share "
+                "the rearrangement out, and solver.max_step_seconds bounds a step's time",
+             far, LONG_STEP, median, w->long_step, w->long_work, w->long_seconds);
+}
 
 static void look_at_step(const gb_scene *sc, watch *w, int step, const double *x)
 {
@@ -67,6 +100,8 @@ static gb_status read_steps(const char *dir, const gb_scene *sc, gb_run_verdict 
     if (st) return st;
     static const char *const err_cols[] = {"relative_residual", "relative_wall_residual", "host_balance"};
     static const char *const watch_cols[] = {"accuracy", "mean_normal_force", "coordination", "rattlers", "contacts"};
+    int k_iter = gb_csv_column(&c, "iterations"), k_sweeps = gb_csv_column(&c, "sweeps"),
+        k_secs = gb_csv_column(&c, "seconds"), k_stop = gb_csv_column(&c, "stop");
     int k_step = gb_csv_column(&c, "step"), k_err[3], k_watch[5];
     int k_coulomb = gb_csv_column(&c, "coulomb_excess"), k_acc = gb_csv_column(&c, "accuracy");
     int k_scale = gb_csv_column(&c, "force_scale");
@@ -89,6 +124,12 @@ static gb_status read_steps(const char *dir, const gb_scene *sc, gb_run_verdict 
         double x[5];
         for (int q = 0; q < 5; q++) x[q] = value(&c, k_watch[q]);
         look_at_step(sc, w, step, x);
+        double work = value(&c, k_iter) + (k_sweeps >= 0 ? value(&c, k_sweeps) : 0);
+        if (isfinite(work)) {
+            if (work > w->long_work) w->long_work = work, w->long_step = step, w->long_seconds = value(&c, k_secs);
+            add_work(w, work);
+        }
+        if (k_stop >= 0 && k_stop < c.n_fields && !strcmp(c.field[k_stop], "stalled")) w->stalled_steps++;
     }
     gb_csv_close(&c);
     return st;
@@ -141,7 +182,10 @@ gb_status gb_run_verdict_read(const char *dir, const gb_scene *sc, gb_run_verdic
         w0 += len + (end ? strlen("; also ") : 0);
     }
     gb_status st = read_steps(dir, sc, v, &w, err);
-    if (st) return st;
+    if (st) {
+        free(w.work);
+        return st;
+    }
     if (w.accuracy_steps)
         warn(v, "the accuracy is not small against the contact forces: at %d of %d steps (the first step %d) a is "
                 "more than %g of the mean normal contact force, up to %.3g of it at step %d, so the contact forces and "
@@ -159,6 +203,12 @@ gb_status gb_run_verdict_read(const char *dir, const gb_scene *sc, gb_run_verdic
                 "at step %d; the packing rearranges within single steps, so each step's state is one of many: take "
                 "smaller load steps (more steps per stage) or a jammed packing",
              100 * GB_WARN_SWING, w.swing_steps, w.swing_from, w.swing_to, w.swing_step);
+    long_steps(v, &w);
+    if (w.stalled_steps)
+        warn(v, "%d step(s) stalled (their largest fixing force stopped falling) and converged only in sub-steps "
+                "(steps.csv's stop): the packing rearranged there; smaller load steps share the rearrangement out",
+             w.stalled_steps);
+    free(w.work);
     read_undefined(dir, v);
     return GB_OK;
 }

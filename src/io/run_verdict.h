@@ -19,7 +19,7 @@
  * consecutive converged steps. */
 #define GB_WARN_SWING 0.25
 
-enum { GB_VERDICT_WARNINGS = 6 };
+enum { GB_VERDICT_WARNINGS = 8 };
 
 typedef struct {
     int steps;               /* converged load steps (step 0 aside) */

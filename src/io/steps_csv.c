@@ -9,7 +9,8 @@ void gb_steps_csv_header(FILE *f)
 {
     fprintf(f, "step,stage,e1_minus_e2,e1,e2,ev,s1,s2,stress_ratio,iterations,max_fixing_force,seconds,"
                "contacts,width,height,substeps,trials,factorisations,sweeps,force_scale,accuracy,relative_residual,"
-               "relative_wall_residual,host_balance,coulomb_excess,mean_normal_force,coordination,rattlers\n");
+               "relative_wall_residual,host_balance,coulomb_excess,mean_normal_force,coordination,rattlers,stop,"
+               "sweeps_per_iteration\n");
 }
 
 /* a force over the step's force scale; undefined without one */
@@ -31,5 +32,8 @@ void gb_steps_csv_row(FILE *f, const gb_step_report *r)
     const double rel[] = {relative(r->max_fixing_force, r), relative(r->wall_residual, r),
                           relative(r->max_particle_force, r), relative(r->coulomb_excess, r)};
     for (int k = 0; k < 4; k++) gb_csv_put(f, ",%.6e", rel[k]);
-    fprintf(f, ",%.10e,%.6f,%d\n", r->mean_normal_force, r->coordination, r->rattlers);
+    fprintf(f, ",%.10e,%.6f,%d", r->mean_normal_force, r->coordination, r->rattlers);
+    /* why the step was cut back ("converged": it was not); the smoother's steps per iteration */
+    fprintf(f, ",%s,%.6g\n", gb_solve_stop_name(r->cut_by),
+            r->iterations > 0 ? (double)r->work.sweeps / (double)r->iterations : 0.0);
 }

@@ -229,7 +229,10 @@ static gb_status cut_back_step(gb_sim *sim, const gb_stage *sg, double *max_forc
         c->iters += c->phase_iters;
         c->phase = GB_PHASE_LOAD, c->phase_iters = 0;
         c->finest = c->h;
-        if (st == GB_ENOCONV && c->cuts > 0) {
+        /* past the step's time limit a cut-back would only take longer */
+        gb_solve_stop stop = gb_solver_stop(sim);
+        if (st == GB_ENOCONV && c->cut_by == GB_STOP_CONVERGED) c->cut_by = stop;
+        if (st == GB_ENOCONV && c->cuts > 0 && stop != GB_STOP_TIME) {
             restore_state(sim, &sim->substep);
             c->cuts--;
             c->h /= 2;
@@ -271,6 +274,15 @@ static void failure_hint(const gb_sim *sim, const gb_stage *sg, double max_force
         return;
     }
     char more[80] = "";
+    gb_solve_stop stop = gb_solver_stop(sim);
+    if (stop != GB_STOP_ITERATIONS) { /* more iterations would not help */
+        const char *longer = stop == GB_STOP_TIME ? ", or a larger solver.max_step_seconds" : "";
+        if (sg->kind == GB_STAGE_RELAX) snprintf(hint, n, "%s", stop == GB_STOP_TIME ? ". Give a larger "
+                                                 "solver.max_step_seconds" : "");
+        else snprintf(hint, n, ". Use smaller load steps: loading[%d].%s.steps: %.0f (now %d)%s", c->stage,
+                      gb_stage_name(sg->kind), sg->steps * fmax(2, 1 / c->finest), sg->steps, longer);
+        return;
+    }
     if (sv->max_iterations < gb_solver_defaults().max_iterations)
         snprintf(more, sizeof more, " (default %ld)", gb_solver_defaults().max_iterations);
     if (sg->kind == GB_STAGE_RELAX) {
@@ -289,15 +301,23 @@ static gb_status step_failed(const gb_sim *sim, const gb_stage *sg, gb_status st
     const gb_sim_step *c = &sim->cur;
     const gb_solver_settings *sv = &sim->scene->solver;
     if (st == GB_ENOCONV) {
-        char cut[96] = "", hint[400];
+        char cut[96] = "", hint[400], why[160];
         if (c->finest < 1) snprintf(cut, sizeof cut, ", nor in sub-steps down to 1/%.0f of the step", 1 / c->finest);
         failure_hint(sim, sg, max_force, residual, hint, sizeof hint);
+        gb_solve_stop stop = gb_solver_stop(sim);
+        long work = gb_solver_step_work(sim);
+        if (stop == GB_STOP_TIME)
+            snprintf(why, sizeof why, "reached solver.max_step_seconds (%g s) after %ld iterations and smoother "
+                     "steps", sv->max_step_seconds, work);
+        else if (stop == GB_STOP_STALLED)
+            snprintf(why, sizeof why, "stalled (its largest fixing force stopped falling) after %ld iterations and "
+                     "smoother steps", work);
+        else snprintf(why, sizeof why, "did not converge in %ld iterations", sv->max_iterations);
         return gb_fail(err, GB_ENOCONV,
-                       "step %d (stage %d '%s', step %d of %d) did not converge in %ld iterations: largest fixing "
-                       "force %.6g, walls off their target by %.6g (accuracy a = %g)%s; the outputs hold the %d "
-                       "completed steps%s",
-                       c->step, c->stage + 1, gb_stage_name(sg->kind), c->stage_step, sg->steps, sv->max_iterations,
-                       max_force, residual, sim->accuracy, cut, c->step - 1, hint);
+                       "step %d (stage %d '%s', step %d of %d) %s: largest fixing force %.6g, walls off their "
+                       "target by %.6g (accuracy a = %g)%s; the outputs hold the %d completed steps%s",
+                       c->step, c->stage + 1, gb_stage_name(sg->kind), c->stage_step, sg->steps, why, max_force,
+                       residual, sim->accuracy, cut, c->step - 1, hint);
     }
     char msg[GB_ERROR_MSG_MAX];
     snprintf(msg, sizeof msg, "%s", err->msg);
@@ -383,6 +403,7 @@ gb_status gb_sim_run(gb_sim *sim, gb_run_output *out, gb_step_fn on_step, void *
                 sim->attempt = 0;
             }
             within = 0;
+            gb_sim_watch_step(sim, t0);
             /* from the step's start, which a step resumed within has from its checkpoint */
             gb_sim_resolve_accuracy(sim, sim->saved.pairs.p, sim->saved.pairs.n, s);
             if (!(sim->accuracy > 0))
@@ -392,6 +413,7 @@ gb_status gb_sim_run(gb_sim *sim, gb_run_output *out, gb_step_fn on_step, void *
             if (!st) st = cut_back_step(sim, sg, &max_force, &residual, err);
             sim->cur.active = 0;
             sim->iterations_total += sim->cur.iters;
+            sim->watch.t0 = 0; /* no step is watched until the next starts */
             if (st) {
                 st = step_failed(sim, sg, st, max_force, residual, err);
                 restore_state(sim, &sim->saved);
@@ -405,13 +427,15 @@ gb_status gb_sim_run(gb_sim *sim, gb_run_output *out, gb_step_fn on_step, void *
             rep.iterations = sim->cur.iters;
             rep.substeps = sim->cur.substeps;
             rep.work = gb_solver_work_minus(gb_solver_work_done(sim), sim->cur.work0);
+            rep.cut_by = sim->cur.cut_by;
             fill_report(sim, &rep, stress_controlled(sg) ? residual : NAN);
             add_step_work(sim);
             rep.seconds = gb_clock_seconds() - t0;
+            if (gb_sim_watch_done(sim, rep.seconds)) st = gb_fail(err, GB_ENOMEM, "out of memory");
             gb_sim_position at = {s, k, step, {start[0], start[1]}, 0};
             sim->pos = at;
             /* measure and output see the step's start in the saved state; then it becomes the next's */
-            st = measure_and_output(sim, out, on_step, user, &rep, t1, err);
+            if (!st) st = measure_and_output(sim, out, on_step, user, &rep, t1, err);
             double t2 = gb_clock_seconds();
             if (!st) save_state(sim, err, &st);
             sim->profile.control += gb_clock_seconds() - t2;

@@ -89,7 +89,8 @@ gb_status gb_solver_section_read(gb_ymap *top, gb_solver_settings *sv, gb_error 
         (st = gb_ymap_number(&m, "beta", GB_Y_NONNEG, &sv->beta, err)) ||
         (st = gb_ymap_number(&m, "beta1", GB_Y_NONNEG, &sv->beta1, err)) ||
         (st = read_accuracy(&m, sv, err)) ||
-        (st = gb_ymap_int(&m, "max_iterations", 0, 1, 2000000000L, &sv->max_iterations, err)))
+        (st = gb_ymap_int(&m, "max_iterations", 0, 1, 2000000000L, &sv->max_iterations, err)) ||
+        (st = gb_ymap_number(&m, "max_step_seconds", GB_Y_POSITIVE, &sv->max_step_seconds, err)))
         return st;
     if ((st = gb_ymap_bool(&m, "history", 0, &sv->history, err))) return st;
     long cutbacks = sv->cutbacks, threads = sv->threads;

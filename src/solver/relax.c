@@ -3,6 +3,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <stdio.h>
 
 #include "solver/solver_impl.h"
 
@@ -80,19 +81,70 @@ static void report_iteration(gb_sim *sim, long it, double max_force, double wall
     sim->on_iteration(sim->on_iteration_user, &r);
 }
 
+/* The stall window: a relaxation stalls when its largest fixing force (or the walls' residual) has
+ * not fallen below STALL_FALL times its value at the last such fall (at the start: its first
+ * value) for twice the work it had done then, and at least STALL_WORK (iterations plus smoother
+ * steps).
+ * Relative to the work already done, so that a relaxation that keeps converging, however slowly,
+ * goes on, while one that cycles or wanders ends in a bounded time whatever solver.max_iterations
+ * says, and the step is cut back (src/run/program.c). Three discs with alpha = 1.5 (the
+ * reference iteration unstable: its largest force wanders between 1e4 and 3e5 dyn) stall after
+ * 141 310 iterations, about 0.1 s, where max_iterations 2e9 would take hours. */
+enum { STALL_WORK = 50000 };
+static const double STALL_FALL = 0.5;
+
+long gb_solver_step_work(const gb_sim *sim)
+{
+    return gb_sim_step_iterations(&sim->cur) + (gb_solver_work_done(sim).sweeps - sim->cur.work0.sweeps);
+}
+
+static int stalled(gb_solver_damping *d, const gb_sim *sim, double force)
+{
+    long w = gb_solver_step_work(sim) - d->relax_work0;
+    if (!(force > STALL_FALL * d->stall_ref)) {
+        if (getenv("GB_STALL_DEBUG")) fprintf(stderr, "fall %ld %g\n", w, force);
+        d->stall_ref = force, d->stall_at = w;
+        return 0;
+    }
+    long window = 2 * d->stall_at > STALL_WORK ? 2 * d->stall_at : STALL_WORK;
+    if (getenv("GB_STALL_DEBUG") && getenv("GB_STALL_OFF")) return 0;
+    return w - d->stall_at > window;
+}
+
+gb_status gb_solver_poll(gb_solver *s, gb_sim *sim, double max_force)
+{
+    long sweeps = gb_solver_work_done(sim).sweeps - sim->cur.work0.sweeps;
+    gb_solve_stop stop = gb_sim_poll(sim, sweeps, max_force);
+    if (stop == GB_STOP_CONVERGED) return GB_OK;
+    s->stop = stop;
+    return GB_ENOCONV;
+}
+
 gb_status gb_solver_relax(gb_sim *sim, const gb_wall_control *wc, long cap, long *iterations, double *max_force,
                           double *wall_residual, gb_error *err)
 {
     gb_solver *s = sim->solver;
+    gb_solver_damping *d = &s->damping;
     long it = sim->cur.relax_iters;
     if (!it) {
         sim->attempt++;
-        s->damping.best = INFINITY, s->damping.since = 0; /* the damped iteration's stall detection */
-        s->damping.newton_failures = 0;                    /* the line search's, within a relaxation */
+        d->best = INFINITY, d->since = 0; /* the damped iteration's stall detection */
+        d->newton_failures = 0;           /* the line search's, within a relaxation */
+        d->stall_ref = INFINITY, d->stall_at = 0, d->relax_work0 = gb_solver_step_work(sim);
     }
+    s->stop = GB_STOP_ERROR;
     gb_status st = GB_OK;
     for (; it <= cap; it++) {
-        if (gb_gem_balance(sim, wc, max_force, wall_residual, err, &st) || st) break;
+        if (gb_gem_balance(sim, wc, max_force, wall_residual, err, &st)) {
+            s->stop = GB_STOP_CONVERGED;
+            break;
+        }
+        if (st) break;
+        if (stalled(d, sim, fmax(*max_force, *wall_residual))) {
+            s->stop = GB_STOP_STALLED, st = GB_ENOCONV;
+            break;
+        }
+        if ((s->global || it % GB_POLL_SWEEPS == 0) && (st = gb_solver_poll(s, sim, *max_force))) break;
         /* Every grain's move from the same configuration, then all at once (order-independent). */
         st = s->global ? global_move(s, sim, wc, *wall_residual, err) : gb_gem_reference_move(sim, err);
         if (st) break;
@@ -107,11 +159,14 @@ gb_status gb_solver_relax(gb_sim *sim, const gb_wall_control *wc, long cap, long
     sim->cur.relax_iters = 0;
     if (it > cap) {
         *iterations += cap;
+        s->stop = GB_STOP_ITERATIONS;
         return GB_ENOCONV;
     }
     *iterations += it;
     return st;
 }
+
+gb_solve_stop gb_solver_stop(const gb_sim *sim) { return sim->solver->stop; }
 
 gb_solver_work gb_solver_work_done(const gb_sim *sim)
 {

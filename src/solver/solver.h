@@ -33,6 +33,11 @@ typedef struct {
     double smoother_first;
     int newton_due;
     int newton_failures;
+    /* gb_solver_relax's stall window, in the load step's work (its iterations plus the smoother's
+     * steps): the reference force, the work when it was set, and the work when the relaxation
+     * began */
+    double stall_ref;
+    long stall_at, relax_work0;
 } gb_solver_damping;
 
 /* gb_solver_create, gb_solver_relax, gb_solver_work_done, gb_solver_statistics: gembem/solver.h. */
@@ -42,6 +47,12 @@ void gb_solver_free(gb_solver *s);
  * (sim->cur.relax_iters > 0) goes on from there: its iterations, attempt and the damped
  * iteration's stall detection are those it had. Between two iterations (not after the last allowed
  * one) it calls sim->on_within_step, whose error ends it. */
+/* Why the last relaxation stopped. */
+gb_solve_stop gb_solver_stop(const gb_sim *sim);
+/* The load step's work so far (its iterations plus the smoother's steps), the unit of the stall
+ * window. */
+long gb_solver_step_work(const gb_sim *sim);
+
 /* Whether sim is solved by the global solver (else by the reference iteration). */
 int gb_solver_is_global(const gb_sim *sim);
 /* The damping state, to read and to restore (checkpoints, state.yaml). */

@@ -23,6 +23,7 @@ struct gb_solver {
     double *velocity, *acceleration; /* its smoother's: 3 per grain, 2 per boundary particle */
     double *block_sums;         /* its smoother's sums over blocks of grains (inertial.c) */
     double length;              /* the share of Newton's step the last line search took (0: the smoother) */
+    gb_solve_stop stop;         /* why the last relaxation stopped */
     gb_solver_work work;        /* since the start of the process: only its changes within a load step are
                                    reported, so a resumed run needs none of it */
 };
@@ -52,5 +53,10 @@ gb_status gb_solver_line_search_move(gb_solver *s, gb_sim *sim, const gb_wall_co
  * again to reach the target. The forces are current on return. */
 gb_status gb_solver_inertial(gb_solver *s, gb_sim *sim, const gb_wall_control *wc, double target, int max_steps,
                              double stall_check, int *stalled, gb_error *err);
+
+/* The step's clock, between iterations and every GB_POLL_SWEEPS smoother steps (gb_sim_poll): a
+ * stop other than GB_STOP_CONVERGED ends the relaxation with GB_ENOCONV and s->stop set. */
+enum { GB_POLL_SWEEPS = 32 };
+gb_status gb_solver_poll(gb_solver *s, gb_sim *sim, double max_force);
 
 #endif
