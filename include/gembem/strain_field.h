@@ -1,4 +1,4 @@
-/* The strain field of a granular zone between two states of its grain centres (issue 7): a
+/* The strain field of a granular zone between two states of its grain centres: a
  * Delaunay triangulation of the reference centres (qhull), the deformation of each triangle under
  * the linear interpolation of the centres' displacements, its area-weighted mean per grain, the
  * non-affine displacement of each grain (D2min, Falk & Langer 1998) and a localisation index.

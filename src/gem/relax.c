@@ -342,8 +342,8 @@ static gb_status update_pairs(gb_sim *sim, gb_error *err)
  * ones. The walls' and particles' sums (shared by every chunk) follow, in the list's order. W
  * depends on the list alone, so a grain's terms come in the same order, and its sums are the same
  * bits, on any thread count. Each contact's terms are computed once (gathering every grain's own
- * pairs, as before session 21, computed them from both ends and read the pairs out of order: on
- * two threads the 1e5 peer relaxation took 42.5 s against 50 on one). */
+ * pairs would compute them from both ends and read the pairs out of order, which made two threads
+ * little faster than one). */
 enum { CHUNK_MIN = 256 };
 /* Per chunk: its contacts' affine_k (3), the energy its pairs' updates dissipated. */
 enum { CHUNK_SUMS = 4 };

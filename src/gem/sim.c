@@ -95,7 +95,7 @@ static gb_status add_host(gb_sim *sim, gb_error *err)
 }
 
 /* A lower bound of the memory a simulation allocates, to refuse one that cannot fit before the
- * kernel's out-of-memory killer ends it (issue 14): per grain, its copies (the scene's, the
+ * kernel's out-of-memory killer ends it: per grain, its copies (the scene's, the
  * simulation's and three saved states), its arrays (body force, F, S, dX, the last contact, the
  * contact count, the system flag), at least two candidate pairs in the list, its rebuild buffer
  * and the three saved states; with the global solver, its sparse factor, 5.3 GB at 1e6 discs

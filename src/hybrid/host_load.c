@@ -1,4 +1,4 @@
-/* Loading the host in steps (issue 7; the coupling of docs/method.md section 10): f0 of the condensed
+/* Loading the host in steps (the coupling of docs/method.md section 10): f0 of the condensed
  * cavity is linear in the boundary values of the other groups and in the remote stress, so the
  * condensation computes, once and with the same factorisation, f0's response to a unit value of
  * each (and the groups' resultants' responses, for host_steps.csv); a load step then only adds up

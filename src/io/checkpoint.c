@@ -90,7 +90,7 @@ static char *put_int(char *p, int i)
 /* A finite double as a C99 hex float of all its 52 fraction bits ("0x1.<13 digits>p<e>", subnormals
  * "0x0.<13 digits>p-1022"), which strtod reads back bit for bit as it does %a's; anything else by %a.
  * The rows of grains and pairs are most of a checkpoint, and glibc's %a was most of its cost (about
- * a tenth of a 1e4 oedometric path with a checkpoint at every step, session 16). */
+ * a tenth of a 1e4 oedometric path with a checkpoint at every step). */
 static char *put_hex(char *p, double v)
 {
     if (!isfinite(v)) return p + sprintf(p, "%a", v);

@@ -151,7 +151,7 @@ gb_status gb_host_measure(const gb_sim *sim, int wall_only, gb_host_measures *m,
         if (fabs(m->hoop[k]) > fabs(hmax)) hmax = m->hoop[k];
     }
     reference_stress(h, &now, &sol, m);
-    /* A reference within the noise of the stresses is zero, and the ratio undefined (issue 22: -20.6
+    /* A reference within the noise of the stresses is zero, and the ratio undefined (-20.6
      * from 8e-9 over 4e-10 at a step where nothing loaded the host): the particles' forces are
      * balanced to the step's accuracy a, a traction to a over an element's length; and the rounding
      * of the largest hoop stress. */

@@ -32,17 +32,15 @@ static const double RAMP = 1e-2, STAGE_OVERLAP = 1e-3;
  * contact force of the target (stress times a mean diameter): a jammed state, from which the
  * settling frees the scale under the target. Where the global solver finishes (SETTLE_FINISHED
  * below), at GROW_FORCE_FINISHED: the free relaxation at the overshoot, to 10 times the looser
- * tolerance, takes over sooner (session 23, 1e5 discs at 10 degrees, settling at 4 times the
- * accuracy: FIRE 10 059 -> 7 880 iterations, 38.6 -> 32.3 s; at 8 times 8 314 -> 5 620). */
+ * tolerance, takes over sooner (1e5 discs at 10 degrees: a fifth fewer FIRE iterations). */
 static const double GROW_FORCE = 0.1, GROW_FORCE_FINISHED = 1;
 /* The growth goes to OVERSHOOT times the target stress, FIRE relaxes the packing there (the scale
  * free, every |F| below OVERSHOOT times the tolerance: the same share of the contact forces), and
  * the settling then decompresses it to the target. A packing relaxes much faster at a higher
  * stress, and one jammed at 10 times the target decompresses to it with few rearrangements: 1e4
- * discs (seeds 1-6) took 17 700 FIRE iterations on average against 30 800 growing to the target
- * itself (3 times without the free relaxation: 34 400; 5 times: 26 100; 15: 16 700; 20: 17 900;
- * 30: 20 900; the relaxation at 10 times to 100 times the tolerance: 19 400). The price: a porosity lower by about 0.002 (the structure found at the
- * higher stress is denser; docs/benchmarks.md). The overshoot stays below OVER_MAX kn (contacts'
+ * discs took 17 700 FIRE iterations on average over six seeds against 30 800 growing to the
+ * target itself; 3, 5 and 30 times took more, 15 and 20 as many (docs/packing.md, Measured). The
+ * price: a porosity lower by about 0.002 (the structure found at the higher stress is denser). The overshoot stays below OVER_MAX kn (contacts'
  * overlaps of some 0.1 % of the diameter): at 1e-2 kn (ctest pack_make's box to 1e-3 kn, times
  * 10) the free scale's balance, sum pn (ri + rj) = 2 A p, and Love's stress with the centres'
  * distances differ by more than the 0.5 % the relaxation asks. */
@@ -51,17 +49,17 @@ static const double OVERSHOOT = 10, OVER_MAX = 1e-3;
  * solver, with the scene's friction, then checks them (0 iterations) or finishes. Near jamming
  * FIRE's last factors of the force are the slow ones (at 10 degrees its grains keep slipping and
  * recompacting), so where the global solver follows a growth to a stress with friction while
- * packing, FIRE stops at SETTLE_FINISHED times the accuracy and one Newton step finishes (1e5 discs
- * 50 -> 32 s, 1e6 24.6 -> 12.4 minutes with GROW_FORCE_FINISHED). Not looser with the walls held:
+ * packing, FIRE stops at SETTLE_FINISHED times the accuracy and one Newton step finishes (with
+ * GROW_FORCE_FINISHED, a third less time at 1e5 discs, half at 1e6). Not looser with the walls held:
  * FIRE leaves the walls' stress below Love's (by 6.6 % at 1e5 discs from 8 times the accuracy) and
  * the solver's balance at the held radii lowers Love's, by up to 0.17 % from 4 times but 3.4 % from
  * 8, past STRESS_TOL. In a box without body force the walls follow the target stress instead
- * (solve_at_stress), and FIRE stops at SETTLE_HELD (1e6 discs 12.4 -> 11.0 minutes, both stresses
+ * (solve_at_stress), and FIRE stops at SETTLE_HELD (a tenth less time at 1e6 discs, both stresses
  * within 0.5 %). Not elsewhere: Kishino's reference
  * iteration (a scene's default) finishes slowly (1e6 discs: not in 14 minutes); a growth to a solid
  * fraction saves little of FIRE and pays the Newton step (1e5: 51 -> 55 s, 150 -> 910 MB); a deposit
  * costs more (1e3 discs: the solver 47 551 iterations on top); a frictionless packing would be left
- * tangential forces. The measurements: docs/packing.md, Measured, sessions 18, 22, 23 and 24. */
+ * tangential forces. The measurements: docs/packing.md, Algorithm and Measured. */
 static const double SETTLE = 1, SETTLE_FINISHED = 4, SETTLE_HELD = 8;
 /* A target stress is reached within this share of it (the settling aims at half of it). */
 static const double STRESS_TOL = 0.01;
@@ -295,19 +293,15 @@ static gb_status keep_contacts(packer *P, gb_error *err)
  * the accuracy until Love's stress is within STRESS_TOL of the target (that seed: 0.1 % after two
  * more), at most EQUILIBRIUM_PASSES times, else the packing fails as not converged. */
 enum { EQUILIBRIUM_PASSES = 6 };
-/* Newton's whole step from FIRE's settled state failed to lower the merit tenfold at 1e5 discs
- * (seeds 1-3; for seed 2 it raised it, and the smoother started from FIRE's state all the same) and
- * at 1e6 (contacts that open, close and slip under it), so the solver's own rule after a failed
- * whole step (src/solver/line_search.c) is taken from the start: its smoother goes first, checked
- * for a stall every SMOOTHER_FIRST steps, and Newton only where it stalls. 1e5 discs, seeds 1-3:
- * 36.9, 29.0, 28.5 -> 33.3, 27.4, 25.6 s (seed 2 with no factorisation: 864 -> 173 MB). The check
- * reads the merit's fall over its stretch, and the smoother's merit is not monotone (FIRE): at 1e6
- * discs it fell tenfold in 250 steps and was 5 times above its start at step 1 000, which a check
- * there took for a stall; Newton's whole step then raised it 1 000 times (72 s and 8 GB wasted) and
- * the smoother went on from the check's state to the accuracy in 1 262 more steps. Checked every 4 000
- * steps, the smoother alone finishes in 2 266 (1e6: 596 -> 520-523 s, 9.7 -> 1.4 GB; session 26,
- * docs/packing.md); 1e4 and 1e5 seeds 1-2 (289, 1 181, 908 steps, not stalled at 1 000) the same
- * bits; 1e5 seed 3, stalled at 1 000 before, 1 427 steps and no factorisation (862 -> 185 MB). */
+/* Newton's whole step from FIRE's settled state fails to lower the merit tenfold (contacts open,
+ * close and slip under it: every 1e5 and 1e6 packing measured), so the solver's own rule after a
+ * failed whole step (src/solver/line_search.c) is taken from the start: its smoother goes first,
+ * checked for a stall every SMOOTHER_FIRST steps, and Newton only where it stalls (a tenth less
+ * time at 1e5 discs, and no factorisation's memory). The check reads the merit's fall over its
+ * stretch, and the smoother's merit is not monotone (FIRE): at 1e6 discs it fell tenfold in 250
+ * steps and was 5 times above its start at step 1 000, which a check there took for a stall, and
+ * Newton's whole step then raised it 1 000 times. Checked every 4 000 steps, the smoother alone
+ * finishes (2 266 steps at 1e6 discs, in a seventh of the memory; docs/packing.md, Measured). */
 static const double SMOOTHER_FIRST = 4000;
 static gb_status solve_at_stress(packer *P, gb_sim *sim, const gb_box *asked, gb_error *err)
 {

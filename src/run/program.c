@@ -54,8 +54,7 @@ static gb_status impose_strain(gb_sim *sim, double de1, double de2, gb_error *er
     if (gb_solver_predicts_strain(sim)) {
         /* The grains follow the box affinely, the prediction of a homogeneous strain: Newton
          * starts with the increment spread over the packing instead of concentrated at the walls
-         * (FIRE-jammed 1e3 discs, 1 % oedometric in 20 steps: 7.7 iterations a step against 8.3,
-         * docs/solver/research.md). */
+         * (FIRE-jammed 1e3 discs, 1 % oedometric in 20 steps: 7.7 iterations a step against 8.3). */
         const gb_box *b = &sim->state.box;
         double xc = 0.5 * (b->left + b->right), yc = 0.5 * (b->bottom + b->top);
         double sx = 2 * dx / (b->right - b->left), sy = 2 * dy / (b->top - b->bottom);
@@ -139,9 +138,7 @@ static gb_status relax(gb_sim *sim, const gb_wall_control *wc, long cap, double 
  * carry no vertical force, so the bottom wall carries the top's force plus the weight: the walls'
  * mean vertical stress s1 = (F_bottom + F_top) / 2W is at least half the weight over the width
  * (across, the same for a horizontal body force). Below it the top wall would rise after grains
- * that fall back, for ever: a 4 000-disc copy of the paper's biaxial scene (its weight of 1 500
- * dyn/cm^2, isotropic 1.5e4 dyn/cm; 2.9e4 needed) was still at its first step after 15 minutes.
- * Refused at once instead, with what the stage needs. Walls with friction or cohesion can carry
+ * that fall back, for ever, and the first step would never end. Refused at once instead, with what the stage needs. Walls with friction or cohesion can carry
  * the weight: not checked. */
 static gb_status weight_reachable(const gb_sim *sim, const gb_stage *sg, const gb_wall_control *wc, gb_error *err)
 {

@@ -1,4 +1,4 @@
-/* The geometric admission of a scene (issue 23): before any computation, every grain's disc (not
+/* The geometric admission of a scene: before any computation, every grain's disc (not
  * only its centre) lies in the box or in the host's cavity, and no two grains overlap, within
  * grains.max_overlap of the (smaller) radius; a grain that does not fit the space at all is refused
  * whatever the tolerance. A grain refused is named by its file, line and column. The overlaps

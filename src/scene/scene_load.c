@@ -305,8 +305,8 @@ static gb_status read_output(gb_ymap *top, gb_scene *s, gb_error *err)
         return st;
     s->measures_every = (int)measures_every;
     s->measures_every_given = me != NULL;
-    /* localisation.csv's row: a triangulation and D2min of every grain at every step (1.0 s of the
-     * 8.4 s of tools/bench_peer.sh's 1e4-disc path) */
+    /* localisation.csv's row: a triangulation and D2min of every grain at every step (about an
+     * eighth of the time of a 1e4-disc loading path) */
     if ((st = gb_ymap_bool(&m, "localisation", 0, &s->localisation, err))) return st;
     /* checkpoints (src/io/checkpoint.c): after every step unless the scene says otherwise */
     long ck_every = s->checkpoint_every;

@@ -60,7 +60,7 @@ gb_status gb_solver_section_read(gb_ymap *top, gb_solver_settings *sv, gb_error 
                                            "(one sparse system), found '%s'", method);
     }
     /* The defaults (docs/solvers.md): the line search on UMFPACK, which converged where the damped
-     * iteration did not (docs/solver/research.md); the damped iteration with CHOLMOD (symmetric:
+     * iteration did not (docs/solver-design.md); the damped iteration with CHOLMOD (symmetric:
      * it cannot factor the line search's exact tangent) and PETSc (whose CG needs symmetry). */
     if (!strcmp(newton, "line_search")) sv->newton = GB_NEWTON_LINE_SEARCH;
     else if (!newton[0] && sv->method == GB_METHOD_GLOBAL && (!linear[0] || !strcmp(linear, "umfpack")))
