@@ -147,7 +147,8 @@ class ReadersFigures(RunDirTest):
         self.assertEqual(main(["figures", self.rd.path, out]), 0)
         made = sorted(os.listdir(out))
         last = int(self.rd.steps["step"][-1])
-        for name in ("force_chains.png", "host_stress.png", f"rose_{last:06d}.png", f"strain_map_{last:06d}.png"):
+        for name in ("force_chains.png", "host_stress.png", f"rose_{last:06d}.png", f"strain_map_{last:06d}.png",
+                     "cavity_wall.png", "localisation_index.png"):
             self.assertIn(name, made)
         self.assertNotIn("stress_strain.png", made)          # a hybrid run has no box stresses
         self.assertTrue(any(n.startswith("convergence_") for n in made))

@@ -17,6 +17,10 @@ summary of it:
   - every load step converged without a cut-back, and the localisation index of each loading step
     lies in [0.1, 1];
   - the four figures exist as PNG files of some size;
+  - `python3 -m gembem figures` draws every figure each directory allows: on the compression (2 +
+    6 steps, every step's contacts and measures kept) the force chains, the last step's rose and
+    strain map, the localisation index, the cavity wall, the host's stress and the top's
+    load-displacement; on the packing its force chains, size and force distributions;
   - no run warns (run_info.yaml's warnings: empty), the reduced pipeline's runs and the full
     demo's settling of 300 grains, whose mean contact force (4.5 kgf) is the demo's smallest
     against the accuracy.
@@ -113,6 +117,18 @@ def main():
         loc = compressed.localisation
         index = np.array([loc["localisation_index"][loc["step"] == k][0] for k in loading])
         check(np.all((index >= 0.1) & (index <= 1)), f"localisation index in [0.1, 1]: {np.round(index, 3)}")
+
+        from gembem.__main__ import main as gembem_main
+        expected = {"compressed": {"force_chains.png", "rose_000008.png", "strain_map_000008.png",
+                                   "localisation_index.png", "cavity_wall.png", "host_stress.png",
+                                   "load_displacement_top.png"},
+                    "packed": {"force_chains.png", "size_distribution.png", "force_distribution.png"}}
+        for name, files in expected.items():
+            into = os.path.join(out, "figures_" + name)
+            code = gembem_main(["figures", os.path.join(out, name), into])
+            drawn = set(os.listdir(into)) if os.path.isdir(into) else set()
+            check(code == 0 and drawn == files, f"python3 -m gembem figures {name}: exit {code}, drew {sorted(drawn)}")
+            made += [(os.path.join(into, f), "") for f in sorted(drawn)]
 
         for path, _ in made:
             with open(path, "rb") as f:
