@@ -8,7 +8,8 @@ the readers agree with each other and with mechanics: the grains' forces on the 
 particles equal the host's (host_particles.csv), one row per step in steps, localisation and
 fields/, per group in host_steps, one particle per cavity element in the state; the host field's
 mesh is whole. Then each figure of gembem.figures is drawn, saved and its content counted; and
-a torn CSV row is an error naming its line.
+a torn CSV row is an error naming its line. Run again with a progress callback, the scene's
+progress lines (a host's have no stress ratio) reach it once per step and none leaks to stderr.
 """
 import os
 import unittest
@@ -154,6 +155,20 @@ class ReadersFigures(RunDirTest):
         self.assertTrue(any(n.startswith("convergence_") for n in made))
         self.assertTrue(any(n.startswith("load_displacement_") for n in made))
         self.assertEqual(main(["figures", self.tmp]), 1)      # not a run directory: a message, status 1
+
+    def test_progress(self):
+        # A hybrid scene's progress lines (no stress ratio) reach the callback, one per step, and
+        # nothing reaches stderr: the same scene, the load steps counted from the scene (1 + 2 + 2).
+        import contextlib
+        import io
+        seen, err, out = [], io.StringIO(), io.StringIO()
+        with contextlib.redirect_stderr(err), contextlib.redirect_stdout(out):
+            gembem.run(os.path.join(ROOT, "tests", "hybrid", "load_grains.yaml"), f"{self.tmp}/run",
+                       progress=seen.append, quiet=False)
+        self.assertEqual([p.step for p in seen], list(range(6)))
+        self.assertTrue(all(p.total == 5 and np.isnan(p.stress_ratio) for p in seen))
+        self.assertEqual(err.getvalue(), "")
+        self.assertIn("5 steps", out.getvalue())       # gembem's summary, on stdout
 
     def test_torn_row(self):
         src = self.rd.file("steps.csv")
