@@ -8,7 +8,7 @@ the readers agree with each other and with mechanics: the grains' forces on the 
 particles equal the host's (host_particles.csv), one row per step in steps, localisation and
 fields/, per group in host_steps, one particle per cavity element in the state; the host field's
 mesh is whole. Then each figure of gembem.figures is drawn, saved and its content counted; and
-a torn CSV row is an error naming its line. Run again with a progress callback, the scene's
+a torn CSV row is an error naming its line; large objects print as one short line. Run again with a progress callback, the scene's
 progress lines (a host's have no stress ratio) reach it once per step and none leaks to stderr.
 """
 import os
@@ -169,6 +169,22 @@ class ReadersFigures(RunDirTest):
         self.assertTrue(all(p.total == 5 and np.isnan(p.stress_ratio) for p in seen))
         self.assertEqual(err.getvalue(), "")
         self.assertIn("5 steps", out.getvalue())       # gembem's summary, on stdout
+
+    def test_repr(self):
+        # Large objects print as one short line with their sizes, not their arrays.
+        run = self.rd
+        m, st = run.host_field(), run.state
+        scene = gembem.Scene.load(os.path.join(ROOT, "tests", "hybrid", "load_grains.yaml"))
+        from gembem.study import Study
+        cases = Study([{"case": f"c{k}", "phi": k} for k in range(40)], scene=None)
+        for obj, has in ((m, f"{len(m.points)} points, {len(m.offsets)} cells"),
+                         (run.snapshot("grains", 4), "27 points"),
+                         (st, f"27 grains, {st.contacts.nrows} contacts"), (run.steps, f"{run.steps.nrows} rows"),
+                         (scene, "grains (27 grains)"), (cases, "40 cases"), (run, run.path)):
+            text = repr(obj)
+            self.assertIn(has, text)
+            self.assertLess(len(text), 600, text)
+            self.assertNotIn("\n", text)
 
     def test_torn_row(self):
         src = self.rd.file("steps.csv")
