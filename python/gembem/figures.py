@@ -147,7 +147,7 @@ def force_chains(run, step=None, ax=None, path=None, max_width=6.0, title=None, 
 
 def size_distribution(run, ax=None, path=None):
     """The grains' radii of the final state (a run's or a packing's) as cumulative distributions,
-    by number and by area (the share of grains, or of the grains' area, with a smaller radius)."""
+    by number and by area (the share of grains, or of the grains' area, of at most each radius)."""
     run = _runs(run)[0]
     fig, ax = _axes(ax)
     r = np.sort(np.asarray(run.state.grains["r"], dtype=float))
@@ -156,7 +156,7 @@ def size_distribution(run, ax=None, path=None):
     ax.step(r, 100 * np.cumsum(r * r) / max(np.sum(r * r), 1e-300), where="post", label="by area")
     length = _units(run)[0]
     ax.set_xlabel(f"radius [{length}]" if length else "radius")
-    ax.set_ylabel("smaller than the radius [%]")
+    ax.set_ylabel("grains of at most this radius [%]")
     ax.set_title(f"grain sizes: {len(r)} grains, radii {r[0]:.4g} to {r[-1]:.4g}" if len(r) else "no grains",
                  fontsize=10)
     ax.grid(alpha=0.3)
