@@ -2,8 +2,9 @@
 
 gembem writes its progress line (step k of n, the stress ratio unless the scene has a host,
 iterations, elapsed) only when its stderr is a terminal, so the command runs with stderr on a
-pseudo-terminal (pty, standard library) and its lines are parsed into Progress records; everything else it writes on stderr is
-kept as the message of the exception raised when it fails (gembem.errors).
+pseudo-terminal (pty, standard library) and its lines are parsed into Progress records;
+everything else it writes on stderr is kept as the message of the exception raised when it fails
+(gembem.errors).
 """
 import os
 import pty

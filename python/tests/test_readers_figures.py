@@ -7,9 +7,10 @@ elsewhere with the iteration history and the per-contact files asked for, and ru
 the readers agree with each other and with mechanics: the grains' forces on the boundary
 particles equal the host's (host_particles.csv), one row per step in steps, localisation and
 fields/, per group in host_steps, one particle per cavity element in the state; the host field's
-mesh is whole. Then each figure of gembem.figures is drawn, saved and its content counted; and
-a torn CSV row is an error naming its line; large objects print as one short line. Run again with a progress callback, the scene's
-progress lines (a host's have no stress ratio) reach it once per step and none leaks to stderr.
+mesh is whole. Then each figure of gembem.figures is drawn, saved and its content counted; a
+torn CSV row is an error naming its line; large objects print as one short line. Run again with
+a progress callback, the scene's progress lines (a host's have no stress ratio) reach it once per
+step and none leaks to stderr.
 """
 import os
 import unittest

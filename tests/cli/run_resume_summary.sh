@@ -11,7 +11,8 @@ trap 'rm -rf "$out"' EXIT
 cd "$out"
 scene=$root/validation/three_discs/case1.yaml
 said=$("$gembem" run "$scene" -o whole) || { echo "FAIL the uninterrupted run failed"; exit 1; }
-[[ $said == "gembem: 110 steps done in "* ]] && echo "ok   uninterrupted: $said" || { echo "FAIL uninterrupted: '$said'"; fail=1; }
+if [[ $said == "gembem: 110 steps done in "* ]]; then echo "ok   uninterrupted: $said"
+else echo "FAIL uninterrupted: '$said'"; fail=1; fi
 (GB_TEST_KILL_AT=300 "$gembem" run "$scene" -o run --quiet) 2>/dev/null
 [ -f run/checkpoint.txt ] || { echo "FAIL the run killed at its 300th write left no checkpoint"; exit 1; }
 said=$("$gembem" run --resume run) || { echo "FAIL the resume failed"; exit 1; }
