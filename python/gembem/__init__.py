@@ -7,17 +7,17 @@
 
 Modules: scene (Scene, YAML writing), runner (run, resume, find_gembem, Progress), errors
 (GembemError and one class per exit status), table (read_csv, parse_csv, Table), state (read_state),
-rundir (Run), vtk (read_vtk, read_pvd), figures (matplotlib, imported on demand).
+rundir (Run, Packing, open_directory), vtk (read_vtk, read_pvd), figures (matplotlib, imported on demand).
 Dependencies: Debian's python3-numpy, python3-yaml; python3-matplotlib for figures.
 """
 from .errors import ConvergenceError, GembemError, OutputError, SceneError
-from .rundir import Run
+from .rundir import Packing, Run, open_directory
 from .runner import Progress, find_gembem, resume, run
 from .scene import Scene, write_grains_csv
 from .state import State, read_state
 from .table import Table, parse_csv, read_csv
 from .vtk import read_pvd, read_vtk
 
-__all__ = ["ConvergenceError", "GembemError", "OutputError", "SceneError", "Run", "Progress", "find_gembem",
-           "resume", "run", "Scene", "write_grains_csv", "State", "read_state", "Table", "parse_csv", "read_csv",
-           "read_pvd", "read_vtk"]
+__all__ = ["ConvergenceError", "GembemError", "OutputError", "SceneError", "Run", "Packing", "open_directory",
+           "Progress", "find_gembem", "resume", "run", "Scene", "write_grains_csv", "State", "read_state", "Table",
+           "parse_csv", "read_csv", "read_pvd", "read_vtk"]

@@ -1,11 +1,13 @@
 """The standard figures of a run directory, and a scene edited by its keys, from the command line.
 
-    PYTHONPATH=python /usr/bin/python3 -m gembem figures RUN_DIR [OUT_DIR]
+    PYTHONPATH=python /usr/bin/python3 -m gembem figures DIR [OUT_DIR]
 
-Draws what the run has (force chains of the final state, the stress ratio against the shear
-strain (box scenes), the convergence of its slowest load step, the last contact rose and strain map, the host's
-stress field and load-displacement curve) into OUT_DIR (default RUN_DIR/figures) and prints each
-file with a line on what it shows.
+Draws every figure the directory's files allow into OUT_DIR (default RUN_DIR/figures) and prints
+each file with a line on what it shows. A run (`gembem run`): the force chains of the final state,
+the stress ratio against the shear strain (box scenes), the convergence of its slowest load step,
+the last contact rose and strain map, the localisation index of every step, and with a host its
+cavity wall's hoop stress (first and last step), stress field and load-displacement curve. A
+packing (`gembem pack`): its force chains, grain sizes and contact force distribution.
 
     PYTHONPATH=python /usr/bin/python3 -m gembem scene IN.yaml -o OUT.yaml [--set KEY=VALUE]
         [--add KEY=VALUE] [--delete KEY] ...
@@ -24,19 +26,37 @@ import sys
 import numpy as np
 
 from . import figures
-from .rundir import Run
+from .rundir import Packing, open_directory
 from .scene import Scene
 from .yamlfile import parse_yaml
 
 
 def standard_figures(run, out):
-    """Draws every standard figure the run's files allow; yields (path, what it shows)."""
+    """Draws every standard figure the directory's files allow (a Run or a Packing); yields
+    (path, what it shows)."""
     os.makedirs(out, exist_ok=True)
-    has = lambda name: os.path.exists(os.path.join(run.path, name))  # noqa: E731
-    s = run.steps
     path = os.path.join(out, "force_chains.png")
     figures.force_chains(run, path=path)
     yield path, "grains of the final state, line width proportional to each contact's normal force"
+    if isinstance(run, Packing):
+        yield from _packing_figures(run, out)
+    else:
+        yield from _run_figures(run, out)
+
+
+def _packing_figures(packing, out):
+    path = os.path.join(out, "size_distribution.png")
+    figures.size_distribution(packing, path=path)
+    yield path, "the grains' radii as cumulative distributions, by number and by area"
+    if packing.state.contacts.nrows:
+        path = os.path.join(out, "force_distribution.png")
+        figures.force_distribution(packing, path=path)
+        yield path, "the normal contact forces over their mean, as a probability density (log scale)"
+
+
+def _run_figures(run, out):
+    has = lambda name: os.path.exists(os.path.join(run.path, name))  # noqa: E731
+    s = run.steps
     if not has("host_steps.csv"):   # a hybrid run has no box: its stresses and strains are 0
         path = os.path.join(out, "stress_strain.png")
         figures.stress_strain(run, path=path)
@@ -57,6 +77,19 @@ def standard_figures(run, out):
         path = os.path.join(out, f"strain_map_{maps[-1]:06d}.png")
         figures.strain_map(run, maps[-1], path=path)
         yield path, f"shear strain increment of step {maps[-1]} on the grain centres' triangles"
+    if has("localisation.csv"):
+        loc = run.localisation
+        if np.any((loc["step"] > 0) & np.isfinite(np.asarray(loc["localisation_index"], dtype=float))):
+            path = os.path.join(out, "localisation_index.png")
+            figures.localisation_index(run, path=path)
+            yield path, "the localisation index of each load step's strain increment (0.1: uniform strain)"
+    walls = run.steps_of("fields", "host_wall")
+    if walls:
+        steps = sorted({walls[0], walls[-1]})
+        path = os.path.join(out, "cavity_wall.png")
+        figures.cavity_wall(run, steps, path=path)
+        yield path, (f"the host's hoop stress along the cavity wall at step{'s' if len(steps) > 1 else ''} "
+                     f"{' and '.join(map(str, steps))}, with the grains and for the empty cavity")
     if has("host_field.vtu"):
         path = os.path.join(out, "host_stress.png")
         figures.host_stress(run, path=path)
@@ -68,6 +101,7 @@ def standard_figures(run, out):
         path = os.path.join(out, f"load_displacement_{group}.png")
         figures.load_displacement(run, group, axis, path=path)
         yield path, f"force on the host's '{group}' against its displacement along {axis} (the loaded group)"
+
 
 class SceneEditError(ValueError):
     """An edit the scene refuses: a key it has not (--set, --delete) or has already (--add)."""
@@ -129,7 +163,7 @@ def scene_command(a):
 def main(argv=None):
     ap = argparse.ArgumentParser(prog="python3 -m gembem", description=__doc__.split("\n")[0])
     sub = ap.add_subparsers(dest="command", required=True)
-    f = sub.add_parser("figures", help="the standard figures of a run directory")
+    f = sub.add_parser("figures", help="the standard figures of a run or packing directory")
     f.add_argument("run_dir")
     f.add_argument("out_dir", nargs="?")
     s = sub.add_parser("scene", help="a scene edited by its keys (--set, --add, --delete), written to -o OUT")
@@ -143,7 +177,7 @@ def main(argv=None):
     if a.command == "scene":
         return scene_command(a)
     try:
-        run = Run(a.run_dir)
+        run = open_directory(a.run_dir)
         for path, what in standard_figures(run, a.out_dir or os.path.join(a.run_dir, "figures")):
             print(f"{path}: {what}")
     except (OSError, ValueError, KeyError) as e:

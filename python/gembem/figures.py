@@ -9,11 +9,11 @@ import os
 import numpy as np
 from matplotlib.collections import LineCollection, PatchCollection
 from matplotlib.figure import Figure
-from matplotlib.patches import Circle, Rectangle
+from matplotlib.patches import Circle, Polygon, Rectangle
 from matplotlib.path import Path
 from matplotlib.tri import Triangulation
 
-from .rundir import Run
+from .rundir import Packing, Run
 from .vtk import read_vtk
 
 
@@ -31,19 +31,20 @@ def _done(fig, path, dpi=120):
 
 
 def _runs(runs):
-    """One run or several, as Run objects (a path is opened)."""
-    if isinstance(runs, (Run, str)) or hasattr(runs, "__fspath__"):
+    """One run or several, as Run objects (a path is opened; a Packing is kept, for the figures of
+    a final state)."""
+    if isinstance(runs, (Run, Packing, str)) or hasattr(runs, "__fspath__"):
         runs = [runs]
-    return [r if isinstance(r, Run) else Run(r) for r in runs]
+    return [r if isinstance(r, (Run, Packing)) else Run(r) for r in runs]
 
 
 def _host_segments(run, displaced=False):
-    """The host's boundary elements as segments (from host_boundary.csv), or None without a host;
+    """The host's boundary elements as segments (from host_boundary.csv), or None without that file;
     displaced: where they are at the end of the run (where the final state's grains are), each
     element's end points moved by the mean displacement of the elements that share them."""
     try:
         b = run.host_boundary
-    except FileNotFoundError:
+    except (FileNotFoundError, AttributeError):   # a box run; a packing (its host has no files)
         return None
     half = 0.5 * b["length"]
     tx, ty = -b["ny"], b["nx"]
@@ -127,6 +128,9 @@ def force_chains(run, step=None, ax=None, path=None, max_width=6.0, title=None, 
     host = _host_segments(run, displaced=True) if step is None and outline else None
     if host is not None:
         ax.add_collection(LineCollection(host, colors="0.4", linewidths=1.0))
+    elif step is None and outline and run.state.host_particles is not None:   # a packing's cavity: no host files
+        p = run.state.host_particles
+        ax.add_patch(Polygon(np.stack([p["x"], p["y"]], 1), closed=True, fill=False, edgecolor="0.4", lw=1.0))
     elif step is None and outline and run.state.box:
         b = run.state.box
         ax.add_patch(Rectangle((b["left"], b["bottom"]), b["right"] - b["left"], b["top"] - b["bottom"],
@@ -138,6 +142,47 @@ def force_chains(run, step=None, ax=None, path=None, max_width=6.0, title=None, 
     where = "final state" if step is None else f"step {step}"
     ax.set_title(title or f"force chains, {where}\n(line width proportional to the normal force, "
                           f"largest {c['pn'].max() if c.nrows else 0:.4g})", fontsize=9)
+    return _done(fig, path)
+
+
+def size_distribution(run, ax=None, path=None):
+    """The grains' radii of the final state (a run's or a packing's) as cumulative distributions,
+    by number and by area (the share of grains, or of the grains' area, of at most each radius)."""
+    run = _runs(run)[0]
+    fig, ax = _axes(ax)
+    r = np.sort(np.asarray(run.state.grains["r"], dtype=float))
+    share = np.arange(1, len(r) + 1) / max(len(r), 1)
+    ax.step(r, 100 * share, where="post", label="by number")
+    ax.step(r, 100 * np.cumsum(r * r) / max(np.sum(r * r), 1e-300), where="post", label="by area")
+    length = _units(run)[0]
+    ax.set_xlabel(f"radius [{length}]" if length else "radius")
+    ax.set_ylabel("grains of at most this radius [%]")
+    ax.set_title(f"grain sizes: {len(r)} grains, radii {r[0]:.4g} to {r[-1]:.4g}" if len(r) else "no grains",
+                 fontsize=10)
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    return _done(fig, path)
+
+
+def force_distribution(run, step=None, bins=30, ax=None, path=None):
+    """The normal contact forces over their mean (force-carrying contacts, pn > 0) as a probability
+    density, log scale: the exponential tail of a jammed packing's forces shows as a straight line.
+    step None: the final state; else contacts/ of that step."""
+    run = _runs(run)[0]
+    fig, ax = _axes(ax)
+    pn = np.asarray(run.contacts(step)["pn"], dtype=float)
+    pn = pn[pn > 0]
+    if len(pn):
+        f = pn / pn.mean()
+        density, edges = np.histogram(f, bins=bins, density=True)
+        mid = 0.5 * (edges[:-1] + edges[1:])
+        ax.semilogy(mid[density > 0], density[density > 0], marker="o", ms=3, lw=1.0)
+    ax.set_xlabel("normal force / mean normal force")
+    ax.set_ylabel("probability density")
+    where = "final state" if step is None else f"step {step}"
+    ax.set_title(f"contact force distribution, {where}: {len(pn)} contacts, mean {pn.mean() if len(pn) else 0:.4g}",
+                 fontsize=10)
+    ax.grid(alpha=0.3, which="both")
     return _done(fig, path)
 
 

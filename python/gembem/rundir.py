@@ -1,4 +1,5 @@
-"""A run directory (what `gembem run SCENE -o RUN` leaves) as numpy arrays, file by file.
+"""A run directory (what `gembem run SCENE -o RUN` leaves) or a packing directory (`gembem pack`)
+as numpy arrays, file by file.
 
 Every CSV goes through the one reader, gembem.table.read_csv; the per-step files are named
 FOLDER/KIND_NNNNNN.csv (contacts/, fields/), VTK files go through gembem.vtk.
@@ -38,7 +39,81 @@ def _table(name, doc):
     return functools.cached_property(get)
 
 
-class Run:
+class _Directory:
+    """What a run directory and a packing directory share: a scene copy and a final state."""
+    kind, marker, writer = "", "", ""
+
+    def __init__(self, path):
+        self.path = os.fspath(path)
+        if not os.path.isfile(os.path.join(self.path, self.marker)):
+            other = next((c for c in (Run, Packing) if c is not type(self)
+                          and os.path.isfile(os.path.join(self.path, c.marker))), None)
+            hint = (f" but a {other.kind} ({other.marker}): gembem.{other.__name__} reads it" if other
+                    else f"; expected the directory of `{self.writer}`")
+            raise FileNotFoundError(f"{self.path}: not a {self.kind} (no {self.marker}){hint}")
+
+    def file(self, name):
+        """The path of a file of the directory; a missing one raises FileNotFoundError saying what writes it."""
+        path = os.path.join(self.path, name)
+        if not os.path.exists(path):
+            why = _why(name)
+            raise FileNotFoundError(f"{path}: no such file in the {self.kind}" + (f" ({why})" if why else ""))
+        return path
+
+    def table(self, name):
+        """Any CSV file of the directory, by its path relative to it."""
+        return read_csv(self.file(name))
+
+    @functools.cached_property
+    def state(self):
+        """The final state (state.yaml and its CSV files)."""
+        return read_state(self.file("state.yaml"))
+
+    @functools.cached_property
+    def scene(self):
+        """The copy of the scene (scene.yaml), as loaded by yaml."""
+        return read_yaml(self.file("scene.yaml"))
+
+
+class Packing(_Directory):
+    """What `gembem pack SCENE -o DIR` leaves: ``pack_info`` (pack_info.yaml as a dict: solid
+    fraction, coordination, radius_scale, ...), ``state`` and ``scene``; ``grains()`` and
+    ``contacts()`` are the state's, as a Run's final ones, so that the figures of a final state
+    draw a packing too."""
+    kind, marker, writer = "packing directory", "pack_info.yaml", "gembem pack SCENE -o DIR"
+
+    def __repr__(self):
+        return f"Packing({self.path!r})"
+
+    @functools.cached_property
+    def pack_info(self):
+        """pack_info.yaml: how the packing was made and what it is."""
+        return read_yaml(self.file("pack_info.yaml"))
+
+    def grains(self, step=None):
+        """The packed grains (the state's); a packing has no steps (step None)."""
+        return self._final(step, self.state.grains)
+
+    def contacts(self, step=None):
+        """The packing's contacts (the state's); a packing has no steps (step None)."""
+        return self._final(step, self.state.contacts)
+
+    def _final(self, step, table):
+        if step is not None:
+            raise ValueError(f"{self.path}: a packing has its final state only, not step {step}")
+        return table
+
+
+def open_directory(path):
+    """A Run or a Packing, whichever PATH is (run_info.yaml or pack_info.yaml)."""
+    for kind in (Run, Packing):
+        if os.path.isfile(os.path.join(os.fspath(path), kind.marker)):
+            return kind(path)
+    raise FileNotFoundError(f"{os.fspath(path)}: neither a run directory (run_info.yaml) nor a packing directory "
+                            "(pack_info.yaml); expected the directory of `gembem run` or `gembem pack`")
+
+
+class Run(_Directory):
     """The outputs of one run directory, read when first asked for (and then kept).
 
     Tables (gembem.table.Table: columns by name): ``steps``, ``history``, ``micromechanics``,
@@ -49,27 +124,10 @@ class Run:
     ``state`` (gembem.state.State). YAML as dicts: ``scene``, ``run_info``, ``host_info``. VTK:
     ``host_field()``, ``snapshot(kind, step)``.
     """
-
-    def __init__(self, path):
-        self.path = os.fspath(path)
-        if not os.path.isfile(os.path.join(self.path, "run_info.yaml")):
-            raise FileNotFoundError(f"{self.path}: not a run directory (no run_info.yaml); "
-                                    "expected the RUNDIR of `gembem run SCENE -o RUNDIR`")
+    kind, marker, writer = "run directory", "run_info.yaml", "gembem run SCENE -o RUNDIR"
 
     def __repr__(self):
         return f"Run({self.path!r})"
-
-    def file(self, name):
-        """The path of a file of the run; a missing one raises FileNotFoundError saying what writes it."""
-        path = os.path.join(self.path, name)
-        if not os.path.exists(path):
-            why = _why(name)
-            raise FileNotFoundError(f"{path}: no such file in the run directory" + (f" ({why})" if why else ""))
-        return path
-
-    def table(self, name):
-        """Any CSV file of the run, by its path relative to the run directory."""
-        return read_csv(self.file(name))
 
     steps = _table("steps.csv", "one row per load step, step 0 the initial state")
     history = _table("history.csv", "one row per iteration that did not converge")
@@ -78,16 +136,6 @@ class Run:
     host_steps = _table("host_steps.csv", "per step and boundary group: displacement and force")
     host_particles = _table("host_particles.csv", "the boundary particles at the end")
     host_boundary = _table("host_boundary.csv", "per boundary element at the end")
-
-    @functools.cached_property
-    def state(self):
-        """The final state (state.yaml and its CSV files)."""
-        return read_state(self.file("state.yaml"))
-
-    @functools.cached_property
-    def scene(self):
-        """The run's copy of its scene (scene.yaml), as loaded by yaml."""
-        return read_yaml(self.file("scene.yaml"))
 
     @functools.cached_property
     def run_info(self):

@@ -1,9 +1,10 @@
 """Running the `gembem` command from Python: its progress as it goes, its failures as exceptions.
 
-gembem writes its progress line (step k of n, stress ratio, iterations, elapsed) only when its
-stderr is a terminal, so the command runs with stderr on a pseudo-terminal (pty, standard
-library) and its lines are parsed into Progress records; everything else it writes on stderr is
-kept as the message of the exception raised when it fails (gembem.errors).
+gembem writes its progress line (step k of n, the stress ratio unless the scene has a host,
+iterations, elapsed) only when its stderr is a terminal, so the command runs with stderr on a
+pseudo-terminal (pty, standard library) and its lines are parsed into Progress records;
+everything else it writes on stderr is kept as the message of the exception raised when it fails
+(gembem.errors).
 """
 import os
 import pty
@@ -22,12 +23,14 @@ from .scene import Scene
 _HERE = os.path.dirname(os.path.abspath(__file__))
 # The build tree of the checkout this package lives in (python/gembem -> build/gembem).
 _BUILD_TREE = os.path.normpath(os.path.join(_HERE, "..", "..", "build", "gembem"))
-_PROGRESS = re.compile(r"step (\d+) of (\d+)\s+stress ratio (\S+)\s+iterations (\d+)\s+elapsed (\S+) s")
+# A hybrid scene's line has no stress ratio (a host has no box stresses).
+_PROGRESS = re.compile(r"step (\d+) of (\d+)(?:\s+stress ratio (\S+))?\s+iterations (\d+)\s+elapsed (\S+) s")
 
 
 @dataclass(frozen=True)
 class Progress:
-    """One of gembem's progress lines: after load step ``step`` of ``total``."""
+    """One of gembem's progress lines: after load step ``step`` of ``total`` (step 0: the initial
+    state); stress_ratio NaN for a hybrid scene, whose host has no box stresses."""
     step: int
     total: int
     stress_ratio: float
@@ -178,7 +181,8 @@ class _Streams:
         if m:
             step = int(m.group(1))
             if step != self.last_step and self.progress is not None and not self.quiet:
-                p = Progress(step, int(m.group(2)), float(m.group(3)), int(m.group(4)), float(m.group(5)), line.strip())
+                ratio = float(m.group(3)) if m.group(3) is not None else float("nan")
+                p = Progress(step, int(m.group(2)), ratio, int(m.group(4)), float(m.group(5)), line.strip())
                 self.progress(p)
                 self.mid_line = self.progress is print_progress and p.step < p.total
             self.last_step = step

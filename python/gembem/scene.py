@@ -65,6 +65,26 @@ class Scene:
         version = doc.pop("gembem", 1)
         return cls(**kwargs, extra=doc, version=version)
 
+    def __repr__(self):
+        """The sections it has, with the sizes of the long ones: a scene's grains can be thousands."""
+        parts = []
+        for name in [f.name for f in dataclasses.fields(self) if f.name not in ("extra", "version")] + list(self.extra):
+            v = self.extra[name] if name in self.extra else getattr(self, name)
+            if v is None:
+                continue
+            if name == "grains":
+                listed = v.get("list") if isinstance(v, dict) else v
+                if isinstance(v, dict) and "file" in v:
+                    name += f" (file {os.path.basename(os.fspath(v['file']))})"
+                elif listed is not None and not isinstance(listed, (str, dict)):
+                    name += f" ({len(listed)} grains)"
+            elif name == "loading" and isinstance(v, list):
+                name += f" ({len(v)} stage{'s' if len(v) != 1 else ''})"
+            elif name == "initial_state":
+                name += f" ({getattr(v, 'path', v)})"
+            parts.append(name)
+        return f"Scene({', '.join(parts)})"
+
     def with_value(self, dotted, value):
         """A copy with one value replaced, e.g. ``with_value("materials.grain_grain.friction_deg", 25)``
         or ``with_value("loading.1.shear_mean_stress.steps", 50)`` (list items by index); maps on

@@ -19,6 +19,12 @@ class State:
     host_particles: Table
     yaml: dict
 
+    def __repr__(self):
+        b = self.box
+        box = f", box x [{b['left']:.6g}, {b['right']:.6g}] y [{b['bottom']:.6g}, {b['top']:.6g}]" if b else ""
+        host = f", host: {self.host_particles.nrows} boundary particles" if self.host_particles is not None else ""
+        return f"State({self.path!r}: {self.grains.nrows} grains, {self.contacts.nrows} contacts{box}{host})"
+
 
 def read_state(path):
     """Reads a state: the path of state.yaml, or of a run directory holding one.

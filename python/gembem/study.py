@@ -74,6 +74,12 @@ class Study:
     threads: int = 1
     resources: dict = field(default_factory=lambda: {"runtime": 60, "mem_mb": 2000})
 
+    def __repr__(self):
+        names = [str(c.get("case")) for c in self.cases]
+        shown = ", ".join(names[:5]) + (f", ... ({len(names) - 5} more)" if len(names) > 5 else "")
+        columns = sorted({k for c in self.cases for k in c} - {"case"})
+        return f"Study({len(names)} cases: {shown}; columns: {', '.join(columns) or 'none'})"
+
     def __post_init__(self):
         if not isinstance(self.cases, list):
             self.cases = read_cases(self.cases)

@@ -25,6 +25,12 @@ class Mesh:
     point_data: dict = field(default_factory=dict)
     cell_data: dict = field(default_factory=dict)
 
+    def __repr__(self):
+        def arrays(data):
+            return ", ".join(f"{k} {'x'.join(map(str, v.shape))}" for k, v in data.items()) or "none"
+        return (f"Mesh({self.path!r}: {len(self.points)} points, {len(self.offsets)} cells; "
+                f"point data: {arrays(self.point_data)}; cell data: {arrays(self.cell_data)})")
+
     def cells(self):
         """The cells as a list of point-index arrays."""
         starts = np.concatenate([[0], self.offsets[:-1]])

@@ -7,8 +7,10 @@ elsewhere with the iteration history and the per-contact files asked for, and ru
 the readers agree with each other and with mechanics: the grains' forces on the boundary
 particles equal the host's (host_particles.csv), one row per step in steps, localisation and
 fields/, per group in host_steps, one particle per cavity element in the state; the host field's
-mesh is whole. Then each figure of gembem.figures is drawn, saved and its content counted; and
-a torn CSV row is an error naming its line.
+mesh is whole. Then each figure of gembem.figures is drawn, saved and its content counted; a
+torn CSV row is an error naming its line; large objects print as one short line. Run again with
+a progress callback, the scene's progress lines (a host's have no stress ratio) reach it once per
+step and none leaks to stderr.
 """
 import os
 import unittest
@@ -147,12 +149,43 @@ class ReadersFigures(RunDirTest):
         self.assertEqual(main(["figures", self.rd.path, out]), 0)
         made = sorted(os.listdir(out))
         last = int(self.rd.steps["step"][-1])
-        for name in ("force_chains.png", "host_stress.png", f"rose_{last:06d}.png", f"strain_map_{last:06d}.png"):
+        for name in ("force_chains.png", "host_stress.png", f"rose_{last:06d}.png", f"strain_map_{last:06d}.png",
+                     "cavity_wall.png", "localisation_index.png"):
             self.assertIn(name, made)
         self.assertNotIn("stress_strain.png", made)          # a hybrid run has no box stresses
         self.assertTrue(any(n.startswith("convergence_") for n in made))
         self.assertTrue(any(n.startswith("load_displacement_") for n in made))
         self.assertEqual(main(["figures", self.tmp]), 1)      # not a run directory: a message, status 1
+
+    def test_progress(self):
+        # A hybrid scene's progress lines (no stress ratio) reach the callback, one per step, and
+        # nothing reaches stderr: the same scene, the load steps counted from the scene (1 + 2 + 2).
+        import contextlib
+        import io
+        seen, err, out = [], io.StringIO(), io.StringIO()
+        with contextlib.redirect_stderr(err), contextlib.redirect_stdout(out):
+            gembem.run(os.path.join(ROOT, "tests", "hybrid", "load_grains.yaml"), f"{self.tmp}/run",
+                       progress=seen.append, quiet=False)
+        self.assertEqual([p.step for p in seen], list(range(6)))
+        self.assertTrue(all(p.total == 5 and np.isnan(p.stress_ratio) for p in seen))
+        self.assertEqual(err.getvalue(), "")
+        self.assertIn("5 steps", out.getvalue())       # gembem's summary, on stdout
+
+    def test_repr(self):
+        # Large objects print as one short line with their sizes, not their arrays.
+        run = self.rd
+        m, st = run.host_field(), run.state
+        scene = gembem.Scene.load(os.path.join(ROOT, "tests", "hybrid", "load_grains.yaml"))
+        from gembem.study import Study
+        cases = Study([{"case": f"c{k}", "phi": k} for k in range(40)], scene=None)
+        for obj, has in ((m, f"{len(m.points)} points, {len(m.offsets)} cells"),
+                         (run.snapshot("grains", 4), "27 points"),
+                         (st, f"27 grains, {st.contacts.nrows} contacts"), (run.steps, f"{run.steps.nrows} rows"),
+                         (scene, "grains (27 grains)"), (cases, "40 cases"), (run, run.path)):
+            text = repr(obj)
+            self.assertIn(has, text)
+            self.assertLess(len(text), 600, text)
+            self.assertNotIn("\n", text)
 
     def test_torn_row(self):
         src = self.rd.file("steps.csv")

@@ -19,6 +19,17 @@ static void usage(FILE *to)
                 "  could not be written.\n");
 }
 
+/* What the packing did to the radii drawn from sizes: (growth) they take a common scale to reach the
+ * target, which a user reads as the sizes asked for unless told. Empty when they were kept. */
+static void scale_note(char *out, size_t cap, double scale)
+{
+    out[0] = 0;
+    if (scale < 1)
+        snprintf(out, cap, "; the drawn radii shrunk to %.3g of their size to reach the target (radius_scale)", scale);
+    else if (scale > 1)
+        snprintf(out, cap, "; the drawn radii grown %.3g times to reach the target (radius_scale)", scale);
+}
+
 int gb_cli_pack(int argc, char **argv)
 {
     const char *scene_path = NULL, *dir = NULL;
@@ -53,11 +64,14 @@ int gb_cli_pack(int argc, char **argv)
     if (gb_pack_make(&scene, scene.host.present ? &mesh : NULL, &def, &res, &sim, &err) ||
         gb_pack_write(dir, command, sim, &def, &res, &err))
         code = gb_cli_report(&err);
-    else if (!quiet)
+    else if (!quiet) {
+        char note[160];
+        scale_note(note, sizeof note, res.radius_scale);
         printf("gembem: %d grains packed in %.2f s: solid fraction %.4f, coordination %.3f (%.3f without %d "
-               "rattlers), largest fixing force %.3g; results in %s\n", res.n,
+               "rattlers), largest fixing force %.3g%s; results in %s\n", res.n,
                res.seconds[0] + res.seconds[1] + res.seconds[2] + res.seconds[3], res.solid_fraction,
-               res.coordination, res.coordination_nonrattlers, res.rattlers, res.max_fixing_force, dir);
+               res.coordination, res.coordination_nonrattlers, res.rattlers, res.max_fixing_force, note, dir);
+    }
     gb_sim_free(sim);
     gb_bem_mesh_free(&mesh);
     gb_scene_free(&scene);

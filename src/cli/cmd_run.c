@@ -13,6 +13,7 @@ typedef struct {
     int progress;   /* stderr is a terminal */
     int quiet;
     struct timespec t0;
+    int ran;        /* load steps (1, 2, ...) completed by this process: a resume runs fewer than the scene has */
 } run_ctx;
 
 static double elapsed(const struct timespec *t0)
@@ -27,6 +28,7 @@ static gb_status on_step(void *user, const gb_sim *sim, const gb_step_report *r,
 {
     (void)err;
     run_ctx *c = user;
+    if (r->step >= 1) c->ran++;
     if (c->progress && !c->quiet) {
         /* a host has no box stresses: its steps show no stress ratio (steps.csv writes nan) */
         char ratio[48] = "";
@@ -103,7 +105,7 @@ int gb_cli_run(int argc, char **argv)
         gb_scene_free(&scene);
         return gb_cli_report(&err);
     }
-    run_ctx ctx = {isatty(2), quiet, {0, 0}};
+    run_ctx ctx = {isatty(2), quiet, {0, 0}, 0};
     clock_gettime(CLOCK_MONOTONIC, &ctx.t0);
     gb_run_output *out = NULL;
     if (resume ? gb_run_output_resume(dir, sim, command, &out, &err)
@@ -120,9 +122,13 @@ int gb_cli_run(int argc, char **argv)
     int code = 0;
     if (st) code = gb_cli_report(&err);
     else if (cst) code = gb_cli_report(&close_err);
-    else if (!quiet)
-        printf("gembem: %d steps done in %.2f s; results in %s\n", gb_scene_total_steps(&scene), elapsed(&ctx.t0),
-               dir);
+    else if (!quiet) {
+        /* the steps run here; a completed resume ran the scene's last ones, after the checkpoint's step */
+        int total = gb_scene_total_steps(&scene);
+        char from[64] = "";
+        if (resume) snprintf(from, sizeof from, ", resumed after step %d of %d", total - ctx.ran, total);
+        printf("gembem: %d steps done in %.2f s%s; results in %s\n", ctx.ran, elapsed(&ctx.t0), from, dir);
+    }
     gb_sim_free(sim);
     gb_scene_free(&scene);
     return code;

@@ -16,7 +16,14 @@ summary of it:
     nominal stress (the grains are softer than the host: kn/G = 1 cm);
   - every load step converged without a cut-back, and the localisation index of each loading step
     lies in [0.1, 1];
-  - the four figures exist as PNG files of some size.
+  - the four figures exist as PNG files of some size;
+  - `python3 -m gembem figures` draws every figure each directory allows: on the compression (2 +
+    6 steps, every step's contacts and measures kept) the force chains, the last step's rose and
+    strain map, the localisation index, the cavity wall, the host's stress and the top's
+    load-displacement; on the packing its force chains, size and force distributions;
+  - no run warns (run_info.yaml's warnings: empty), the reduced pipeline's runs and the full
+    demo's settling of 300 grains, whose mean contact force (4.5 kgf) is the demo's smallest
+    against the accuracy.
 """
 import os
 import shutil
@@ -50,13 +57,32 @@ def particle_balance(run, step):
     return np.hypot(hp["host_fx"] - on[:, 0], hp["host_fy"] - on[:, 1]).max(), np.abs(on).max()
 
 
+def warnings(run):
+    return run.run_info.get("warnings") or []
+
+
+def full_settle(out):
+    """The demo's own pack (300 grains) and settle, as tools/demo.sh runs them."""
+    pack, settle, _ = demo.scenes(out)
+    demo.execute(["pack", pack.write(os.path.join(out, "packed.yaml")), "-o", os.path.join(out, "packed")],
+                 quiet=True)
+    return demo.gembem.run(settle, os.path.join(out, "settled"), quiet=True, progress=None)
+
+
 def main():
     out = tempfile.mkdtemp(prefix="gembem_demo_")
     try:
+        settled = full_settle(os.path.join(out, "full"))
+        s = settled.steps
+        check(not warnings(settled), f"the demo's settling of {settled.state.grains.nrows} grains warns of nothing "
+              f"(accuracy {s['accuracy'][-1]:g}, mean normal contact force {s['mean_normal_force'][-1]:.3g}): "
+              f"{warnings(settled)}")
         settled, compressed, seconds = demo.run_all(out, grains=80, steps=6, quiet=True)
         made = list(demo.draw(settled, compressed, os.path.join(out, "figures")))
         print(f"pipeline {seconds:.1f} s; {', '.join(os.path.basename(p) for p, _ in made)}")
         accuracy = compressed.scene["solver"]["accuracy"]
+        for run in (settled, compressed):
+            check(not warnings(run), f"{os.path.basename(run.path)}: no warning: {warnings(run)}")
 
         p = settled.host_particles
         u = np.hypot(p["ux"], p["uy"]).max()
@@ -91,6 +117,18 @@ def main():
         loc = compressed.localisation
         index = np.array([loc["localisation_index"][loc["step"] == k][0] for k in loading])
         check(np.all((index >= 0.1) & (index <= 1)), f"localisation index in [0.1, 1]: {np.round(index, 3)}")
+
+        from gembem.__main__ import main as gembem_main
+        expected = {"compressed": {"force_chains.png", "rose_000008.png", "strain_map_000008.png",
+                                   "localisation_index.png", "cavity_wall.png", "host_stress.png",
+                                   "load_displacement_top.png"},
+                    "packed": {"force_chains.png", "size_distribution.png", "force_distribution.png"}}
+        for name, files in expected.items():
+            into = os.path.join(out, "figures_" + name)
+            code = gembem_main(["figures", os.path.join(out, name), into])
+            drawn = set(os.listdir(into)) if os.path.isdir(into) else set()
+            check(code == 0 and drawn == files, f"python3 -m gembem figures {name}: exit {code}, drew {sorted(drawn)}")
+            made += [(os.path.join(into, f), "") for f in sorted(drawn)]
 
         for path, _ in made:
             with open(path, "rb") as f:
