@@ -10,6 +10,7 @@
 
 #include "cli/cli.h"
 #include "gembem/run.h"
+#include "io/file_util.h"
 
 typedef struct {
     int progress;   /* stderr is a terminal */
@@ -40,7 +41,7 @@ static gb_status on_step(void *user, const gb_sim *sim, const gb_step_report *r,
     return GB_OK;
 }
 
-/* SIGTERM, SIGINT, SIGHUP: the first asks the run to stop (it checkpoints where it is, records
+/* SIGTERM, SIGINT, SIGHUP (unless ignored at the start): the first asks the run to stop (it checkpoints where it is, records
  * `interrupted` and returns); a second while it finishes ends the process at once, as without us. */
 static void on_signal(int signo)
 {
@@ -61,7 +62,12 @@ static void catch_stop_signals(void)
     sa.sa_flags = SA_RESTART; /* the writes in progress go on; the run looks at the flag between them */
     sigemptyset(&sa.sa_mask);
     for (int k = 0; k < 3; k++) sigaddset(&sa.sa_mask, sigs[k]);
-    for (int k = 0; k < 3; k++) sigaction(sigs[k], &sa, NULL);
+    for (int k = 0; k < 3; k++) {
+        struct sigaction old;
+        /* one ignored when we started stays so (nohup; a shell's background job and SIGINT) */
+        if (sigaction(sigs[k], NULL, &old) == 0 && old.sa_handler == SIG_IGN) continue;
+        sigaction(sigs[k], &sa, NULL);
+    }
 }
 
 static void usage(FILE *to)
@@ -105,10 +111,11 @@ int gb_cli_run(int argc, char **argv)
 
     gb_error err = {0};
     char resume_scene[PATH_MAX];
-    if (resume && !scene_path) {
-        if (gb_run_output_resume_scene(resume, resume_scene, sizeof resume_scene, &err)) return gb_cli_report(&err);
-        scene_path = resume_scene;
-    }
+    /* a directory in use (or too long a path) refused at once, before the scene is read */
+    if (resume && gb_run_output_resume_scene(resume, resume_scene, sizeof resume_scene, &err))
+        return gb_cli_report(&err);
+    if (resume && !scene_path) scene_path = resume_scene;
+    if (!resume && gb_output_dir_check(dir, overwrite, "run directory", &err)) return gb_cli_report(&err);
     if (resume) dir = resume;
     gb_scene scene;
     if (gb_scene_load(scene_path, &scene, &err)) return gb_cli_report(&err);

@@ -114,6 +114,9 @@ gb_status gb_dir_lock_take(gb_dir_lock *l, const char *dir, int create, int over
         return gb_dir_lock_refuse(dir, what, holder, err);
     }
     l->fd = fd;
+    snprintf(l->path, sizeof l->path, "%s", path);
+    ssize_t k = pread(fd, l->prev, sizeof l->prev, 0);
+    l->prev_len = k > 0 ? (int)k : -1; /* an empty one, as one just made, goes again */
     /* a writer that took the directory between the checks above and the lock has finished by now */
     if (create && (st = gb_dir_empty_check(dir, overwrite, what, err))) {
         gb_dir_lock_release(l);
@@ -139,6 +142,17 @@ int gb_dir_lock_status(gb_dir_lock *l, const char *status)
 {
     if (l->fd < 0) return -1;
     return write_record(l, status);
+}
+
+void gb_dir_lock_undo(gb_dir_lock *l)
+{
+    if (l->fd < 0) return;
+    if (l->prev_len < 0) unlink(l->path);
+    /* should this fail, the file names this process: a holder gone, which readers take as such */
+    int ok = l->prev_len < 0 || (pwrite(l->fd, l->prev, (size_t)l->prev_len, 0) == l->prev_len &&
+                                 ftruncate(l->fd, l->prev_len) == 0);
+    (void)ok;
+    gb_dir_lock_release(l);
 }
 
 void gb_dir_lock_release(gb_dir_lock *l)

@@ -9,6 +9,7 @@
 #include <stddef.h>
 
 #include "gembem/status.h"
+#include "io/file_util.h"
 
 #define GB_LOCK_NAME ".lock"
 enum { GB_LOCK_SIZE = 512 };
@@ -16,6 +17,9 @@ enum { GB_LOCK_SIZE = 512 };
 typedef struct {
     int fd; /* -1: not held */
     char holder[GB_LOCK_SIZE]; /* the record as written (pid, host, started), without its status */
+    char prev[GB_LOCK_SIZE];   /* the lock file as it was before this process took it */
+    int prev_len;              /* its length; -1: this process created it */
+    char path[GB_DIR_MAX + 16];
 } gb_dir_lock;
 
 /* Takes dir for this process. create: dir is made if absent and, unless overwrite, must be empty
@@ -27,6 +31,9 @@ gb_status gb_dir_lock_take(gb_dir_lock *l, const char *dir, int create, int over
 /* Records the writer's status ("running", "completed", "interrupted", "i/o error", ...) in the lock
  * file, in place; 0 if written. */
 int gb_dir_lock_status(gb_dir_lock *l, const char *status);
+/* Lets go of dir, its lock file put back as it was (a refused resume leaves the directory as it
+ * found it). */
+void gb_dir_lock_undo(gb_dir_lock *l);
 /* Lets go of dir (the lock file stays, with the last status). */
 void gb_dir_lock_release(gb_dir_lock *l);
 

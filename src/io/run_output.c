@@ -94,14 +94,15 @@ static gb_status write_info(const gb_run_output *o, const gb_sim *sim, const cha
     return gb_atomic_commit(&a, err);
 }
 
-/* An open or a resume that failed: o's files closed, `record` the lock's status (a resume: the
- * directory's as it was), the lock let go, o freed. */
-static gb_status open_failed(gb_run_output *o, gb_status st, const char *record)
+/* An open or a resume (undo: the lock file put back as it was) that failed: o's files closed, the
+ * lock let go, o freed. */
+static gb_status open_failed(gb_run_output *o, gb_status st, int undo)
 {
     FILE *files[4] = {o->steps, o->micro, o->host, o->history};
     for (int k = 0; k < 4; k++)
         if (files[k]) fclose(files[k]);
-    gb_dir_lock_status(&o->lock, record ? record : gb_status_name(st));
+    if (undo) gb_dir_lock_undo(&o->lock);
+    else gb_dir_lock_status(&o->lock, gb_status_name(st));
     gb_dir_lock_release(&o->lock);
     free(o->snap_steps);
     free(o);
@@ -140,18 +141,18 @@ gb_status gb_run_output_open(const char *dir, const gb_sim *sim, int overwrite, 
     snprintf(path, sizeof path, "%s/%s", dir, GB_CHECKPOINT_NAME); /* an older run's, with --overwrite */
     if (remove(path) != 0 && errno != ENOENT) {
         st = gb_fail(err, GB_EIO, "%s: %s", path, strerror(errno));
-        return open_failed(o, st, NULL);
+        return open_failed(o, st, 0);
     }
     snprintf(path, sizeof path, "%s/scene.yaml", dir);
     o->started_seconds = gb_clock_seconds();
     if ((st = gb_copy_file(scene->path, path, err)) || (st = write_info(o, sim, "running", NULL, NULL, err)))
-        return open_failed(o, st, NULL);
+        return open_failed(o, st, 0);
     snprintf(path, sizeof path, "%s/steps.csv", dir);
-    if (!(o->steps = fopen(path, "w"))) return open_failed(o, gb_fail(err, GB_EIO, "%s: %s", path, strerror(errno)), NULL);
+    if (!(o->steps = fopen(path, "w"))) return open_failed(o, gb_fail(err, GB_EIO, "%s: %s", path, strerror(errno)), 0);
     gb_steps_csv_header(o->steps);
     fflush(o->steps);
     snprintf(path, sizeof path, "%s/micromechanics.csv", dir);
-    if (!(o->micro = fopen(path, "w"))) return open_failed(o, gb_fail(err, GB_EIO, "%s: %s", path, strerror(errno)), NULL);
+    if (!(o->micro = fopen(path, "w"))) return open_failed(o, gb_fail(err, GB_EIO, "%s: %s", path, strerror(errno)), 0);
     /* Tensors in x (horizontal), y (vertical) components; energies absolute (force x length) and
      * since the start of the run; densities divide by the area. */
     fprintf(o->micro, "step,contacts,wall_contacts,coordination,C_xx,C_yy,C_xy,C_major,C_minor,C_angle_deg,"
@@ -162,13 +163,13 @@ gb_status gb_run_output_open(const char *dir, const gb_sim *sim, int overwrite, 
     if (scene->host.present) {
         snprintf(path, sizeof path, "%s/host_steps.csv", dir);
         if (!(o->host = fopen(path, "w")))
-            return open_failed(o, gb_fail(err, GB_EIO, "%s: %s", path, strerror(errno)), NULL);
+            return open_failed(o, gb_fail(err, GB_EIO, "%s: %s", path, strerror(errno)), 0);
         gb_host_write_steps_header(o->host, scene);
     }
     if (scene->solver.history) {
         snprintf(path, sizeof path, "%s/history.csv", dir);
         if (!(o->history = fopen(path, "w")))
-            return open_failed(o, gb_fail(err, GB_EIO, "%s: %s", path, strerror(errno)), NULL);
+            return open_failed(o, gb_fail(err, GB_EIO, "%s: %s", path, strerror(errno)), 0);
         fprintf(o->history, "step,attempt,iteration,max_fixing_force,wall_residual,largest_move,damping,length\n");
         fflush(o->history);
     }
@@ -292,8 +293,7 @@ gb_status gb_run_output_resume(const char *dir, gb_sim *sim, const char *command
     }
     for (int k = 0; k < ck.n_files && !st; k++) st = gb_checkpoint_file_rewind(dir, &ck.file[k], err);
     if (st) {
-        gb_dir_lock_status(&lock, status); /* as it was */
-        gb_dir_lock_release(&lock);
+        gb_dir_lock_undo(&lock); /* a refused resume leaves the directory as it was */
         return st;
     }
     static const char *const subs[] = {"", "snapshots", "contacts", "fields"};
@@ -342,7 +342,7 @@ gb_status gb_run_output_resume(const char *dir, gb_sim *sim, const char *command
     if (!st && o->scene->solver.history) st = open_append(o, "history.csv", &o->history, err);
     o->started_seconds = gb_clock_seconds();
     if (!st) st = write_info(o, sim, "running", NULL, NULL, err);
-    if (st) return open_failed(o, st, status);
+    if (st) return open_failed(o, st, 1);
     *out = o;
     return GB_OK;
 }
