@@ -140,9 +140,10 @@ int gb_cli_run(int argc, char **argv)
     gb_error close_err = {0};
     gb_status cst = gb_run_output_close(out, sim, st, st ? err.msg : NULL, &close_err);
     int code = 0;
-    if (st) code = gb_cli_report(&err);
-    if (st == GB_EINTERRUPTED) code = 128 + gb_run_stop_requested(); /* as a shell reports a signal's end */
-    else if (cst) code = gb_cli_report(&close_err);
+    if (st) {
+        code = gb_cli_report(&err);
+        if (st == GB_EINTERRUPTED) code = 128 + gb_run_stop_requested(); /* as a shell reports a signal's end */
+    } else if (cst) code = gb_cli_report(&close_err);
     else if (!quiet)
         printf("gembem: %d steps done in %.2f s; results in %s\n", gb_scene_total_steps(&scene), elapsed(&ctx.t0),
                dir);
