@@ -32,6 +32,19 @@ same_runs() { # A B LABEL
   else bad "$3: the run directories differ: $(head -c 600 "$out/diff")"; fi
 }
 
+# Until RUNDIR/steps.csv holds N rows (step 0 is one); 1 if it does not within 2 minutes (a loaded
+# machine slows a run: the tests wait for rows, not for a time).
+wait_rows() { # RUNDIR N
+  local k
+  for k in $(seq 1 600); do
+    [ -f "$1/steps.csv" ] && [ $(($(wc -l < "$1/steps.csv") - 1)) -ge "$2" ] && return 0
+    sleep 0.2
+  done
+  return 1
+}
+# Python's reading of RUNDIR's status (gembem.Run.status).
+py_status() { PYTHONPATH=$root/python /usr/bin/python3 -c 'import sys, gembem; print(gembem.Run(sys.argv[1]).status)' "$1"; }
+
 # One scene: uninterrupted in $d/ref/run, interrupted and resumed in $d/kill/run.
 # run/ completed (a kill may land after run_info.yaml says so: nothing to resume then)
 done_() { grep -qs "^status: completed" run/run_info.yaml; }

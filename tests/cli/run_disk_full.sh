@@ -16,23 +16,14 @@ if ! mount -t tmpfs -o size=2m gembem_test "$mnt" 2> "$out/mount.err"; then
 fi
 trap 'umount "$mnt" 2> /dev/null' EXIT
 
-wait_rows() { # RUNDIR N: until RUNDIR/steps.csv holds N rows (2 minutes at most)
-  local k
-  for k in $(seq 1 600); do
-    [ -f "$1/steps.csv" ] && [ $(($(wc -l < "$1/steps.csv") - 1)) -ge "$2" ] && return 0
-    sleep 0.2
-  done
-  return 1
-}
-py_status() { PYTHONPATH=$root/python /usr/bin/python3 -c 'import sys, gembem; print(gembem.Run(sys.argv[1]).status)' "$1"; }
-
 mkdir -p "$out/ref"
 (cd "$out/ref" && "$gembem" run "$scene" -o run --quiet) || bad "the uninterrupted run failed"
 cd "$mnt"
 "$gembem" run "$scene" -o run --quiet 2> "$out/run.err" & pid=$!
 if wait_rows run 2 && [ -f run/checkpoint.txt ]; then
+  kill -STOP $pid   # held still while the disk fills: it cannot end first
   dd if=/dev/zero of=filler bs=4k 2> /dev/null   # until the disk is full
-  wait $pid; code=$?
+  kill -CONT $pid; wait $pid; code=$?
   msg=$(cat "$out/run.err")
   if [ $code -eq 4 ] && [[ $msg == *"run/"*"No space left on device"* ]]; then ok "disk full: exit 4: $msg"
   else bad "disk full: exit $code, '$msg'"; fi

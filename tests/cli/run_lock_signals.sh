@@ -8,22 +8,12 @@
 # mid-run: exit 128 + the signal's number, one line saying so and how to resume, status
 # `interrupted`, a checkpoint, no temporary file; --resume then yields the uninterrupted run's bytes.
 # Output paths: up to 900 characters work, longer ones are refused (exit 2) with nothing made.
-# The waits are for rows to appear (up to 2 minutes), not fixed sleeps: a loaded machine only slows it.
+# The waits are for rows to appear (wait_rows), not fixed sleeps: a loaded machine only slows it.
 set -u
 source "$(dirname "$0")/resume_lib.sh"
 scene=$out/scenes/ref.yaml   # the 122-disc shear, 7 steps of 1-2 thousand iterations
 
-# Until RUNDIR/steps.csv holds N rows (step 0 is one); 1 if it does not within 2 minutes.
-wait_rows() { # RUNDIR N
-  local k
-  for k in $(seq 1 600); do
-    [ -f "$1/steps.csv" ] && [ $(($(wc -l < "$1/steps.csv") - 1)) -ge "$2" ] && return 0
-    sleep 0.2
-  done
-  return 1
-}
 no_tmp() { [ -z "$(find "$1" -name '*.tmp')" ]; }
-py_status() { PYTHONPATH=$root/python /usr/bin/python3 -c 'import sys, gembem; print(gembem.Run(sys.argv[1]).status)' "$1"; }
 # the exit status, stderr and outcome of a command that must be refused with exit 2 and EXPECT
 refused() { # LABEL EXPECT COMMAND...
   local label=$1 expect=$2 msg code; shift 2
