@@ -1,10 +1,10 @@
 /* gembem run SCENE.yaml -o RUNDIR: a granular scene through its loading program. */
 #define _POSIX_C_SOURCE 200809L
+#include <limits.h>
 #include <math.h>
 #include <signal.h>
 #include <stdio.h>
 #include <string.h>
-#include <limits.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -41,8 +41,9 @@ static gb_status on_step(void *user, const gb_sim *sim, const gb_step_report *r,
     return GB_OK;
 }
 
-/* SIGTERM, SIGINT, SIGHUP (unless ignored at the start): the first asks the run to stop (it checkpoints where it is, records
- * `interrupted` and returns); a second while it finishes ends the process at once, as without us. */
+/* SIGTERM, SIGINT, SIGHUP (unless ignored at the start): the first asks the run to stop (it
+ * checkpoints where it is, records `interrupted` and returns); a second while it finishes ends the
+ * process at once, as without us. */
 static void on_signal(int signo)
 {
     if (gb_run_stop_requested()) {

@@ -256,7 +256,8 @@ static gb_status resumable(const char *dir, char *info, size_t cap, char *status
         fclose(f);
     }
     info_value(info, "status", status, status_cap);
-    if (!strcmp(status, "running")) snprintf(status, status_cap, "%s", last[0] && strcmp(last, "running") ? last : "killed");
+    if (!strcmp(status, "running"))
+        snprintf(status, status_cap, "%s", last[0] && strcmp(last, "running") ? last : "killed");
     snprintf(path, sizeof path, "%s/%s", dir, GB_CHECKPOINT_NAME);
     if (!strcmp(status, "completed")) {
         remove(path); /* left if the run was killed just after saying it completed */
@@ -421,14 +422,14 @@ static int checkpoint_time(const gb_run_output *o)
     return sc->checkpoint_every > 0 && gb_clock_seconds() - o->last_checkpoint >= 60 * sc->checkpoint_minutes;
 }
 
-/* A stop asked for (gembem/run.h): a checkpoint where the run is, unless one was just written for
- * it, then GB_EINTERRUPTED saying where (`where`: "after step 3", "in step 4, after iteration 120"). */
 /* An appended file's write failed (errno: why, e.g. a full disk or a file size limit). */
 static gb_status write_failed(const gb_run_output *o, const char *name, gb_error *err)
 {
     return gb_fail(err, GB_EIO, "%s/%s: write failed: %s", o->dir, name, strerror(errno));
 }
 
+/* A stop asked for (gembem/run.h): a checkpoint where the run is, unless one was just written for
+ * it, then GB_EINTERRUPTED saying where (`where`: "after step 3", "in step 4, after iteration 120"). */
 static gb_status stop_here(gb_run_output *o, const gb_sim *sim, int reason, int written, const char *where,
                            gb_error *err)
 {
