@@ -32,6 +32,13 @@ def _why(name):
     return _WHY.get(key, "")
 
 
+def read_lock(path):
+    """A run directory's lock file (.lock) as a dict of its fields: pid, host, started, status."""
+    with open(path) as f:
+        return {k: v.strip() for k, v in (line.split(": ", 1) for line in f.read().splitlines()
+                                          if ": " in line and not line.startswith("#"))}
+
+
 def lock_state(run_dir):
     """(held, status) of RUN_DIR/.lock: whether a live process holds it (a test of the lock, which
     takes nothing: F_GETLK) and the status it last recorded ('' without a lock file)."""
@@ -142,10 +149,7 @@ class Run:
         path = os.path.join(self.path, ".lock")
         if not os.path.exists(path):
             return {}
-        with open(path) as f:
-            fields = dict(line.split(": ", 1) for line in f.read().splitlines() if ": " in line
-                          and not line.startswith("#"))
-        fields = {k: v.strip() for k, v in fields.items()}
+        fields = read_lock(path)
         fields["live"] = lock_state(self.path)[0]
         return fields
 
