@@ -5,6 +5,8 @@
 #ifndef GEMBEM_RUN_H
 #define GEMBEM_RUN_H
 
+#include <stddef.h>
+
 #include "gembem/gem.h"
 #include "gembem/output.h"
 
@@ -28,6 +30,19 @@ void gb_sim_free(gb_sim *sim);
  * the iteration cap returns GB_ENOCONV with a message naming the step and its distance from
  * convergence; the simulation then holds the state of the last converged step. */
 gb_status gb_sim_run(gb_sim *sim, gb_run_output *out, gb_step_fn on_step, void *user, gb_error *err);
+
+/* A stop asked for from outside the run, e.g. by a signal handler (the library installs none;
+ * the gembem command does, for SIGTERM, SIGINT and SIGHUP): async-signal-safe, it only records
+ * `reason` (a signal number, > 0) in a volatile sig_atomic_t. A gb_sim_run with an output notices
+ * it between two iterations of a relaxation or at the end of a step, writes a checkpoint there and
+ * returns GB_EINTERRUPTED (gb_run_output_close then records status `interrupted`); without an
+ * output, at the end of a step. The request stays until gb_run_stop_clear. */
+void gb_run_request_stop(int reason);
+/* The reason of the stop asked for, 0 if none. */
+int gb_run_stop_requested(void);
+void gb_run_stop_clear(void);
+/* A signal's name for messages ("SIGTERM"), or "signal N" (buf: at least 16 bytes). */
+const char *gb_run_signal_name(int signo, char *buf, size_t cap);
 
 /* The time split of the runs of sim so far (zero before one). */
 gb_run_profile gb_sim_profile(const gb_sim *sim);

@@ -10,7 +10,8 @@ typedef enum {
     GB_ENOCONV = 3,   /* an iteration did not converge within its cap */
     GB_EIO = 4,       /* a file could not be written */
     GB_ENOMEM = 5,
-    GB_ENUMERIC = 6   /* a singular or non-finite system */
+    GB_ENUMERIC = 6,  /* a singular or non-finite system */
+    GB_EINTERRUPTED = 7 /* stopped on request (gb_run_request_stop: a signal), a checkpoint written */
 } gb_status;
 
 #define GB_ERROR_MSG_MAX 1024

@@ -4,9 +4,11 @@ as numpy arrays, file by file.
 Every CSV goes through the one reader, gembem.table.read_csv; the per-step files are named
 FOLDER/KIND_NNNNNN.csv (contacts/, fields/), VTK files go through gembem.vtk.
 """
+import fcntl
 import functools
 import os
 import re
+import struct
 
 from .state import read_state
 from .table import read_csv
@@ -29,6 +31,33 @@ def _why(name):
     if key.startswith("host_"):
         key = "host"
     return _WHY.get(key, "")
+
+
+def read_lock(path):
+    """A run directory's lock file (.lock) as a dict of its fields: pid, host, started, status."""
+    with open(path) as f:
+        return {k: v.strip() for k, v in (line.split(": ", 1) for line in f.read().splitlines()
+                                          if ": " in line and not line.startswith("#"))}
+
+
+def lock_state(run_dir):
+    """(held, status) of RUN_DIR/.lock: whether a live process holds it (a test of the lock, which
+    takes nothing: F_GETLK) and the status it last recorded ('' without a lock file)."""
+    path = os.path.join(run_dir, ".lock")
+    try:
+        fd = os.open(path, os.O_RDONLY)
+    except FileNotFoundError:
+        return False, ""
+    try:
+        # struct flock: l_type, l_whence, l_start, l_len, l_pid (and its padding)
+        query = struct.pack("hhqqi4x", fcntl.F_WRLCK, os.SEEK_SET, 0, 0, 0)
+        held = struct.unpack("hhqqi4x", fcntl.fcntl(fd, fcntl.F_GETLK, query))[0] != fcntl.F_UNLCK
+        text = os.pread(fd, 4096, 0).decode("utf-8", "replace")
+    finally:
+        os.close(fd)
+    status = next((line.split(": ", 1)[1].strip() for line in text.splitlines()
+                   if line.startswith("status: ")), "")
+    return held, status
 
 
 def _table(name, doc):
@@ -149,8 +178,28 @@ class Run(_Directory):
 
     @property
     def status(self):
-        """run_info.yaml's status: completed, running (or killed), not converged, ... (read afresh)."""
-        return read_yaml(self.file("run_info.yaml")).get("status")
+        """How the run stands (read afresh): run_info.yaml's status (completed, interrupted, not
+        converged, i/o error, ...), but for a `running` there: `running` while a gembem process
+        holds the directory's lock, else the status its lock file recorded (a disk too full to
+        rewrite run_info.yaml) or `killed` (docs/run-directory.md, "The morning after")."""
+        status = read_yaml(self.file("run_info.yaml")).get("status")
+        if status != "running":
+            return status
+        held, recorded = lock_state(self.path)
+        if held:
+            return "running"
+        return recorded if recorded and recorded != "running" else "killed"
+
+    @property
+    def holder(self):
+        """Who holds (or last held) the run directory: the lock file's pid, host, started, status
+        as a dict ({} without one), with `live` True while that process holds it."""
+        path = os.path.join(self.path, ".lock")
+        if not os.path.exists(path):
+            return {}
+        fields = read_lock(path)
+        fields["live"] = lock_state(self.path)[0]
+        return fields
 
     def step_file(self, folder, kind, step, ext="csv"):
         return self.file(f"{folder}/{kind}_{int(step):06d}.{ext}")

@@ -184,12 +184,12 @@ class Study:
 
 
 def _resumable(run_dir, scene_path):
-    """A run killed or stopped by a full disk, started from this scene file as it is now (the
+    """A run killed, interrupted (a signal) or stopped by a full disk, started from this scene file as it is now (the
     scene rewritten since, e.g. for a new packing of the same name, is a new run)."""
     info, copy = os.path.join(run_dir, "run_info.yaml"), os.path.join(run_dir, "scene.yaml")
     return (os.path.exists(os.path.join(run_dir, "checkpoint.txt")) and os.path.exists(info)
             and os.path.exists(copy) and os.path.getmtime(copy) >= os.path.getmtime(scene_path)
-            and read_yaml(info).get("status") in ("running", "i/o error"))
+            and read_yaml(info).get("status") in ("running", "interrupted", "i/o error"))
 
 
 def _write_yaml(path, doc):

@@ -4,8 +4,8 @@
 The three discs of case 1: with 20 iterations a step and no cut-back the first step cannot
 converge (ConvergenceError, exit 3, gembem's message naming the step; the run directory says so
 and holds step 0). Killed at its 60th output write (gembem's test hook GB_TEST_KILL_AT, as
-ctest cli_resume does), the run raises GembemError naming the signal, its directory says
-`running`; gembem.resume completes it, and its steps.csv equals an uninterrupted run's (the wall
+ctest cli_resume does), the run raises GembemError naming the signal, its run_info.yaml says
+`running` and, no process holding its lock, Run.status `killed`; gembem.resume completes it, and its steps.csv equals an uninterrupted run's (the wall
 time aside). A second run of another scene into the same directory is refused before the first
 run's scene file is overwritten.
 """
@@ -44,7 +44,7 @@ class Failures(RunDirTest):
             gembem.run(case1(), f"{self.tmp}/killed", quiet=True, env={"GB_TEST_KILL_AT": "60"})
         self.assertLess(e.exception.returncode, 0)
         self.assertIn("SIGKILL", e.exception.message)
-        self.assertEqual(gembem.Run(f"{self.tmp}/killed").status, "running")
+        self.assertEqual(gembem.Run(f"{self.tmp}/killed").status, "killed")   # run_info.yaml: running, no holder
         seen = []
         run = gembem.resume(f"{self.tmp}/killed", progress=seen.append)
         self.assertEqual(run.status, "completed")

@@ -64,8 +64,9 @@ class ReadersFigures(RunDirTest):
     def test_every_file(self):
         # Every file gembem left is read by one of the package's readers (one CSV reader for all).
         from gembem.yamlfile import read_yaml
+        from gembem.rundir import read_lock
         readers = {"csv": gembem.read_csv, "vtu": gembem.read_vtk, "vtp": gembem.read_vtk,
-                   "pvd": gembem.read_pvd, "yaml": read_yaml}
+                   "pvd": gembem.read_pvd, "yaml": read_yaml, "lock": read_lock}
         count = 0
         for root, _, files in os.walk(self.rd.path):
             for f in files:
@@ -74,6 +75,10 @@ class ReadersFigures(RunDirTest):
                 readers[ext](os.path.join(root, f))
                 count += 1
         self.assertGreater(count, 50)
+        # the lock file: its writer is gone, and it recorded how the run ended
+        holder = self.rd.holder
+        self.assertEqual((holder["status"], holder["live"]), ("completed", False))
+        self.assertGreater(int(holder["pid"]), 0)
 
     def test_state(self):
         st = self.rd.state

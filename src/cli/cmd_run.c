@@ -1,6 +1,8 @@
 /* gembem run SCENE.yaml -o RUNDIR: a granular scene through its loading program. */
 #define _POSIX_C_SOURCE 200809L
+#include <limits.h>
 #include <math.h>
+#include <signal.h>
 #include <stdio.h>
 #include <string.h>
 #include <time.h>
@@ -8,6 +10,7 @@
 
 #include "cli/cli.h"
 #include "gembem/run.h"
+#include "io/file_util.h"
 
 typedef struct {
     int progress;   /* stderr is a terminal */
@@ -53,6 +56,36 @@ static void on_progress(void *user, const gb_step_progress *p)
             p->max_fixing_force, p->accuracy);
 }
 
+/* SIGTERM, SIGINT, SIGHUP (unless ignored at the start): the first asks the run to stop (it
+ * checkpoints where it is, records `interrupted` and returns); a second while it finishes ends the
+ * process at once, as without us. */
+static void on_signal(int signo)
+{
+    if (gb_run_stop_requested()) {
+        signal(signo, SIG_DFL);
+        raise(signo);
+        return;
+    }
+    gb_run_request_stop(signo);
+}
+
+static void catch_stop_signals(void)
+{
+    static const int sigs[] = {SIGTERM, SIGINT, SIGHUP};
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_signal;
+    sa.sa_flags = SA_RESTART; /* the writes in progress go on; the run looks at the flag between them */
+    sigemptyset(&sa.sa_mask);
+    for (int k = 0; k < 3; k++) sigaddset(&sa.sa_mask, sigs[k]);
+    for (int k = 0; k < 3; k++) {
+        struct sigaction old;
+        /* one ignored when we started stays so (nohup; a shell's background job and SIGINT) */
+        if (sigaction(sigs[k], NULL, &old) == 0 && old.sa_handler == SIG_IGN) continue;
+        sigaction(sigs[k], &sa, NULL);
+    }
+}
+
 static void usage(FILE *to)
 {
     fprintf(to, "usage: gembem run SCENE.yaml -o RUNDIR [--overwrite] [--quiet]\n"
@@ -61,8 +94,10 @@ static void usage(FILE *to)
                 "  RUNDIR/state.yaml (a scene can start from it), VTK snapshots and a copy of the scene.\n"
                 "  RUNDIR/checkpoint.txt follows the run; --resume continues an interrupted run from it, with\n"
                 "  the same scene (by default the path the run started with; refused if it changed).\n"
-                "  Exit status: 0 done, 2 bad input, 3 a step did not converge (completed steps are kept),\n"
-                "  4 an output could not be written (disk full: the last checkpoint is whole).\n");
+                "  Exit status: 0 done, 2 bad input (or RUNDIR in use by another gembem), 3 a step did not\n"
+                "  converge (completed steps are kept), 4 an output could not be written (disk full, file size\n"
+                "  limit: the last checkpoint is whole), 128+N stopped by signal N (SIGTERM 143, SIGINT 130,\n"
+                "  SIGHUP 129: a checkpoint written where it stood, status interrupted; --resume continues).\n");
 }
 
 int gb_cli_run(int argc, char **argv)
@@ -91,11 +126,12 @@ int gb_cli_run(int argc, char **argv)
     gb_cli_command_line(argc, argv, command, sizeof command);
 
     gb_error err = {0};
-    char resume_scene[1024];
-    if (resume && !scene_path) {
-        if (gb_run_output_resume_scene(resume, resume_scene, sizeof resume_scene, &err)) return gb_cli_report(&err);
-        scene_path = resume_scene;
-    }
+    char resume_scene[PATH_MAX];
+    /* a directory in use (or too long a path) refused at once, before the scene is read */
+    if (resume && gb_run_output_resume_scene(resume, resume_scene, sizeof resume_scene, &err))
+        return gb_cli_report(&err);
+    if (resume && !scene_path) scene_path = resume_scene;
+    if (!resume && gb_output_dir_check(dir, overwrite, "run directory", &err)) return gb_cli_report(&err);
     if (resume) dir = resume;
     gb_scene scene;
     if (gb_scene_load(scene_path, &scene, &err)) return gb_cli_report(&err);
@@ -108,6 +144,7 @@ int gb_cli_run(int argc, char **argv)
     run_ctx ctx = {isatty(2), quiet, {0, 0}, 0};
     clock_gettime(CLOCK_MONOTONIC, &ctx.t0);
     gb_run_output *out = NULL;
+    catch_stop_signals(); /* from here on the run directory records where a signal stopped it */
     if (resume ? gb_run_output_resume(dir, sim, command, &out, &err)
                : gb_run_output_open(dir, sim, overwrite, command, &out, &err)) {
         gb_sim_free(sim);
@@ -120,8 +157,10 @@ int gb_cli_run(int argc, char **argv)
     gb_error close_err = {0};
     gb_status cst = gb_run_output_close(out, sim, st, st ? err.msg : NULL, &close_err);
     int code = 0;
-    if (st) code = gb_cli_report(&err);
-    else if (cst) code = gb_cli_report(&close_err);
+    if (st) {
+        code = gb_cli_report(&err);
+        if (st == GB_EINTERRUPTED) code = 128 + gb_run_stop_requested(); /* as a shell reports a signal's end */
+    } else if (cst) code = gb_cli_report(&close_err);
     else if (!quiet) {
         /* the steps run here; a completed resume ran the scene's last ones, after the checkpoint's step */
         int total = gb_scene_total_steps(&scene);

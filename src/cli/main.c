@@ -1,3 +1,5 @@
+#define _POSIX_C_SOURCE 200809L
+#include <signal.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -23,6 +25,7 @@ int gb_cli_report(const gb_error *err)
     case GB_EINPUT: return 2;
     case GB_ENOCONV: return 3;
     case GB_EIO: return 4;
+    case GB_EINTERRUPTED: return 130; /* the caller knows the signal (gembem run: 128 + its number) */
     default: return 1;
     }
 }
@@ -44,6 +47,9 @@ int main(int argc, char **argv)
         usage(stderr);
         return 2;
     }
+    /* a file size limit (ulimit -f) fails the write (EFBIG) instead of killing the process: gembem
+     * then says which file, removes its temporary files and records the run's status (exit 4) */
+    signal(SIGXFSZ, SIG_IGN);
     const char *cmd = argv[1];
     if (!strcmp(cmd, "run")) return gb_cli_run(argc - 1, argv + 1);
     if (!strcmp(cmd, "bem")) return gb_cli_bem(argc - 1, argv + 1);

@@ -25,6 +25,7 @@ const char *gb_status_name(gb_status s)
     case GB_EIO: return "i/o error";
     case GB_ENOMEM: return "out of memory";
     case GB_ENUMERIC: return "numerical failure";
+    case GB_EINTERRUPTED: return "interrupted";
     }
     return "unknown status";
 }

@@ -7,6 +7,7 @@
 #include "core/clock.h"
 #include "gembem/output.h"
 #include "io/bem_output.h"
+#include "io/dir_lock.h"
 #include "io/file_util.h"
 #include "io/run_record.h"
 
@@ -130,8 +131,12 @@ gb_status gb_bem_run(const char *scene, const char *dir, int overwrite, const ch
     /* the directory first: a refusal costs no solve */
     gb_status st = gb_output_dir_check(dir, overwrite, "output directory", err);
     if (!st) st = compute(scene, &r, err);
-    if (!st) st = gb_make_dirs(dir, err);
+    gb_dir_lock lock;
+    lock.fd = -1;
+    if (!st) st = gb_dir_lock_take(&lock, dir, 1, overwrite, "output directory", err); /* one writer */
     if (!st) st = write_all(dir, command, &r, started, err);
+    if (lock.fd >= 0) gb_dir_lock_status(&lock, st ? gb_status_name(st) : "completed");
+    gb_dir_lock_release(&lock);
     if (!st && summary) summary_text(&r, summary, cap);
     bem_run_free(&r);
     return st;

@@ -1,5 +1,6 @@
 #define _POSIX_C_SOURCE 200809L
 #include "io/file_util.h"
+#include "io/dir_lock.h"
 
 #include <dirent.h>
 #include <sys/stat.h>
@@ -97,30 +98,50 @@ gb_status gb_atomic_commit_durable(gb_atomic_file *a, gb_error *err)
     return GB_OK;
 }
 
+/* Nothing in it but a lock file (a missing directory counts as empty). */
 static int dir_is_empty(const char *path)
 {
     DIR *d = opendir(path);
-    if (!d) return 0;
+    if (!d) return errno == ENOENT;
     struct dirent *e;
     int empty = 1;
     while (empty && (e = readdir(d)))
-        if (strcmp(e->d_name, ".") && strcmp(e->d_name, "..")) empty = 0;
+        if (strcmp(e->d_name, ".") && strcmp(e->d_name, "..") && strcmp(e->d_name, GB_LOCK_NAME)) empty = 0;
     closedir(d);
     return empty;
+}
+
+/* A name too long for the file system is the user's choice (bad input); the others, the disk's. */
+static gb_status mkdir_failed(const char *path, gb_error *err)
+{
+    int e = errno;
+    return gb_fail(err, e == ENAMETOOLONG ? GB_EINPUT : GB_EIO, "%s: cannot make the directory: %s", path, strerror(e));
+}
+
+gb_status gb_dir_length_check(const char *dir, const char *what, gb_error *err)
+{
+    size_t n = strlen(dir);
+    if (n <= GB_DIR_MAX) return GB_OK;
+    return gb_fail(err, GB_EINPUT, "%s %.200s...: a path of %zu characters; gembem writes into directories of at "
+                   "most %d (its files' names are added to it): choose a shorter path, or a relative one",
+                   what, dir, n, GB_DIR_MAX);
 }
 
 /* mkdir -p */
 gb_status gb_make_dirs(const char *path, gb_error *err)
 {
     char buf[1024];
+    if (strlen(path) >= sizeof buf)
+        return gb_fail(err, GB_EINPUT, "%.200s...: a path of %zu characters, longer than gembem's %zu", path,
+                       strlen(path), sizeof buf - 1);
     snprintf(buf, sizeof buf, "%s", path);
     for (char *p = buf + 1; *p; p++) {
         if (*p != '/') continue;
         *p = '\0';
-        if (mkdir(buf, 0777) != 0 && errno != EEXIST) return gb_fail(err, GB_EIO, "%s: %s", buf, strerror(errno));
+        if (mkdir(buf, 0777) != 0 && errno != EEXIST) return mkdir_failed(buf, err);
         *p = '/';
     }
-    if (mkdir(buf, 0777) != 0 && errno != EEXIST) return gb_fail(err, GB_EIO, "%s: %s", buf, strerror(errno));
+    if (mkdir(buf, 0777) != 0 && errno != EEXIST) return mkdir_failed(buf, err);
     return GB_OK;
 }
 
@@ -144,8 +165,17 @@ gb_status gb_copy_file(const char *from, const char *to, gb_error *err)
 gb_status gb_output_dir_check(const char *dir, int overwrite, const char *what, gb_error *err)
 {
     struct stat sb;
+    char holder[384];
+    gb_status st = gb_dir_length_check(dir, what, err);
+    if (st) return st;
     if (stat(dir, &sb) != 0) return GB_OK;
     if (!S_ISDIR(sb.st_mode)) return gb_fail(err, GB_EINPUT, "%s exists and is not a directory", dir);
+    if (gb_dir_lock_probe(dir, holder, sizeof holder, NULL, 0)) return gb_dir_lock_refuse(dir, what, holder, err);
+    return gb_dir_empty_check(dir, overwrite, what, err);
+}
+
+gb_status gb_dir_empty_check(const char *dir, int overwrite, const char *what, gb_error *err)
+{
     if (!overwrite && !dir_is_empty(dir))
         return gb_fail(err, GB_EINPUT, "%s %s exists and is not empty; choose another or pass --overwrite", what, dir);
     return GB_OK;

@@ -29,13 +29,22 @@ enum { GB_ROW_MAX = 1024 };
 typedef int (*gb_row_fn)(char *buf, size_t cap, int k, const void *ctx);
 void gb_write_rows(FILE *f, int m, int threads, gb_row_fn row, const void *ctx);
 
+/* The longest output directory path gembem writes into: its files' paths (the directory, a
+ * subfolder, a numbered name and ".tmp") then fit the 1 024 bytes of its path buffers. */
+enum { GB_DIR_MAX = 900 };
+/* GB_EINPUT, naming dir as `what`, if its path is longer than GB_DIR_MAX. */
+gb_status gb_dir_length_check(const char *dir, const char *what, gb_error *err);
+
 /* mkdir -p */
 gb_status gb_make_dirs(const char *path, gb_error *err);
 /* Copies a file (atomically). */
 gb_status gb_copy_file(const char *from, const char *to, gb_error *err);
-/* An output directory may be made: absent, or an empty directory, or (overwrite) any directory;
- * else GB_EINPUT, the message naming it as `what` ("run directory"). */
+/* An output directory may be made: absent, or an empty directory (its lock file aside), or
+ * (overwrite) any directory that no other process writes (io/dir_lock.h); its path not too long
+ * (GB_DIR_MAX); else GB_EINPUT, the message naming it as `what` ("run directory"). */
 gb_status gb_output_dir_check(const char *dir, int overwrite, const char *what, gb_error *err);
+/* Its last part: unless overwrite, dir must be empty (its lock file aside). */
+gb_status gb_dir_empty_check(const char *dir, int overwrite, const char *what, gb_error *err);
 
 /* A CSV value, or "nan" where it is undefined (any non-finite value): Python's float(), numpy and
  * pandas read it as NaN. fmt holds one printf conversion of a double, with text around it, e.g.

@@ -4,6 +4,7 @@
 
 #include "gembem/output.h"
 #include "gembem/pack.h"
+#include "io/dir_lock.h"
 #include "io/file_util.h"
 #include "io/run_record.h"
 
@@ -63,13 +64,20 @@ gb_status gb_pack_write(const char *dir, const char *command, const gb_sim *sim,
 {
     const gb_scene *s = gb_sim_scene(sim);
     char path[1024];
-    gb_status st = gb_make_dirs(dir, err);
+    /* one writer at a time (the directory was checked before the packing: gembem pack) */
+    gb_dir_lock lock;
+    gb_status st = gb_dir_lock_take(&lock, dir, 1, 1, "pack directory", err);
     if (st) return st;
     snprintf(path, sizeof path, "%s/scene.yaml", dir);
-    if ((st = gb_copy_file(s->path, path, err)) || (st = gb_state_write(dir, sim, err))) return st;
-    snprintf(path, sizeof path, "%s/pack_info.yaml", dir);
-    gb_atomic_file a;
-    if ((st = gb_atomic_open(&a, path, err))) return st;
-    write_info(a.f, command, s, def, res);
-    return gb_atomic_commit(&a, err);
+    if (!(st = gb_copy_file(s->path, path, err)) && !(st = gb_state_write(dir, sim, err))) {
+        snprintf(path, sizeof path, "%s/pack_info.yaml", dir);
+        gb_atomic_file a;
+        if (!(st = gb_atomic_open(&a, path, err))) {
+            write_info(a.f, command, s, def, res);
+            st = gb_atomic_commit(&a, err);
+        }
+    }
+    gb_dir_lock_status(&lock, st ? gb_status_name(st) : "completed");
+    gb_dir_lock_release(&lock);
+    return st;
 }

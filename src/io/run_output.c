@@ -14,6 +14,7 @@
 #include "gembem/run.h"
 #include "io/host_output.h"
 #include "io/checkpoint.h"
+#include "io/dir_lock.h"
 #include "io/file_util.h"
 #include "io/measure_output.h"
 #include "io/run_output.h"
@@ -27,7 +28,8 @@
 #define GB_STR(x) GB_STR_(x)
 
 struct gb_run_output {
-    char dir[900];
+    char dir[GB_DIR_MAX + 1];
+    gb_dir_lock lock;  /* dir/.lock, held while o lives */
     const gb_scene *scene;
     FILE *steps;
     FILE *micro;  /* micromechanics.csv */
@@ -42,7 +44,7 @@ struct gb_run_output {
     const char *appended[GB_CHECKPOINT_MAX_FILES];
     int n_appended;
     double last_checkpoint;   /* gb_clock_seconds() */
-    int interrupted;          /* earlier runs of the directory that ended without a status */
+    int interrupted;          /* earlier runs of the directory that stopped before they ended (killed, signalled) */
     char resumed[4096];       /* run_info.yaml's "resumed:" list items */
     double started_seconds;   /* gb_clock_seconds() when this process opened the directory */
     double close_seconds;     /* spent writing the final state */
@@ -86,10 +88,25 @@ static gb_status write_info(const gb_run_output *o, const gb_sim *sim, const cha
     if (verdict) gb_run_verdict_write(a.f, verdict);
     fprintf(a.f, "status: %s\n", status);
     if (o->resumed[0])
-        fprintf(a.f, "interrupted: %d   # runs of this directory killed before they ended\nresumed:\n%s",
+        fprintf(a.f, "interrupted: %d   # runs of this directory killed or interrupted before they ended\nresumed:\n%s",
                 o->interrupted, o->resumed);
     if (message) gb_info_quoted(a.f, "message", message);
     return gb_atomic_commit(&a, err);
+}
+
+/* An open or a resume (undo: the lock file put back as it was) that failed: o's files closed, the
+ * lock let go, o freed. */
+static gb_status open_failed(gb_run_output *o, gb_status st, int undo)
+{
+    FILE *files[4] = {o->steps, o->micro, o->host, o->history};
+    for (int k = 0; k < 4; k++)
+        if (files[k]) fclose(files[k]);
+    if (undo) gb_dir_lock_undo(&o->lock);
+    else gb_dir_lock_status(&o->lock, gb_status_name(st));
+    gb_dir_lock_release(&o->lock);
+    free(o->snap_steps);
+    free(o);
+    return st;
 }
 
 gb_status gb_run_output_open(const char *dir, const gb_sim *sim, int overwrite, const char *command,
@@ -104,10 +121,14 @@ gb_status gb_run_output_open(const char *dir, const gb_sim *sim, int overwrite, 
     if (!realpath(scene->path, ck.scene_path)) return gb_fail(err, GB_EINPUT, "%s: %s", scene->path, strerror(errno));
     gb_status st0 = gb_checkpoint_scene_hash(sim, &ck.scene_hash, err);
     if (st0) return st0;
-    gb_status st = gb_make_dirs(dir, err);
-    if (st) return st;
     gb_run_output *o = calloc(1, sizeof *o);
     if (!o) return gb_fail(err, GB_ENOMEM, "out of memory");
+    /* the directory this process's before anything in it is made or replaced */
+    gb_status st = gb_dir_lock_take(&o->lock, dir, 1, overwrite, "run directory", err);
+    if (st) {
+        free(o);
+        return st;
+    }
     snprintf(o->dir, sizeof o->dir, "%s", dir);
     snprintf(o->command, sizeof o->command, "%s", command);
     o->scene = scene;
@@ -119,28 +140,19 @@ gb_status gb_run_output_open(const char *dir, const gb_sim *sim, int overwrite, 
     char path[1024];
     snprintf(path, sizeof path, "%s/%s", dir, GB_CHECKPOINT_NAME); /* an older run's, with --overwrite */
     if (remove(path) != 0 && errno != ENOENT) {
-        free(o);
-        return gb_fail(err, GB_EIO, "%s: %s", path, strerror(errno));
+        st = gb_fail(err, GB_EIO, "%s: %s", path, strerror(errno));
+        return open_failed(o, st, 0);
     }
     snprintf(path, sizeof path, "%s/scene.yaml", dir);
     o->started_seconds = gb_clock_seconds();
-    if ((st = gb_copy_file(scene->path, path, err)) || (st = write_info(o, sim, "running", NULL, NULL, err))) {
-        free(o);
-        return st;
-    }
+    if ((st = gb_copy_file(scene->path, path, err)) || (st = write_info(o, sim, "running", NULL, NULL, err)))
+        return open_failed(o, st, 0);
     snprintf(path, sizeof path, "%s/steps.csv", dir);
-    if (!(o->steps = fopen(path, "w"))) {
-        free(o);
-        return gb_fail(err, GB_EIO, "%s: %s", path, strerror(errno));
-    }
+    if (!(o->steps = fopen(path, "w"))) return open_failed(o, gb_fail(err, GB_EIO, "%s: %s", path, strerror(errno)), 0);
     gb_steps_csv_header(o->steps);
     fflush(o->steps);
     snprintf(path, sizeof path, "%s/micromechanics.csv", dir);
-    if (!(o->micro = fopen(path, "w"))) {
-        fclose(o->steps);
-        free(o);
-        return gb_fail(err, GB_EIO, "%s: %s", path, strerror(errno));
-    }
+    if (!(o->micro = fopen(path, "w"))) return open_failed(o, gb_fail(err, GB_EIO, "%s: %s", path, strerror(errno)), 0);
     /* Tensors in x (horizontal), y (vertical) components; energies absolute (force x length) and
      * since the start of the run; densities divide by the area. */
     fprintf(o->micro, "step,contacts,wall_contacts,coordination,C_xx,C_yy,C_xy,C_major,C_minor,C_angle_deg,"
@@ -150,21 +162,14 @@ gb_status gb_run_output_open(const char *dir, const gb_sim *sim, int overwrite, 
     fflush(o->micro);
     if (scene->host.present) {
         snprintf(path, sizeof path, "%s/host_steps.csv", dir);
-        if (!(o->host = fopen(path, "w"))) {
-            fclose(o->steps), fclose(o->micro);
-            free(o);
-            return gb_fail(err, GB_EIO, "%s: %s", path, strerror(errno));
-        }
+        if (!(o->host = fopen(path, "w")))
+            return open_failed(o, gb_fail(err, GB_EIO, "%s: %s", path, strerror(errno)), 0);
         gb_host_write_steps_header(o->host, scene);
     }
     if (scene->solver.history) {
         snprintf(path, sizeof path, "%s/history.csv", dir);
-        if (!(o->history = fopen(path, "w"))) {
-            fclose(o->steps), fclose(o->micro);
-            if (o->host) fclose(o->host);
-            free(o);
-            return gb_fail(err, GB_EIO, "%s: %s", path, strerror(errno));
-        }
+        if (!(o->history = fopen(path, "w")))
+            return open_failed(o, gb_fail(err, GB_EIO, "%s: %s", path, strerror(errno)), 0);
         fprintf(o->history, "step,attempt,iteration,max_fixing_force,wall_residual,largest_move,damping,length\n");
         fflush(o->history);
     }
@@ -228,12 +233,21 @@ static gb_status open_append(gb_run_output *o, const char *name, FILE **f, gb_er
     return GB_OK;
 }
 
-/* A directory with a run to resume: its run_info.yaml's text (may be empty) and status. */
+/* A directory with a run to resume, which no process writes: its run_info.yaml's text (may be
+ * empty) and how its last run ended: run_info.yaml's status, but for a `running` there, which no
+ * live process holds, the status its lock file recorded (a disk too full to rewrite run_info.yaml)
+ * or else `killed` (docs/run-directory.md, "The morning after"). */
 static gb_status resumable(const char *dir, char *info, size_t cap, char *status, size_t status_cap, gb_error *err)
 {
     struct stat sb;
+    gb_status st = gb_dir_length_check(dir, "run directory", err);
+    if (st) return st;
     if (stat(dir, &sb) != 0 || !S_ISDIR(sb.st_mode)) return gb_fail(err, GB_EINPUT, "%s: no such run directory", dir);
-    char path[1200];
+    char path[1200], holder[384], last[64];
+    if (gb_dir_lock_probe(dir, holder, sizeof holder, last, sizeof last))
+        return gb_fail(err, GB_EINPUT, "%s: its run is still going (%s; its %s/%s): a live run cannot be resumed; "
+                       "stop it first (SIGTERM or Ctrl-C: it writes a checkpoint and says so)", dir, holder, dir,
+                       GB_LOCK_NAME);
     snprintf(path, sizeof path, "%s/run_info.yaml", dir);
     FILE *f = fopen(path, "r");
     info[0] = '\0';
@@ -242,6 +256,8 @@ static gb_status resumable(const char *dir, char *info, size_t cap, char *status
         fclose(f);
     }
     info_value(info, "status", status, status_cap);
+    if (!strcmp(status, "running"))
+        snprintf(status, status_cap, "%s", last[0] && strcmp(last, "running") ? last : "killed");
     snprintf(path, sizeof path, "%s/%s", dir, GB_CHECKPOINT_NAME);
     if (!strcmp(status, "completed")) {
         remove(path); /* left if the run was killed just after saying it completed */
@@ -262,6 +278,9 @@ gb_status gb_run_output_resume(const char *dir, gb_sim *sim, const char *command
     char path[1200], info[16384], status[64], value[1024];
     gb_status st = resumable(dir, info, sizeof info, status, sizeof status, err);
     if (st) return st;
+    /* the directory this process's before its files are cut back */
+    gb_dir_lock lock;
+    if ((st = gb_dir_lock_take(&lock, dir, 0, 1, "run directory", err))) return st;
     uint64_t hash;
     gb_checkpoint_meta ck;
     memset(&ck, 0, sizeof ck);
@@ -274,11 +293,18 @@ gb_status gb_run_output_resume(const char *dir, gb_sim *sim, const char *command
                          "directory was changed", path, ck.file[k].length);
     }
     for (int k = 0; k < ck.n_files && !st; k++) st = gb_checkpoint_file_rewind(dir, &ck.file[k], err);
-    if (st) return st;
+    if (st) {
+        gb_dir_lock_undo(&lock); /* a refused resume leaves the directory as it was */
+        return st;
+    }
     static const char *const subs[] = {"", "snapshots", "contacts", "fields"};
     for (int k = 0; k < 4; k++) remove_tmp(dir, subs[k]);
     gb_run_output *o = calloc(1, sizeof *o);
-    if (!o) return gb_fail(err, GB_ENOMEM, "out of memory");
+    if (!o) {
+        gb_dir_lock_release(&lock);
+        return gb_fail(err, GB_ENOMEM, "out of memory");
+    }
+    o->lock = lock;
     snprintf(o->dir, sizeof o->dir, "%s", dir);
     o->scene = gb_sim_scene(sim);
     o->ck = ck;
@@ -290,7 +316,7 @@ gb_status gb_run_output_resume(const char *dir, gb_sim *sim, const char *command
     snprintf(o->command, sizeof o->command, "%s", value[0] ? value : "?");
     info_value(info, "started", o->started, sizeof o->started);
     info_value(info, "interrupted", value, sizeof value);
-    o->interrupted = atoi(value) + !strcmp(status, "running");
+    o->interrupted = atoi(value) + (!strcmp(status, "killed") || !strcmp(status, "interrupted"));
     const char *items = strstr(info, "\nresumed:\n");
     size_t used = 0;
     for (const char *l = items ? items + 10 : NULL; l && !strncmp(l, "  - ", 4); l = strchr(l, '\n') + 1) {
@@ -307,7 +333,7 @@ gb_status gb_run_output_resume(const char *dir, gb_sim *sim, const char *command
         snprintf(within, sizeof within, " within_step: true, iterations_done: %ld,", gb_sim_step_iterations(&sim->cur));
     snprintf(o->resumed + used, sizeof o->resumed - used,
              "  - {at: %s, after_step: %d,%s previous_status: %s, openblas_threads: \"%s\", command: \"%s\"}\n",
-             at, sim->pos.step, within, !strcmp(status, "running") ? "interrupted" : status[0] ? status : "unknown",
+             at, sim->pos.step, within, status[0] ? status : "unknown",
              threads ? threads : "default", command);
     for (int q = 0; q <= sim->pos.step && !st; q++)
         if (snapshot_due(o->scene, q)) st = add_snapshot(o, q, err);
@@ -317,14 +343,7 @@ gb_status gb_run_output_resume(const char *dir, gb_sim *sim, const char *command
     if (!st && o->scene->solver.history) st = open_append(o, "history.csv", &o->history, err);
     o->started_seconds = gb_clock_seconds();
     if (!st) st = write_info(o, sim, "running", NULL, NULL, err);
-    if (st) {
-        FILE *files[4] = {o->steps, o->micro, o->host, o->history};
-        for (int k = 0; k < 4; k++)
-            if (files[k]) fclose(files[k]);
-        free(o->snap_steps);
-        free(o);
-        return st;
-    }
+    if (st) return open_failed(o, st, 1);
     *out = o;
     return GB_OK;
 }
@@ -403,9 +422,36 @@ static int checkpoint_time(const gb_run_output *o)
     return sc->checkpoint_every > 0 && gb_clock_seconds() - o->last_checkpoint >= 60 * sc->checkpoint_minutes;
 }
 
+/* An appended file's write failed (errno: why, e.g. a full disk or a file size limit). */
+static gb_status write_failed(const gb_run_output *o, const char *name, gb_error *err)
+{
+    return gb_fail(err, GB_EIO, "%s/%s: write failed: %s", o->dir, name, strerror(errno));
+}
+
+/* A stop asked for (gembem/run.h): a checkpoint where the run is, unless one was just written for
+ * it, then GB_EINTERRUPTED saying where (`where`: "after step 3", "in step 4, after iteration 120"). */
+static gb_status stop_here(gb_run_output *o, const gb_sim *sim, int reason, int written, const char *where,
+                           gb_error *err)
+{
+    gb_status st = written ? GB_OK : checkpoint(o, sim, err);
+    if (st) return st;
+    char name[32];
+    return gb_fail(err, GB_EINTERRUPTED, "interrupted by %s %s; its checkpoint is written: continue with gembem run "
+                   "--resume %s", gb_run_signal_name(reason, name, sizeof name), where, o->dir);
+}
+
 gb_status gb_run_output_within_step(void *user, const gb_sim *sim, gb_error *err)
 {
     gb_run_output *o = user;
+    int reason = gb_run_stop_requested();
+    if (reason) {
+        /* its mark would count rows that are not there */
+        if (o->history_failed) return gb_fail(err, GB_EIO, "%s/history.csv: write failed", o->dir);
+        char where[96];
+        snprintf(where, sizeof where, "in step %d, after %ld iterations", sim->cur.step,
+                 gb_sim_step_iterations(&sim->cur));
+        return stop_here(o, sim, reason, 0, where, err);
+    }
     int test = o->scene->checkpoint_every > 0 && gb_test_checkpoint_due();
     if (!test && !checkpoint_time(o)) return GB_OK;
     /* its mark would count rows that are not there */
@@ -423,7 +469,7 @@ gb_status gb_run_output_step(gb_run_output *o, const gb_sim *sim, const gb_step_
 {
     gb_test_kill_point(o->steps);
     gb_steps_csv_row(o->steps, r);
-    if (fflush(o->steps) != 0 || ferror(o->steps)) return gb_fail(err, GB_EIO, "%s/steps.csv: write failed", o->dir);
+    if (fflush(o->steps) != 0 || ferror(o->steps)) return write_failed(o, "steps.csv", err);
     if (o->history_failed) return gb_fail(err, GB_EIO, "%s/history.csv: write failed", o->dir);
     const gb_micro m = ms->micro;
     gb_test_kill_point(o->micro);
@@ -435,7 +481,7 @@ gb_status gb_run_output_step(gb_run_output *o, const gb_sim *sim, const gb_step_
             m.work_body, m.dissipation, m.dissipation_step, m.dissipation_step_k28, m.balance, m.p_max,
             m.work_walls_iter, m.relaxation, m.balance_iter);
     if (fflush(o->micro) != 0 || ferror(o->micro))
-        return gb_fail(err, GB_EIO, "%s/micromechanics.csv: write failed", o->dir);
+        return write_failed(o, "micromechanics.csv", err);
     gb_status st;
     const gb_scene *sc = o->scene;
     char path[1024];
@@ -453,9 +499,12 @@ gb_status gb_run_output_step(gb_run_output *o, const gb_sim *sim, const gb_step_
         if ((st = write_rose_csv(path, sim, err))) return st;
     }
     if (snapshot_due(sc, r->step) && (st = write_snapshot(o, sim, r->step, err))) return st;
-    if ((sc->checkpoint_every > 0 && r->step % sc->checkpoint_every == 0) || checkpoint_time(o))
-        return checkpoint(o, sim, err);
-    return GB_OK;
+    int due = (sc->checkpoint_every > 0 && r->step % sc->checkpoint_every == 0) || checkpoint_time(o);
+    if (due && (st = checkpoint(o, sim, err))) return st;
+    int reason = gb_run_stop_requested();
+    if (!reason) return GB_OK;
+    snprintf(path, sizeof path, "after step %d", r->step);
+    return stop_here(o, sim, reason, due, path, err);
 }
 
 static gb_status write_snapshot(gb_run_output *o, const gb_sim *sim, int step, gb_error *err)
@@ -476,10 +525,9 @@ gb_status gb_run_output_close(gb_run_output *o, const gb_sim *sim, gb_status run
                               gb_error *err)
 {
     gb_status st = GB_OK;
-    if (o->steps && fclose(o->steps) != 0) st = gb_fail(err, GB_EIO, "%s/steps.csv: write failed", o->dir);
-    if (o->micro && fclose(o->micro) != 0 && !st)
-        st = gb_fail(err, GB_EIO, "%s/micromechanics.csv: write failed", o->dir);
-    if (o->host && fclose(o->host) != 0 && !st) st = gb_fail(err, GB_EIO, "%s/host_steps.csv: write failed", o->dir);
+    if (o->steps && fclose(o->steps) != 0) st = write_failed(o, "steps.csv", err);
+    if (o->micro && fclose(o->micro) != 0 && !st) st = write_failed(o, "micromechanics.csv", err);
+    if (o->host && fclose(o->host) != 0 && !st) st = write_failed(o, "host_steps.csv", err);
     if (o->history && fclose(o->history) != 0 && !st) o->history_failed = 1;
     if ((o->history_failed) && !st) st = gb_fail(err, GB_EIO, "%s/history.csv: write failed", o->dir);
     o->steps = o->micro = o->host = o->history = NULL;
@@ -493,12 +541,21 @@ gb_status gb_run_output_close(gb_run_output *o, const gb_sim *sim, gb_status run
     if (!st) st = gb_run_verdict_read(o->dir, o->scene, &verdict, err);
     for (int k = o->scene->warning[0] ? 1 : 0; !st && k < verdict.n_warnings; k++)
         fprintf(stderr, "gembem: warning: %s\n", verdict.warning[k]);
-    if (!st)
-        st = write_info(o, sim, run_status == GB_OK ? "completed" : gb_status_name(run_status), message, &verdict, err);
+    /* How the run ended: its own failure, else the final files' (written where it still can be) */
+    gb_status end = run_status ? run_status : st;
+    char why[GB_ERROR_MSG_MAX];
+    snprintf(why, sizeof why, "%s", run_status ? (message ? message : "") : st ? err->msg : "");
+    gb_error info_err = {0};
+    gb_status ist = write_info(o, sim, end ? gb_status_name(end) : "completed", why[0] ? why : NULL,
+                               st ? NULL : &verdict, &info_err);
+    if (!st && ist) st = ist, *err = info_err;
+    /* where run_info.yaml could not say it (a full disk), the lock file, rewritten in place, does */
+    gb_dir_lock_status(&o->lock, end ? gb_status_name(end) : "completed");
     /* A completed run has nothing to resume; any other keeps its last checkpoint. */
     char path[1024];
     snprintf(path, sizeof path, "%s/%s", o->dir, GB_CHECKPOINT_NAME);
     if (!st && run_status == GB_OK) remove(path);
+    gb_dir_lock_release(&o->lock);
     free(o->snap_steps);
     free(o);
     return st;

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "core/clock.h"
+#include "gembem/run.h"
 #include "io/run_output.h"
 #include "measure/step_measures.h"
 #include "scene/admit.h"
@@ -297,6 +298,7 @@ static gb_status step_failed(const gb_sim *sim, const gb_stage *sg, gb_status st
 {
     const gb_sim_step *c = &sim->cur;
     const gb_solver_settings *sv = &sim->scene->solver;
+    if (st == GB_EINTERRUPTED) return st; /* its message says where already */
     if (st == GB_ENOCONV) {
         char cut[96] = "", hint[400], why[160];
         if (c->finest < 1) snprintf(cut, sizeof cut, ", nor in sub-steps down to 1/%.0f of the step", 1 / c->finest);
@@ -433,6 +435,12 @@ gb_status gb_sim_run(gb_sim *sim, gb_run_output *out, gb_step_fn on_step, void *
             sim->pos = at;
             /* measure and output see the step's start in the saved state; then it becomes the next's */
             if (!st) st = measure_and_output(sim, out, on_step, user, &rep, t1, err);
+            /* with an output, gb_run_output_step has checked for a stop (and checkpointed) */
+            if (!st && !out && gb_run_stop_requested()) {
+                char name[32];
+                st = gb_fail(err, GB_EINTERRUPTED, "interrupted by %s after step %d",
+                             gb_run_signal_name(gb_run_stop_requested(), name, sizeof name), step);
+            }
             double t2 = gb_clock_seconds();
             if (!st) save_state(sim, err, &st);
             sim->profile.control += gb_clock_seconds() - t2;
