@@ -3,7 +3,6 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <stdio.h>
 
 #include "solver/solver_impl.h"
 
@@ -102,12 +101,10 @@ static int stalled(gb_solver_damping *d, const gb_sim *sim, double force)
 {
     long w = gb_solver_step_work(sim) - d->relax_work0;
     if (!(force > STALL_FALL * d->stall_ref)) {
-        if (getenv("GB_STALL_DEBUG")) fprintf(stderr, "fall %ld %g\n", w, force);
         d->stall_ref = force, d->stall_at = w;
         return 0;
     }
     long window = 2 * d->stall_at > STALL_WORK ? 2 * d->stall_at : STALL_WORK;
-    if (getenv("GB_STALL_DEBUG") && getenv("GB_STALL_OFF")) return 0;
     return w - d->stall_at > window;
 }
 
