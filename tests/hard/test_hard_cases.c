@@ -57,7 +57,7 @@ static gb_status run(gb_scene *s, int solver, outcome *o, const char *name)
     printf("%-28s %-18s: %s%s%s\n", name, SOLVERS[solver], st ? "stopped: " : "converged", st ? err.msg : "",
            o->finite ? "" : " NON-FINITE");
     CHECK(st == GB_OK || st == GB_ENOCONV);
-    if (st == GB_ENOCONV) CHECK(strstr(err.msg, "did not converge") != NULL);
+    if (st == GB_ENOCONV) CHECK(strstr(err.msg, "did not converge") != NULL || strstr(err.msg, "stalled") != NULL);
     CHECK(o->finite);
     if (st == GB_OK) CHECK(o->max_force <= s->solver.accuracy);
     gb_sim_free(sim);
