@@ -138,11 +138,12 @@ gb_status gb_bem_assemble(const gb_bem_mesh *m, const gb_bem_material *mat, gb_b
     /* The method is dense: H and G, then the mixed system's copy for its LU and the condensation's
      * right-hand sides, about four (2n)^2 matrices of doubles. A mesh that cannot fit is refused
      * before anything is allocated, rather than left to the kernel's out-of-memory killer. */
-    double need = 4.0 * 8.0 * (2.0 * m->n) * (2.0 * m->n), have = gb_memory_physical();
+    double need = 4.0 * 8.0 * (2.0 * m->n) * (2.0 * m->n), have = gb_memory_available();
     if (have > 0 && need > have)
         return gb_fail(err, GB_EINPUT,
                        "the boundary mesh has %d elements: its dense matrices need about %.3g GB (four (2n)^2 "
-                       "matrices of doubles), more than this machine's %.3g GB; use fewer elements",
+                       "matrices of doubles), more than the %.3g GB this machine has available; use fewer "
+                       "elements",
                        m->n, need / 1e9, have / 1e9);
     size_t nd = 2 * (size_t)m->n;
     sys->ndof = (int)nd;

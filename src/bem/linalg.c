@@ -1,5 +1,7 @@
 #include "bem/linalg.h"
 
+#include "core/blas.h"
+
 #include <lapacke.h>
 #include <math.h>
 #include <stdlib.h>
@@ -28,6 +30,7 @@ void gb_bem_lu_free(gb_bem_lu *lu)
     memset(lu, 0, sizeof *lu);
 }
 
+/* The LAPACK calls on one BLAS thread: the same bytes whatever OPENBLAS_NUM_THREADS (core/blas.h). */
 gb_status gb_bem_lu_factor(gb_bem_lu *lu, gb_error *err)
 {
     size_t n = (size_t)lu->n;
@@ -39,7 +42,9 @@ gb_status gb_bem_lu_factor(gb_bem_lu *lu, gb_error *err)
         for (size_t i = 0; i < n; i++) c[i] *= lu->cs[j];
     }
     double anorm = LAPACKE_dlange(LAPACK_COL_MAJOR, '1', lu->n, lu->n, lu->a, lu->n);
+    int threads = gb_blas_single();
     lapack_int info = LAPACKE_dgetrf(LAPACK_COL_MAJOR, lu->n, lu->n, lu->a, lu->n, lu->ipiv);
+    gb_blas_restore(threads);
     if (info < 0) return gb_fail(err, GB_EINTERNAL, "dgetrf: bad argument %d", (int)-info);
     lu->singular = info > 0;
     lu->rcond = 0;
@@ -53,7 +58,9 @@ gb_status gb_bem_lu_factor(gb_bem_lu *lu, gb_error *err)
 gb_status gb_bem_lu_solve(const gb_bem_lu *lu, int nrhs, double *b, gb_error *err)
 {
     if (lu->singular) return gb_fail(err, GB_ENUMERIC, "the boundary element system is singular");
+    int threads = gb_blas_single();
     lapack_int info = LAPACKE_dgetrs(LAPACK_COL_MAJOR, 'N', lu->n, nrhs, lu->a, lu->n, lu->ipiv, b, lu->n);
+    gb_blas_restore(threads);
     if (info < 0) return gb_fail(err, GB_EINTERNAL, "dgetrs: bad argument %d", (int)-info);
     size_t n = (size_t)lu->n;
     for (int r = 0; r < nrhs; r++)

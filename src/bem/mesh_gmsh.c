@@ -31,15 +31,32 @@ typedef struct {
     size_t n_nodes;
 } extract;
 
+/* gmsh's first error since it started (its logger keeps every message, gmsh_start), into
+ * msg[0..size): a .geo's parser recovers and goes on, so its last error is often a consequence
+ * of the first, lines later. Empty if there is none. */
+static void first_error(char *msg, size_t size)
+{
+    char **log = NULL;
+    size_t n = 0;
+    int ierr = 0;
+    msg[0] = '\0';
+    gmshLoggerGet(&log, &n, &ierr);
+    for (size_t k = 0; k < n; k++) {
+        if (!msg[0] && !strncmp(log[k], "Error: ", 7)) snprintf(msg, size, "%s", log[k] + 7);
+        gmshFree(log[k]);
+    }
+    if (log) gmshFree(log);
+    if (msg[0]) return;
+    char *last = NULL; /* a message the logger did not keep */
+    gmshLoggerGetLastError(&last, &ierr);
+    if (last) snprintf(msg, size, "%s", last), gmshFree(last);
+}
+
 static gb_status gmsh_error(const char *path, const char *what, gb_error *err)
 {
-    char *msg = NULL;
-    int ierr = 0;
-    gmshLoggerGetLastError(&msg, &ierr);
-    gb_status st =
-        gb_fail(err, GB_EINPUT, "%s: gmsh could not %s%s%s", path, what, msg && msg[0] ? ": " : "", msg ? msg : "");
-    if (msg) gmshFree(msg);
-    return st;
+    char msg[GB_ERROR_MSG_MAX / 2];
+    first_error(msg, sizeof msg);
+    return gb_fail(err, GB_EINPUT, "%s: gmsh could not %s%s%s", path, what, msg[0] ? ": " : "", msg);
 }
 
 /* With General.AbortOnError = 0 gmsh reports parse and meshing errors through its logger only
@@ -472,8 +489,10 @@ static void gmsh_start(int *ierr)
     gmshInitialize(0, NULL, 0, ierr);
     if (*ierr) return;
     gmshOptionSetNumber("General.Terminal", 0, ierr);
-    gmshOptionSetNumber("General.Verbosity", 0, ierr);
+    /* errors only, to the logger (not the terminal), which keeps them all for first_error */
+    gmshOptionSetNumber("General.Verbosity", 1, ierr);
     gmshOptionSetNumber("General.AbortOnError", 0, ierr);
+    gmshLoggerStart(ierr);
 }
 
 /* gmsh 4.8's msh2 reader dereferences a null vertex on some malformed files (a node line with an
@@ -550,6 +569,7 @@ gb_status gb_bem_mesh_load(const char *path, const gb_bem_mesh_opts *opts, gb_be
     if (!st && is_geo) st = mesh_geo(&x, o, err);
     if (!st) st = read_segments(&x, err);
     if (!st) st = read_nodes(&x, err);
+    gmshLoggerStop(&ierr);
     gmshFinalize(&ierr);
     setlocale(LC_NUMERIC, saved_numeric);
     if (!st) st = chain_loops(&x, o, mesh, err);

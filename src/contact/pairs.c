@@ -10,6 +10,8 @@ static int gb_pairs_thread(void) { return 0; }
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/memory.h"
+
 void gb_pair_set_free(gb_pair_set *P)
 {
     free(P->p);
@@ -231,6 +233,36 @@ gb_status gb_grains_cell_order(const gb_grain *g, int n, int *order, gb_error *e
     return st;
 }
 
+gb_status gb_pairs_scan_overlaps(gb_pair_search *S, const gb_world *w, gb_pair_visit visit, void *user,
+                                 gb_error *err)
+{
+    double skin = S->skin;
+    S->skin = 0;
+    gb_grid G;
+    gb_status st = cells_fill(S, w, &G, err);
+    S->skin = skin;
+    for (int i = 0, stop = 0; !st && !stop && i < w->n; i++) {
+        const gb_grain *a = &w->g[i];
+        int cx, cy;
+        cell_of(&G, a->x, a->y, &cx, &cy);
+        for (int y = cy - 1; y <= cy + 1; y++) {
+            if (y < 0 || y >= G.ny) continue;
+            for (int x = cx - 1; x <= cx + 1; x++) {
+                if (x < 0 || x >= G.nx) continue;
+                int c = y * G.nx + x;
+                const gb_cell_entry *e = &S->cell_grains[S->cell_start[c]], *end = &S->cell_grains[S->cell_start[c + 1]];
+                for (; e < end; e++) {
+                    if (e->j <= i) continue;
+                    double dx = e->x - a->x, dy = e->y - a->y, reach = a->r + e->r;
+                    if (dx * dx + dy * dy >= reach * reach) continue;
+                    stop |= visit(user, i, e->j, reach - sqrt(dx * dx + dy * dy));
+                }
+            }
+        }
+    }
+    return st;
+}
+
 gb_status gb_pairs_rebuild(gb_pair_set *P, gb_pair_search *S, const gb_world *w, gb_error *err)
 {
     const gb_grain *g = w->g;
@@ -273,6 +305,17 @@ gb_status gb_pairs_rebuild(gb_pair_set *P, gb_pair_search *S, const gb_world *w,
     for (int k = 0, i = 0; i <= n; i++) { /* the old list's first pair of each grain */
         while (k < P->n && P->p[k].i < i) k++;
         S->old_start[i] = k;
+    }
+    /* A list the machine cannot hold (the grains admitted, but far more pairs than their count) is
+     * refused with its size rather than left to the kernel's out-of-memory killer; checked only
+     * when the list grows by much, as reading the kernel's count costs a file. */
+    double grows = ((double)m - S->tmp_cap) * sizeof(gb_pair);
+    if (grows > 64e6) {
+        double have = gb_memory_available();
+        if (have > 0 && grows > have)
+            return gb_fail(err, GB_EINPUT, "%d grains have %d candidate pairs, whose list needs %.3g GB more, more "
+                           "than the %.3g GB this machine has available; use fewer grains, or radii less spread "
+                           "(the pairs are searched within the largest grain's reach)", n, m, grows / 1e9, have / 1e9);
     }
     if ((st = grow((void **)&S->tmp, &S->tmp_cap, m, sizeof(gb_pair), err))) return st;
 #pragma omp parallel num_threads(T) if (T > 1)

@@ -104,6 +104,15 @@ void gb_pair_search_free(gb_pair_search *S);
  * the state of the pairs that persist. Both lists are sorted by (i, j). */
 gb_status gb_pairs_rebuild(gb_pair_set *P, gb_pair_search *S, const gb_world *w, gb_error *err);
 
+/* The grain pairs i < j whose discs overlap (distance below r_i + r_j), found with the rebuild's
+ * cell grid but without building a list, so that an admission check costs no pair list however
+ * many grains coincide: visit(user, i, j, d) with the overlap d, grain after grain in increasing
+ * i (its partners in cell order). A nonzero return stops the scan once grain i's pairs are
+ * visited. S's cell buffers are used (S->skin is ignored). */
+typedef int (*gb_pair_visit)(void *user, int i, int j, double d);
+gb_status gb_pairs_scan_overlaps(gb_pair_search *S, const gb_world *w, gb_pair_visit visit, void *user,
+                                 gb_error *err);
+
 /* The grains' order by cell: order[k] is the index of the k-th grain of g[0..n) in the grid of
  * gb_pairs_rebuild over their extent, cells row by row from the bottom, each cell's grains in
  * increasing index. Neighbours are then near in memory: a simulation keeps its grains so

@@ -111,11 +111,11 @@ static double memory_need(const gb_scene *scene)
 gb_status gb_gem_problem_create(const gb_scene *scene, gb_sim **out, gb_error *err)
 {
     *out = NULL;
-    double need = memory_need(scene), have = gb_memory_physical();
+    double need = memory_need(scene), have = gb_memory_available();
     if (have > 0 && need > have)
         return gb_fail(err, GB_EINPUT,
-                       "%d grains need at least %.3g GB with the %s solver, more than this machine's %.3g GB of "
-                       "physical memory; use fewer grains", scene->n_grains, need / 1e9,
+                       "%d grains need at least %.3g GB with the %s solver, more than the %.3g GB of memory "
+                       "this machine has available; use fewer grains", scene->n_grains, need / 1e9,
                        scene->solver.method == GB_METHOD_GLOBAL ? "global" : "reference", have / 1e9);
     gb_sim *sim = calloc(1, sizeof *sim);
     if (!sim) return gb_fail(err, GB_ENOMEM, "out of memory");

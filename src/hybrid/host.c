@@ -5,6 +5,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/blas.h"
+
 void gb_host_free(gb_host *h)
 {
     if (!h) return;
@@ -107,7 +109,9 @@ void gb_host_vars_free(gb_host_vars *v)
 void gb_host_update_force(gb_host *h, const gb_host_vars *v)
 {
     memcpy(h->force, v->f0, (size_t)h->m * sizeof(double));
+    int threads = gb_blas_single(); /* OpenBLAS splits a square dgemv by columns on threads: core/blas.h */
     cblas_dgemv(CblasColMajor, CblasNoTrans, h->m, h->m, 1.0, h->K.K, h->m, v->u, 1, 1.0, h->force, 1);
+    gb_blas_restore(threads);
 }
 
 gb_bem_problem gb_host_problem(const gb_host *h, const gb_host_vars *v)

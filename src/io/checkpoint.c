@@ -218,6 +218,31 @@ static void write_body(FILE *f, const gb_sim *sim, const gb_checkpoint_meta *m)
     if (sim->cur.active) put_step(f, sim);
 }
 
+/* The line of the first non-finite number written (%a's "inf", "-inf", "nan", "-nan"), or 0. The
+ * reader takes finite numbers only (but the solver's "inf" on the stall line, before its first
+ * move), and a checkpoint is written to be read back: one that holds a non-finite value is not
+ * written, so that the last one, of a finite state, is what --resume finds. Hex floats, integers
+ * and the labels never spell these words; the scene's path and the files' names are skipped. */
+static int nonfinite_line(const char *buf, size_t len)
+{
+    int line = 1;
+    for (size_t k = 0; k < len;) {
+        size_t end = k;
+        while (end < len && buf[end] != '\n') end++;
+        int skip = !strncmp(buf + k, "scene ", 6) || !strncmp(buf + k, "file ", 5) || !strncmp(buf + k, "stall ", 6);
+        for (size_t w = k; !skip && w < end;) {
+            size_t n = 0;
+            while (w + n < end && buf[w + n] != ' ') n++;
+            const char *q = buf + w + (buf[w] == '-');
+            size_t m = n - (buf[w] == '-');
+            if (m == 3 && (!strncmp(q, "inf", 3) || !strncmp(q, "nan", 3))) return line;
+            w += n + 1;
+        }
+        k = end + 1, line++;
+    }
+    return 0;
+}
+
 gb_status gb_checkpoint_write(const char *dir, const gb_sim *sim, const gb_checkpoint_meta *m, gb_error *err)
 {
     char path[1200];
@@ -230,6 +255,10 @@ gb_status gb_checkpoint_write(const char *dir, const gb_sim *sim, const gb_check
     write_body(mem, sim, m);
     gb_status st = GB_OK;
     if (fclose(mem) != 0 || !buf) st = gb_fail(err, GB_ENOMEM, "out of memory for a checkpoint");
+    int bad = st ? 0 : nonfinite_line(buf, len);
+    if (bad)
+        st = gb_fail(err, GB_ENUMERIC, "%s: the state holds a non-finite value (it would be line %d), which no run "
+                     "can continue from: not written, the last checkpoint of a finite state is kept", path, bad);
     if (st) {
         free(buf);
         return st;

@@ -170,45 +170,56 @@ static gb_status admit_host(gb_scene *s, const gb_bem_mesh *mesh, unsigned char 
     return st;
 }
 
-/* Pairs of grains through the contact module's cell list (no O(N^2) loop); marks the grains that
- * touch one another in touch[]. */
+/* What the scan of the pairs finds: the first pair beyond the tolerance (its smaller grain first,
+ * then its partner's index), how many are beyond, and the touches. */
+typedef struct {
+    gb_scene *s;
+    unsigned char *touch;
+    int first_i, first_j, beyond;
+    double first_d;
+} pair_scan;
+
+static int visit_pair(void *user, int i, int j, double d)
+{
+    pair_scan *c = user;
+    gb_scene *s = c->s;
+    double rmin = fmin(s->grains[i].r, s->grains[j].r);
+    c->touch[i] = c->touch[j] = 1;
+    s->overlaps.grain_pairs++;
+    s->overlaps.grain_largest = fmax(s->overlaps.grain_largest, d / rmin);
+    if (!(d > s->max_overlap * rmin)) return 0;
+    c->beyond++;
+    if (c->first_i < 0 || (i == c->first_i && j < c->first_j)) c->first_i = i, c->first_j = j, c->first_d = d;
+    return 1; /* the rest of grain i's pairs, then stop: coincident grains make N^2 / 2 pairs */
+}
+
+/* Pairs of grains through the contact module's cell grid, without a pair list: the scan stops at
+ * the first grain with a partner beyond the tolerance, so that a million coincident grains are
+ * refused in the time of one pass; marks the grains that touch one another in touch[]. */
 static gb_status admit_pairs(gb_scene *s, unsigned char *touch, gb_error *err)
 {
-    gb_pair_set L = {0};
     gb_pair_search S = {0};
     gb_world w = {s->grains, s->n_grains, NULL, NULL};
-    gb_status st = gb_pairs_rebuild(&L, &S, &w, err);
-    int first = -1, beyond = 0; /* the first pair beyond the tolerance, and how many are */
-    double f = s->max_overlap;
-    for (int k = 0; !st && k < L.n; k++) {
-        gb_pair *p = &L.p[k];
-        gb_pair_geometry(p, &w);
-        double rmin = fmin(s->grains[p->i].r, s->grains[p->j].r);
-        if (p->d > -TOUCH_GAP * rmin) touch[p->i] = touch[p->j] = 1;
-        if (!(p->d > 0)) continue;
-        if (p->d > f * rmin && beyond++ == 0) first = k;
-        s->overlaps.grain_pairs++;
-        s->overlaps.grain_largest = fmax(s->overlaps.grain_largest, p->d / rmin);
-    }
-    if (!st && first >= 0) {
-        const gb_pair *p = &L.p[first];
-        double ratio = p->d / fmin(s->grains[p->i].r, s->grains[p->j].r);
-        char fix[300], pairs[64] = "";
-        if (beyond > 1) snprintf(pairs, sizeof pairs, " (%d pairs overlap beyond it)", beyond);
-        /* a centre inside the other disc: no packing does that, radii in another unit do */
-        if (s->overlaps.grain_largest > 1)
-            snprintf(fix, sizeof fix, "overlaps of more than a radius (up to %.3g) put centres inside other grains: "
-                     "check that the radii are in the same unit as the positions (units.length: %s)",
-                     s->overlaps.grain_largest, s->length_unit);
-        else
-            snprintf(fix, sizeof fix, "move the grains apart (gembem pack places grains without such overlaps), or "
-                     "give grains.max_overlap: %.2f if the packing is jammed on purpose",
-                     ceil(20 * s->overlaps.grain_largest) / 20);
-        st = grain_fail(s, p->j, err, "overlaps grain %d by %g (%.3g of the smaller radius); expected at most "
-                                      "grains.max_overlap = %g of it%s: %s", p->i, p->d, ratio, f, pairs, fix);
-    }
-    gb_pair_set_free(&L), gb_pair_search_free(&S);
-    return st;
+    pair_scan c = {s, touch, -1, -1, 0, 0};
+    gb_status st = gb_pairs_scan_overlaps(&S, &w, visit_pair, &c, err);
+    gb_pair_search_free(&S);
+    if (st || c.first_i < 0) return st;
+    int i = c.first_i, j = c.first_j;
+    double f = s->max_overlap, ratio = c.first_d / fmin(s->grains[i].r, s->grains[j].r);
+    char fix[300], pairs[96] = "", partner[64] = "";
+    if (c.beyond > 1) snprintf(pairs, sizeof pairs, " (grain %d overlaps %d grains beyond it)", i, c.beyond);
+    if (s->grain_line) snprintf(partner, sizeof partner, " (line %d)", s->grain_line[i]);
+    /* a centre inside the other disc: no packing does that, radii in another unit do */
+    if (s->overlaps.grain_largest > 1)
+        snprintf(fix, sizeof fix, "overlaps of more than a radius (up to %.3g) put centres inside other grains: "
+                 "check that the radii are in the same unit as the positions (units.length: %s)",
+                 s->overlaps.grain_largest, s->length_unit);
+    else
+        snprintf(fix, sizeof fix, "move the grains apart (gembem pack places grains without such overlaps), or "
+                 "give grains.max_overlap: %.2f if the packing is jammed on purpose",
+                 ceil(20 * s->overlaps.grain_largest) / 20);
+    return grain_fail(s, j, err, "overlaps grain %d%s by %g (%.3g of the smaller radius); expected at most "
+                                 "grains.max_overlap = %g of it%s: %s", i, partner, c.first_d, ratio, f, pairs, fix);
 }
 
 void gb_scene_warn(gb_scene *s, const char *fmt, ...)

@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "scene/admit.h"
 #include "scene/csv_read.h"
 
 static const char *const wall_names[GB_N_WALLS] = {"left", "right", "bottom", "top"};
@@ -176,6 +177,13 @@ static gb_status read_contacts_csv(const char *path, gb_scene *s, gb_error *err)
         if ((st = gb_csv_number(&csv, ci, &i, err)) || (st = gb_csv_number(&csv, cp, &pt, err)) ||
             (cm >= 0 && (st = gb_csv_number(&csv, cm, &mr, err))))
             break;
+        /* the bound's reason: src/scene/admit.h */
+        if (!(fabs(pt) <= GB_FORCE_MAX) || !(fabs(mr) <= GB_FORCE_MAX)) {
+            st = gb_csv_fail(&csv, fabs(pt) <= GB_FORCE_MAX ? cm : cp, err,
+                             "a magnitude of at most 1e145 (a run squares forces and moments and sums them over "
+                             "the grains: beyond it, the run goes non-finite)");
+            break;
+        }
         int wall = gb_wall_from_name(csv.field[cj]), particle = -1;
         /* a boundary particle of a host, p<e> (a hybrid run's state) */
         if (s->host.present && csv.field[cj][0] == 'p' && csv.field[cj][1] >= '0' && csv.field[cj][1] <= '9') {

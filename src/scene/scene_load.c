@@ -391,6 +391,33 @@ static gb_status check_accuracy(const gb_yaml_doc *doc, const gb_scene *s, gb_er
                         "or more", a, res, kn, x, gb_scene_suggested_accuracy(res));
 }
 
+/* A spring's force over an overlap of the largest radius is bounded as every force is
+ * (GB_FORCE_MAX, src/scene/admit.h): kn = 1e300 makes the first contact's energy kn d^2 / 2
+ * infinite. */
+static gb_status check_stiffness(const gb_yaml_doc *doc, const gb_scene *s, gb_error *err)
+{
+    double rmax = 0;
+    for (int i = 0; i < s->n_grains; i++) rmax = fmax(rmax, s->grains[i].r);
+    const char *names[2] = {"grain_grain", s->host.present ? "grain_boundary" : "grain_wall"};
+    const gb_material *mats[2] = {&s->grain_grain, s->host.present ? &s->grain_boundary : &s->grain_wall};
+    for (int k = 0; k < 2; k++) {
+        const char *key[2] = {"kn", "kt"};
+        double v[2] = {mats[k]->kn, mats[k]->kt};
+        for (int q = 0; q < 2; q++) {
+            if (v[q] * rmax <= GB_FORCE_MAX) continue;
+            char where[64];
+            snprintf(where, sizeof where, "/materials/%s/%s", names[k], key[q]);
+            return gb_yaml_fail(doc, node_at(doc, where), err,
+                                "materials.%s.%s: %g makes a force of %.3g over the largest radius %g; expected %s "
+                                "times the largest radius at most 1e145 (%s: %.3g), as every force: a run squares "
+                                "forces and sums them over the grains, and beyond it goes non-finite; check its "
+                                "units (%s/%s)", names[k], key[q], v[q], v[q] * rmax, rmax, key[q], key[q],
+                                GB_FORCE_MAX / rmax, s->force_unit, s->length_unit);
+        }
+    }
+    return GB_OK;
+}
+
 /* A contact under a wall stress sigma (force per length of wall) carries about sigma times a
  * diameter and overlaps by about 2 sigma / kn of a radius, whatever the size. Above a radius the
  * grains would pass through each other: kn or the stress is in another unit (kn in N/m in a cm
@@ -511,7 +538,8 @@ static gb_status load(const gb_yaml_doc *doc, gb_scene *s, gb_bem_mesh *mesh, gb
     }
     if ((st = gb_ymap_close(&top, err))) return st;
     if (read_pack) return check_pack_accuracy(doc, &top, s, err);
-    if ((st = gb_scene_admit(s, s->host.present ? mesh : NULL, err)) || (st = check_springs(doc, s, err)) ||
+    if ((st = gb_scene_admit(s, s->host.present ? mesh : NULL, err)) || (st = check_stiffness(doc, s, err)) ||
+        (st = check_springs(doc, s, err)) ||
         (st = check_accuracy(doc, s, err)))
         return st;
     return check_force_scale(doc, &top, s, err);

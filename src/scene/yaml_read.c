@@ -79,9 +79,10 @@ gb_status gb_yaml_load(const char *path, gb_yaml_doc *doc, gb_error *err)
     if (!doc->fyd) {
         void *it = NULL;
         struct fy_diag_error *e = fy_diag_errors_iterate(diag, &it);
+        /* the diag's line and column are 1-based already (its token's marks are 0-based): the
+         * offending token's first character, a duplicate key's second occurrence */
         if (e)
-            st = gb_fail(err, GB_EINPUT, "%s:%d:%d: YAML syntax error: %s", path, e->line + 1, e->column + 1,
-                         e->msg);
+            st = gb_fail(err, GB_EINPUT, "%s:%d:%d: YAML syntax error: %s", path, e->line, e->column, e->msg);
         else
             st = gb_fail(err, GB_EINPUT, "%s: not a valid YAML document", path);
     } else if (!fy_document_root(doc->fyd)) {
@@ -112,6 +113,9 @@ void gb_yaml_where(struct fy_node *node, int *line, int *col)
             if (mk) {
                 *line = mk->line + 1;
                 *col = mk->column + 1;
+                /* a quoted scalar's mark is its text's, one past the opening quote on the same line */
+                enum fy_node_style style = fy_node_get_style(node);
+                if ((style == FYNS_SINGLE_QUOTED || style == FYNS_DOUBLE_QUOTED) && *col > 1) (*col)--;
             }
             return;
         }

@@ -7,6 +7,10 @@
 # the .expect's text (what to change); the change their "# fix: SED" line makes then runs. The
 # scenes of tests/cli/warn run, with the .expect's warning on stderr and in run_info.yaml. The
 # .expect files hold the hints, so that a hint lost fails the test (docs/troubleshooting.md).
+# Every position in an .expect is counted from the test file as an editor does (1-based line, 1-based
+# column of the offending token's first character: a quoted scalar's opening quote, a duplicate
+# key's second occurrence), not copied from gembem's output; where it is not obvious, the test
+# file says how in a comment (an awk one-liner that prints the column).
 #   run_bad_scenes.sh GEMBEM GMSH
 set -u
 gembem=$1; gmsh=$2; dir=$(dirname "$0")
