@@ -4,7 +4,7 @@
 # set where it is added: set_property(TEST name APPEND PROPERTY LABELS cli)).
 set(GB_TEST_MODULES
     bem cli contact core gem hybrid io measure pack run scene solver   # src/<module>
-    validation demo python study fuzz tools docs)                  # validation/, the demo, python/, studies/, fuzz/, tools/, the README
+    validation demo python study fuzz tools docs install)          # validation/, the demo, python/, studies/, fuzz/, tools/, the README, the installed files
 
 # A test of one C program test_x.c (the executable test_x), run with the arguments that follow in
 # the repository's root. It sees the public API only (include/gembem/), as the tools and

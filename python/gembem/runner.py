@@ -23,6 +23,11 @@ from .scene import Scene
 _HERE = os.path.dirname(os.path.abspath(__file__))
 # The build tree of the checkout this package lives in (python/gembem -> build/gembem).
 _BUILD_TREE = os.path.normpath(os.path.join(_HERE, "..", "..", "build", "gembem"))
+try:  # written by cmake --install: the installed command beside this installed package
+    from ._paths import BINDIR as _BINDIR
+    _INSTALLED = os.path.join(_BINDIR, "gembem")
+except ImportError:  # this package in a checkout
+    _INSTALLED = None
 # A hybrid scene's line has no stress ratio (a host has no box stresses).
 _PROGRESS = re.compile(r"step (\d+) of (\d+)(?:\s+stress ratio (\S+))?\s+iterations (\d+)\s+elapsed (\S+) s")
 
@@ -40,21 +45,23 @@ class Progress:
 
 
 def find_gembem(gembem=None):
-    """The gembem executable: the argument, else $GEMBEM, else the build tree of this checkout
-    (build/gembem), else `gembem` on PATH. An argument or $GEMBEM that is not an executable is an
-    error, not a reason to look elsewhere."""
+    """The gembem executable: the argument, else $GEMBEM, else the one installed with this package
+    (cmake --install, the .deb), else the build tree of this checkout (build/gembem), else
+    `gembem` on PATH. An argument or $GEMBEM that is not an executable is an error, not a reason
+    to look elsewhere."""
     for given, what in ((gembem, "the gembem argument"), (os.environ.get("GEMBEM"), "$GEMBEM")):
         if given:
             path = shutil.which(os.fspath(given))
             if not path:
                 raise FileNotFoundError(f"{what} is '{given}': not an executable file")
             return path
-    if os.access(_BUILD_TREE, os.X_OK):
-        return _BUILD_TREE
+    for candidate in _INSTALLED, _BUILD_TREE:
+        if candidate and os.access(candidate, os.X_OK):
+            return candidate
     path = shutil.which("gembem")
     if not path:
         raise FileNotFoundError("no gembem executable: expected the gembem argument, $GEMBEM, "
-                                f"{_BUILD_TREE} (cmake --build build) or gembem on PATH")
+                                f"{_INSTALLED or _BUILD_TREE} or gembem on PATH")
     return path
 
 
