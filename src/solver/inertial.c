@@ -6,12 +6,12 @@
  * packing (affine_walls).
  * A hybrid scene's boundary particles move with the grains, each by its own stiffness (the host's
  * and its contacts': particle_move): without them, the localisation sweep's line search stalled
- * with what was left on the particles (4 of its 8 cases, session 10).
+ * with what was left on the particles (4 of its 8 cases).
  * A Jacobi or Gauss-Seidel iteration needs a number of sweeps that grows like the square of the
  * packing's side to carry a disturbance across it; an inertial one, like the side. Every grain moves
  * at every step (a disturbance must travel), so a step costs one evaluation of every contact.
  * Measured against the over-relaxed Gauss-Seidel sweeps of the unbalanced grains that it replaced
- * (docs/solver/research.md, sixth round): the 1e3 oedometric path of tools/bench_solver.sh from one
+ * (docs/solver-design.md): the 1e3 oedometric path of tools/bench_solver.sh from one
  * start 119 Newton iterations and 20 519 sweeps -> 58 iterations and 5 655 steps, half the time;
  * that packing's friction relaxation 68 088 sweeps -> 1 856 steps; the loose 1e3 deposit
  * compressed isotropically (servo walls, Jacobi sweeps then) 458 108 sweeps, 79 s -> 6 262 steps, 1.9 s. */
@@ -44,8 +44,8 @@ static void particle_move(const gb_sim *sim, int e, double d[2])
 
 /* A body's move in a step, dt v, and at most `cap` (its radius times solver.max_move): the velocity
  * is cut to match. Without the cap a grain pushed out of a squeeze coasted on, through the
- * half-discs of a hybrid scene's cavity wall and out of the body (the localisation study, session
- * 10: up to 9 grains a case, one 5.5 cm in a step); capped, a grain meeting a half-disc is turned
+ * half-discs of a hybrid scene's cavity wall and out of the body (the localisation study: up to
+ * 9 grains a case, one 5.5 cm in a step); capped, a grain meeting a half-disc is turned
  * back before it can pass it. Stopping a grain that has lost its last contact as well made the 1e4
  * peer relaxation 5 times slower (28 497 smoother steps against 4 656). */
 static void advance(double *v, double *d, int dofs, double dt, double cap)
@@ -72,7 +72,7 @@ typedef struct {
  * global.c). Moving a wall by its own contacts' stiffness with the grains held (gb_gem_wall_moves)
  * lets the packing follow by a wave from the walls, and on the +5 % stress step of
  * tools/bench_scaling.sh at 1e5 discs no grain was out of balance for the smoother's last 2 700 of
- * 3 444 steps, only the walls' stress (session 19, docs/solver/research.md): 36.7 s -> 1.6 s, 143
+ * 3 444 steps, only the walls' stress (docs/solver-design.md): 36.7 s -> 1.6 s, 143
  * steps. Each wall's move is at most solver.max_move times the mean radius (or its own-stiffness
  * move if larger: a loose packing whose affine stiffness is near zero is pressed at that pace). */
 static affine_move affine_walls(gb_sim *sim, const gb_wall_control *wc, double cap)

@@ -11,14 +11,12 @@
  * lower the merit either (in its 5 000 steps) is the step shortened by backtracking (every trial
  * from the iteration's start, so that the merit along the direction is a function of the length
  * alone: the incremental law, K 6 and 13, sees one move).
- * Measured (docs/solver/research.md, sixth round; 1e3 path from one start): the smoother to a
- * thousandth of the merit 58 Newton iterations, to a millionth 30; the jammed 1e4 path 58 -> 39.
- * Until session 9 the smoother was Gauss-Seidel sweeps of the unbalanced grains, and a packing far
- * from balance tried lengths down to 1/16 first, which such sweeps needed and this one does not.
- * Since session 15, once a whole step has failed the smoother goes first (the next iterations and
- * load steps) and Newton runs only where it stalls: on the jammed 1e4 path of tools/bench_peer.sh
- * every whole step failed, and 36 factorisations, 11.4 s became 2, 7.5 s (research.md, tenth
- * round). */
+ * Measured (docs/solver-design.md; the 1e3 path from one start): the smoother to a thousandth
+ * of the merit 58 Newton iterations, to a millionth 30; the jammed 1e4 path 58 -> 39. An inertial
+ * smoother needs no shortened lengths first, as Gauss-Seidel sweeps of the unbalanced grains did.
+ * Once a whole step has failed the smoother goes first (the next iterations and load steps) and
+ * Newton runs only where it stalls: on the jammed 1e4 path of tools/bench_peer.sh every whole step
+ * failed, and 36 factorisations, 11.4 s became 2, 7.5 s. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -129,7 +127,7 @@ gb_status gb_solver_line_search_move(gb_solver *s, gb_sim *sim, const gb_wall_co
      * one factorisation, times 2^k after k failures in this relaxation (so that the
      * factorisations of failed steps cost at most about what the smoother does). A failure says
      * the next whole step on this packing, still rearranging, is likely to fail too, so the
-     * doubling starts at the first: the 1e6 peer relaxation (docs/benchmarks.md, session 22)
+     * doubling starts at the first: the 1e6 peer relaxation (docs/benchmarks.md)
      * tried a second whole step after 2 043 smoother steps, which failed, and the smoother
      * finished 540 steps later; with 4 086 it finished without it (463 -> 268 s). A new
      * relaxation starts from one factorisation's cost again: Newton's steps may work there (a
@@ -151,7 +149,7 @@ gb_status gb_solver_line_search_move(gb_solver *s, gb_sim *sim, const gb_wall_co
      * under its weight, where Newton's steps raise the merit 1e2-1e6 times and the smoother's
      * merit rises and falls as the grains rearrange, spent a third of its smoother steps on such
      * repeats: tools/settle_packing.sh's 1e3 discs 85 866 steps -> 60 433, the same state;
-     * docs/solver/research.md, eighth round). */
+     * docs/solver-design.md). */
     if ((st = gb_sim_state_save(sim, &s->smoothed, err))) return st;
     gb_sim_state_restore(sim, &s->trial);
     gb_gem_forces(sim);
