@@ -36,38 +36,39 @@ typedef struct {
     int loose_rattlers;
     int swing_steps, swing_step, swing_from, swing_to;
     int last_contacts;
-    double *work;         /* each step's iterations plus smoother steps (n_work of them) */
-    int n_work, cap_work, long_step, stalled_steps;
-    double long_work, long_seconds; /* the step of most work */
+    double *secs;         /* each step's seconds (n_secs of them) */
+    int n_secs, cap_secs, long_step, stalled_steps;
+    double long_work, long_seconds; /* the longest step's iterations plus smoother steps, and seconds */
 } watch;
 
-/* A step's work (iterations plus smoother steps, which do not depend on the machine) far above the
- * run's median: more than LONG_STEP times it, and more than LONG_STEP_WORK. */
-static const double LONG_STEP = 10, LONG_STEP_WORK = 10000;
+/* A step far longer than the run's others, as a user waits for it: more than LONG_STEP times the
+ * median step's seconds and more than LONG_STEP_SECONDS (the first step of a loose deposit's
+ * compression is often ten times the others', but seconds long: not worth a warning). */
+static const double LONG_STEP = 10, LONG_STEP_SECONDS = 60;
 
-static void add_work(watch *w, double work)
+static void add_secs(watch *w, double seconds)
 {
-    if (w->n_work == w->cap_work) {
-        int cap = w->cap_work ? 2 * w->cap_work : 64;
-        double *a = realloc(w->work, (size_t)cap * sizeof *a);
+    if (w->n_secs == w->cap_secs) {
+        int cap = w->cap_secs ? 2 * w->cap_secs : 64;
+        double *a = realloc(w->secs, (size_t)cap * sizeof *a);
         if (!a) return; /* a warning less, not a failure */
-        w->work = a, w->cap_work = cap;
+        w->secs = a, w->cap_secs = cap;
     }
-    w->work[w->n_work++] = work;
+    w->secs[w->n_secs++] = seconds;
 }
 
 /* The longest step against the median (after read_steps): warns where it is far above. */
 static void long_steps(gb_run_verdict *v, watch *w)
 {
-    if (w->n_work < 3) return;
-    double median = gb_median(w->work, w->n_work); /* sorted in place: the longest is known already */
+    if (w->n_secs < 3) return;
+    double median = gb_median(w->secs, w->n_secs); /* sorted in place: the longest is known already */
     int far = 0;
-    for (int k = 0; k < w->n_work; k++) far += w->work[k] > LONG_STEP * median && w->work[k] > LONG_STEP_WORK;
+    for (int k = 0; k < w->n_secs; k++) far += w->secs[k] > LONG_STEP * median && w->secs[k] > LONG_STEP_SECONDS;
     if (far)
-        warn(v, "%d step(s) took more than %g times the median step's work (%.0f iterations and smoother steps): "
-                "the longest, step %d, %.0f of them in %.3g s. The packing rearranged there; smaller load steps share "
-                "the rearrangement out, and solver.max_step_seconds bounds a step's time",
-             far, LONG_STEP, median, w->long_step, w->long_work, w->long_seconds);
+        warn(v, "%d step(s) took more than %g times the median step's time (%.3g s): the longest, step %d, %.3g s "
+                "(%.0f iterations and smoother steps). The packing rearranged there; smaller load steps share the "
+                "rearrangement out, and solver.max_step_seconds bounds a step's time",
+             far, LONG_STEP, median, w->long_step, w->long_seconds, w->long_work);
 }
 
 static void look_at_step(const gb_scene *sc, watch *w, int step, const double *x)
@@ -124,10 +125,12 @@ static gb_status read_steps(const char *dir, const gb_scene *sc, gb_run_verdict 
         double x[5];
         for (int q = 0; q < 5; q++) x[q] = value(&c, k_watch[q]);
         look_at_step(sc, w, step, x);
-        double work = value(&c, k_iter) + (k_sweeps >= 0 ? value(&c, k_sweeps) : 0);
-        if (isfinite(work)) {
-            if (work > w->long_work) w->long_work = work, w->long_step = step, w->long_seconds = value(&c, k_secs);
-            add_work(w, work);
+        double secs = value(&c, k_secs);
+        if (isfinite(secs)) {
+            if (secs > w->long_seconds)
+                w->long_seconds = secs, w->long_step = step,
+                w->long_work = value(&c, k_iter) + (k_sweeps >= 0 ? value(&c, k_sweeps) : 0);
+            add_secs(w, secs);
         }
         if (k_stop >= 0 && k_stop < c.n_fields && !strcmp(c.field[k_stop], "stalled")) w->stalled_steps++;
     }
@@ -183,7 +186,7 @@ gb_status gb_run_verdict_read(const char *dir, const gb_scene *sc, gb_run_verdic
     }
     gb_status st = read_steps(dir, sc, v, &w, err);
     if (st) {
-        free(w.work);
+        free(w.secs);
         return st;
     }
     if (w.accuracy_steps)
@@ -208,7 +211,7 @@ gb_status gb_run_verdict_read(const char *dir, const gb_scene *sc, gb_run_verdic
         warn(v, "%d step(s) stalled (their largest fixing force stopped falling) and converged only in sub-steps "
                 "(steps.csv's stop): the packing rearranged there; smaller load steps share the rearrangement out",
              w.stalled_steps);
-    free(w.work);
+    free(w.secs);
     read_undefined(dir, v);
     return GB_OK;
 }
