@@ -90,7 +90,7 @@ static void report_iteration(gb_sim *sim, long it, double max_force, double wall
  * isotropically by the reference iteration waited 50 000 iterations from its start, then 1.5 times
  * its work; the damped global solver on tests/hard's 50 % overlap case 168 000 iterations. Three
  * discs with alpha = 1.5 (the reference iteration unstable: its largest force wanders between 1e4
- * and 3e5 dyn) stall at about 250 000 iterations, a second, where max_iterations 2e9 would take
+ * and 3e5 dyn) stall at about 250 000 iterations, where max_iterations 2e9 would take
  * hours. */
 enum { STALL_WORK = 200000, STALL_RATIO = 4 };
 static const double STALL_FALL = 0.5;
