@@ -139,8 +139,8 @@ static gb_status relax(gb_sim *sim, const gb_wall_control *wc, long cap, double 
  * carry no vertical force, so the bottom wall carries the top's force plus the weight: the walls'
  * mean vertical stress s1 = (F_bottom + F_top) / 2W is at least half the weight over the width
  * (across, the same for a horizontal body force). Below it the top wall would rise after grains
- * that fall back, for ever, and the first step would never end. Refused at once instead, with what the stage needs. Walls with friction or cohesion can carry
- * the weight: not checked. */
+ * that fall back, for ever, and the first step would never end. Refused at once instead, with
+ * what the stage needs. Walls with friction or cohesion can carry the weight: not checked. */
 static gb_status weight_reachable(const gb_sim *sim, const gb_stage *sg, const gb_wall_control *wc, gb_error *err)
 {
     const gb_material *m = &sim->scene->grain_wall;
