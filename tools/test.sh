@@ -15,7 +15,8 @@ while [ $# -gt 0 ]; do
     --) ctest_args=("$@"); break ;;
     --sanitize)
       dir=build-asan; flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DGB_SANITIZE=ON)
-      export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 ;;
+      export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+      export LSAN_OPTIONS=suppressions=$PWD/tests/lsan.supp ;;   # leaks inside gmsh, not ours
     --with-petsc) setup=(--with-petsc); petsc=ON ;;
     --without-petsc) petsc=OFF ;;
     *) echo "usage: tools/test.sh [--sanitize] [--with-petsc | --without-petsc] [-- CTEST_ARGS]" >&2; exit 2 ;;
