@@ -58,9 +58,11 @@ def history_shape(rows):
             since += 1
             longest = max(longest, since)
     points = sorted({0, n // 10, n // 4, n // 2, 3 * n // 4, 9 * n // 10, n - 1})
-    smoother = sum(1 for r in rows if float(r["length"]) == 0.0)
+    progress = sum(1 for r in rows if r.get("smoother", "0") == "1")
+    smoother = sum(1 for r in rows if r.get("smoother", "0") == "0" and float(r["length"]) == 0.0)
     attempts = len({r["attempt"] for r in rows})
-    lines = [f"  history rows {n} (attempts {attempts}; rows where the smoother took over, length 0: {smoother})",
+    lines = [f"  history rows {n} (attempts {attempts}; iterations where the smoother took over, length 0:"
+             f" {smoother}; the smoother's progress rows: {progress})",
              "  largest fixing force at row: " + ", ".join(f"{i + 1}: {forces[i]:.3g}" for i in points),
              f"  lowest {best:.3g} at row {best_at + 1}; new lows {lows}; longest stretch without a new low {longest} rows"]
     tail = forces[n // 2:]

@@ -82,7 +82,14 @@ typedef struct {
     double damping;          /* global, newton: damped: the Levenberg-Marquardt damping after it; else 0 */
     double length;           /* global, newton: line_search: the share of Newton's step taken, 0 when its
                                 smoother took over; else 0 */
+    long sweeps;             /* the smoother's steps in the iteration (so far, in a smoother row) */
+    int smoother;            /* 1: the smoother's progress within iteration `iteration`, every
+                                GB_HISTORY_SWEEPS of its steps (max_fixing_force then, largest_move 0);
+                                0: the iteration's own report */
 } gb_iteration_report;
+
+/* How often a long stretch of the smoother reports its progress to solver.history. */
+enum { GB_HISTORY_SWEEPS = 1000 };
 
 typedef void (*gb_iteration_fn)(void *user, const gb_iteration_report *rep);
 

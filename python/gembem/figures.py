@@ -280,7 +280,10 @@ def iteration_forces(run, step):
     its attempts in order), then the force it converged at (steps.csv), as an array."""
     run = _runs(run)[0]
     h = run.history
-    force = list(h["max_fixing_force"][h["step"] == step])
+    rows = h["step"] == step
+    if "smoother" in h:  # the iterations' rows, not the smoother's progress within them
+        rows = rows & (h["smoother"] == 0)
+    force = list(h["max_fixing_force"][rows])
     if not force:
         raise ValueError(f"{h.path}: no iteration of step {step} (a step converged at once has none)")
     force += list(run.steps["max_fixing_force"][run.steps["step"] == step])

@@ -170,7 +170,8 @@ gb_status gb_run_output_open(const char *dir, const gb_sim *sim, int overwrite, 
         snprintf(path, sizeof path, "%s/history.csv", dir);
         if (!(o->history = fopen(path, "w")))
             return open_failed(o, gb_fail(err, GB_EIO, "%s: %s", path, strerror(errno)), 0);
-        fprintf(o->history, "step,attempt,iteration,max_fixing_force,wall_residual,largest_move,damping,length\n");
+        fprintf(o->history, "step,attempt,iteration,max_fixing_force,wall_residual,largest_move,damping,length,sweeps,"
+                             "smoother\n");
         fflush(o->history);
     }
     *out = o;
@@ -182,8 +183,8 @@ void gb_run_output_iteration(void *user, const gb_iteration_report *r)
     gb_run_output *o = user;
     if (!o->history || o->history_failed) return;
     gb_test_kill_point(o->history);
-    fprintf(o->history, "%d,%d,%ld,%.6e,%.6e,%.6e,%.6e,%.6e\n", r->step, r->attempt, r->iteration,
-            r->max_fixing_force, r->wall_residual, r->largest_move, r->damping, r->length);
+    fprintf(o->history, "%d,%d,%ld,%.6e,%.6e,%.6e,%.6e,%.6e,%ld,%d\n", r->step, r->attempt, r->iteration,
+            r->max_fixing_force, r->wall_residual, r->largest_move, r->damping, r->length, r->sweeps, r->smoother);
     if (fflush(o->history) != 0 || ferror(o->history)) o->history_failed = 1;
 }
 

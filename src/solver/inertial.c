@@ -234,6 +234,7 @@ gb_status gb_solver_inertial(gb_solver *s, gb_sim *sim, const gb_wall_control *w
         /* the step's clock (its limit, a long step's progress): past the limit the step fails and
          * goes back to its start, so the move needs no more accounting */
         if (s->work.sweeps % GB_POLL_SWEEPS == 0 && (st = gb_solver_poll(s, sim, NAN))) break;
+        if ((s->work.sweeps - s->sweeps0) % GB_HISTORY_SWEEPS == 0) gb_solver_report_smoother(s, sim, wall_residual);
     }
     if (step == max_steps) sim->state.acc.relaxation -= 0.5 * gb_gem_fixing_work(sim);
     memset(sim->scratch.dX, 0, 3 * (size_t)n * sizeof(double));

@@ -67,8 +67,8 @@ static gb_status global_move(gb_solver *s, gb_sim *sim, const gb_wall_control *w
     return gb_solver_damped_move(s, sim, wc, m0, err);
 }
 
-/* solver.history: what iteration `it` of this relaxation did. */
-static void report_iteration(gb_sim *sim, long it, double max_force, double wall_residual)
+/* solver.history: what iteration `it` of this relaxation did, from `sweeps0` smoother steps. */
+static void report_iteration(gb_sim *sim, long it, double max_force, double wall_residual, long sweeps0)
 {
     const gb_solver *s = sim->solver;
     double move = 0;
@@ -76,7 +76,17 @@ static void report_iteration(gb_sim *sim, long it, double max_force, double wall
         move = fmax(move, hypot(sim->scratch.dX[3 * i], sim->scratch.dX[3 * i + 1]) / sim->state.g[i].r);
     int global = s->global != NULL, line_search = s->set->newton == GB_NEWTON_LINE_SEARCH;
     gb_iteration_report r = {sim->pos.step + 1, sim->attempt, it, max_force, wall_residual, move,
-                             global && !line_search ? s->damping.mu : 0, global && line_search ? s->length : 0};
+                             global && !line_search ? s->damping.mu : 0, global && line_search ? s->length : 0,
+                             s->work.sweeps - sweeps0, 0};
+    sim->on_iteration(sim->on_iteration_user, &r);
+}
+
+void gb_solver_report_smoother(const gb_solver *s, gb_sim *sim, double wall_residual)
+{
+    if (!sim->on_iteration) return;
+    double f2 = fmax(gb_gem_largest_grain_force2(sim), gb_gem_largest_particle_force2(sim));
+    gb_iteration_report r = {sim->pos.step + 1, sim->attempt, sim->cur.relax_iters + 1, sqrt(f2), wall_residual, 0,
+                             0, 0, s->work.sweeps - s->sweeps0, 1};
     sim->on_iteration(sim->on_iteration_user, &r);
 }
 
@@ -146,9 +156,10 @@ gb_status gb_solver_relax(gb_sim *sim, const gb_wall_control *wc, long cap, long
         }
         if ((s->global || it % GB_POLL_SWEEPS == 0) && (st = gb_solver_poll(s, sim, *max_force))) break;
         /* Every grain's move from the same configuration, then all at once (order-independent). */
+        s->sweeps0 = s->work.sweeps;
         st = s->global ? global_move(s, sim, wc, *wall_residual, err) : gb_gem_reference_move(sim, err);
         if (st) break;
-        if (sim->on_iteration) report_iteration(sim, it + 1, *max_force, *wall_residual);
+        if (sim->on_iteration) report_iteration(sim, it + 1, *max_force, *wall_residual, s->sweeps0);
         sim->cur.relax_iters = it + 1;
         /* not after the last iteration allowed: its failed attempt is undone at once */
         if (it < cap && sim->on_within_step && (st = sim->on_within_step(sim->on_within_step_user, sim, err))) {

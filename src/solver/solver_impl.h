@@ -24,6 +24,7 @@ struct gb_solver {
     double *block_sums;         /* its smoother's sums over blocks of grains (inertial.c) */
     double length;              /* the share of Newton's step the last line search took (0: the smoother) */
     gb_solve_stop stop;         /* why the last relaxation stopped */
+    long sweeps0;               /* work.sweeps at the start of the iteration in progress */
     gb_solver_work work;        /* since the start of the process: only its changes within a load step are
                                    reported, so a resumed run needs none of it */
 };
@@ -58,5 +59,8 @@ gb_status gb_solver_inertial(gb_solver *s, gb_sim *sim, const gb_wall_control *w
  * stop other than GB_STOP_CONVERGED ends the relaxation with GB_ENOCONV and s->stop set. */
 enum { GB_POLL_SWEEPS = 32 };
 gb_status gb_solver_poll(gb_solver *s, gb_sim *sim, double max_force);
+/* solver.history: the smoother's progress within the iteration in progress (a row every
+ * GB_HISTORY_SWEEPS of its steps): the largest fixing force of a grain or particle now. */
+void gb_solver_report_smoother(const gb_solver *s, gb_sim *sim, double wall_residual);
 
 #endif

@@ -21,13 +21,21 @@ for method in reference global line_search; do
   if /usr/bin/python3 "$steperr" "$out/$method"; then ok "$method: steps.csv's error columns recomputed"
   else bad "$method: steps.csv's error columns differ from the state's"; fi
   # solver.history: one row per iteration that did not converge, the iterations of steps.csv, each
-  # starting above the accuracy, the line search's length in (0, 1].
-  if csv_awk -v m=$method 'FNR == 1 { next } FILENAME ~ /steps/ { its += $col("iterations"); next }
+  # starting above the accuracy, the line search's length in (0, 1]; each step's smoother steps
+  # summed over its iterations' rows are steps.csv's; the smoother's progress rows (smoother 1)
+  # are one per 1 000 of an iteration's steps.
+  if csv_awk -v m=$method 'FNR == 1 { next }
+      FILENAME ~ /steps/ { its += $col("iterations"); sweeps[$col("step")] = $col("sweeps"); next }
+      $col("smoother") == 1 { progress[$col("step") "," $col("attempt") "," $col("iteration")]++; next }
+      { key = $col("step") "," $col("attempt") "," $col("iteration"); summed[$col("step")] += $col("sweeps");
+        if (progress[key] + 0 != int($col("sweeps") / 1000)) bad = "iteration " key ": " progress[key] + 0 " progress rows for " $col("sweeps") " smoother steps" }
       { rows++; if ($col("max_fixing_force") <= 100) bad = "a row at or below the accuracy";
         if (m == "line_search" && !($col("length") >= 0 && $col("length") <= 1)) bad = "a length outside [0, 1]";
         if (m == "reference" && ($col("damping") != 0 || $col("length") != 0))
           bad = "damping or length for the reference iteration" }
-      END { if (rows != its) bad = rows " rows for " its " iterations"; if (bad) { print bad; exit 1 } }' \
+      END { if (rows != its) bad = rows " rows for " its " iterations";
+            for (k in sweeps) if (k > 0 && summed[k] + 0 != sweeps[k]) bad = "step " k ": " summed[k] + 0 " smoother steps in history.csv, " sweeps[k] " in steps.csv";
+            if (bad) { print bad; exit 1 } }' \
       "$out/$method/steps.csv" "$out/$method/history.csv"; then ok "$method: history.csv has a row per iteration"
   else bad "$method: history.csv"; fi
 done
