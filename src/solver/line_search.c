@@ -97,7 +97,10 @@ gb_status gb_solver_line_search_move(gb_solver *s, gb_sim *sim, const gb_wall_co
     /* While Newton's whole steps fail, the smoother goes first and Newton only where it stalls. */
     if (d->smoother_first > 0 && !d->newton_due) {
         s->length = 0;
-        double check = ldexp(d->smoother_first, d->newton_failures);
+        /* checked at least once a stretch: beyond it no check would ever be made, and a smoother
+         * stuck short of its target ran stretch after stretch without Newton (an L-shaped
+         * cavity's step: 30 stretches at 250 times the accuracy, docs/solver-design.md) */
+        double check = fmin(ldexp(d->smoother_first, d->newton_failures), MAX_SMOOTHING / 2);
         st = gb_solver_inertial(s, sim, wc, SMOOTHED * m0, MAX_SMOOTHING, check, &stalled, err);
         d->newton_due = stalled;
         return st;
