@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Include cycles between the folders of src/ (issue 18, item 1): ctest tools_include_cycles.
+"""Include cycles between the folders of src/: ctest tools_include_cycles.
 
 Builds the graph of src/'s folders: an edge A -> B when a file of src/A/ has `#include "B/..."`
 and B is another folder of src/ (the public headers, include/gembem/, are no folder of src/).
@@ -13,12 +13,9 @@ import os
 import re
 import sys
 
-# No cycle since session 11 (2026-11-25; session 10 allowed 14): the solver became its own folder
-# (src/solver; gem -> global -> gem is gone), the loading program moved above it (src/run), and the
-# writers and readers went where they belong (the host's and the measures' outputs to io/, the CSV
-# and the BEM scene readers to scene/). The layers, each including only folders before it: core,
-# contact, hybrid, bem, scene, gem, solver, measure, io, run, pack, cli (docs/developers.md). A new
-# cycle means a file is in the wrong folder.
+# The layers, each including only folders before it: core, contact, hybrid, bem, scene, gem,
+# solver, measure, io, run, pack, cli (docs/developers.md). A new cycle means a file is in the
+# wrong folder.
 
 INCLUDE = re.compile(r'^\s*#\s*include\s*"([^"/]+)/')
 
