@@ -12,17 +12,31 @@
 # disc's force and moment from the positions and the stored tangential forces (LAMMPS's, from
 # `compute pair/local p1 p2` with the velocities zeroed: no damping forces). With `path` in RUNS,
 # also the users' main workload: a 1 % oedometric loading path by both codes from one equilibrium,
-# LAMMPS at several loading rates, the stress paths compared (path_rows below). Prints the machine
-# and one Markdown row per run; a run that fails is a row: the exit status is non-zero only for a
-# usage error or a set-up failure (LAMMPS not installable, the contact-law check failing).
+# LAMMPS at several loading rates, the stress paths compared (path_rows below). With `shear` in
+# RUNS, a path where the grains rearrange: the constant-volume biaxial shear to 5 % by both codes,
+# each from its own relaxation, gembem in several load-step counts, LAMMPS at several rates and a
+# repeat with other start velocities, compared as statistics (shear_rows below,
+# tools/shear_stats.py). Prints the machine and one Markdown row per run; a run that fails is a
+# row: the exit status is non-zero only for a usage error or a set-up failure (LAMMPS not
+# installable, the contact-law check failing).
 #
 #   [LAMMPS_DT=0.2] [LAMMPS_ZETA=0.5] [LAMMPS_TDAMP=1] [LAMMPS_VISCOUS=0.01]
 #   [LAMMPS_MAX_STEPS=20000000] [MAX_ITERATIONS=1000] [REF_MAX_ITERATIONS=1000000]
-#   [REF_MAX_N=10000] [RUNS="lammps line_search damped reference path"] [SWEEP=1]
+#   [REF_MAX_N=10000] [RUNS="lammps line_search damped reference path shear"] [SWEEP=1]
 #   [LAMMPS_PATH_STEPS="3120 6240 12480 24960 49920"] (path: the loading's time steps, multiples of 20)
 #   [PATH_STRESS=1e5] (path: the start's isotropic stress, dyn/cm; 0: the relaxed packing)
 #   [PATH_START=DIR] (path: start from this state directory instead, e.g. a `gembem pack` packing
 #   pressed to a stress; N must be its grains' count)
+#   [SHEAR_STEPS="25 50 100"] (shear: gembem's load-step counts) [SHEAR_STRAIN=0.05] (e1 at the end)
+#   [LAMMPS_SHEAR_STEPS="100000 200000 400000"] (shear: LAMMPS's time steps for the whole strain,
+#   multiples of 20) [LAMMPS_SHEAR_REPEAT="100000:2"] (the repeats, STEPS:SEED; the rates use seed 1)
+#   [LAMMPS_SHEAR_V0=0.01] (the start velocities' standard deviation over the top wall's speed)
+#   [SHEAR_SOLVER="method: global, linear: umfpack, newton: line_search, max_iterations: 500"]
+#   [SHEAR_SOLVER_EXTRA=""] (more keys of gembem's solver map, e.g. "history: true"; a key of
+#   SHEAR_SOLVER repeated is refused by gembem: change SHEAR_SOLVER instead; threads and accuracy
+#   are always THREADS and a) [SHEAR_START=own|pressed] (own: each code's relaxation; pressed:
+#   both from the path's start) [SHEAR_REUSE=1] (keep the starts and LAMMPS's shear runs of an
+#   earlier invocation whose inputs are the same: another gembem solver on the same path)
 #   [RANKS=1] (LAMMPS on RANKS MPI processes: mpirun, Debian's openmpi-bin) [THREADS=1] (gembem's
 #   solver.threads) [KN_SCALE=1] (kn, kt and the static criterion times KN_SCALE: the same
 #   packing with stiffer springs, issue 15's cost in kn)
@@ -72,7 +86,7 @@
 set -uo pipefail
 source "$(dirname "$0")/lib.sh"
 bench_args "$@"
-usage() { echo "usage: [LAMMPS_DT=..] [LAMMPS_ZETA=..] [LAMMPS_TDAMP=0|1] [LAMMPS_VISCOUS=..] [RUNS=\"lammps line_search damped reference\"] [SWEEP=1] tools/bench_peer.sh [BUILD_DIR] [N ...]" >&2; exit 2; }
+usage() { echo "usage: [LAMMPS_DT=..] [LAMMPS_ZETA=..] [LAMMPS_TDAMP=0|1] [LAMMPS_VISCOUS=..] [RUNS=\"lammps line_search damped reference path shear\"] [SWEEP=1] tools/bench_peer.sh [BUILD_DIR] [N ...] (more in the header)" >&2; exit 2; }
 for n in $sizes; do
   [[ $n =~ ^[1-9][0-9]*$ ]] || { echo "bench_peer.sh: N must be a positive integer, got '$n'" >&2; usage; }
 done
@@ -92,7 +106,12 @@ SHEAR_SOLVER_DEFAULT="method: global, linear: umfpack, newton: line_search, max_
 SHEAR_SOLVER=${SHEAR_SOLVER:-$SHEAR_SOLVER_DEFAULT} SHEAR_SOLVER_EXTRA=${SHEAR_SOLVER_EXTRA:-}
 LAMMPS_SHEAR_STEPS=${LAMMPS_SHEAR_STEPS:-100000 200000 400000} LAMMPS_SHEAR_V0=${LAMMPS_SHEAR_V0:-0.01}
 LAMMPS_SHEAR_REPEAT=${LAMMPS_SHEAR_REPEAT:-${LAMMPS_SHEAR_STEPS%% *}:2} SHEAR_REUSE=${SHEAR_REUSE:-0}
-case $SHEAR_START in own|pressed) ;; *) echo "bench_peer.sh: SHEAR_START must be own or pressed" >&2; exit 2;; esac
+case $SHEAR_START in own|pressed) ;; *) echo "bench_peer.sh: SHEAR_START must be own or pressed" >&2; usage;; esac
+for S in $SHEAR_STEPS $LAMMPS_SHEAR_STEPS ${LAMMPS_SHEAR_REPEAT//:/ }; do
+  [[ $S =~ ^[1-9][0-9]*$ ]] || { echo "bench_peer.sh: SHEAR_STEPS, LAMMPS_SHEAR_STEPS and LAMMPS_SHEAR_REPEAT (STEPS:SEED) take positive integers, got '$S'" >&2; usage; }
+done
+awk -v e="$SHEAR_STRAIN" 'BEGIN { k = e / 0.0025; exit !(k >= 0.5 && k < 200 && (k - int(k + 0.5)) ^ 2 < 1e-12) }' ||
+  { echo "bench_peer.sh: SHEAR_STRAIN must be a multiple of 0.0025 (the curves' points) below 0.5, got '$SHEAR_STRAIN'" >&2; usage; }
 export KN_SCALE=${KN_SCALE:-1} # read by tools/solver_packing.sh
 sfx=""; [ "$KN_SCALE" = 1 ] || sfx=_kn$KN_SCALE # the runs' directories
 read -r kn kt acc < <(awk -v s="$KN_SCALE" 'BEGIN { printf "%.6g %.6g %.6g\n", 1.0e8 * s, 7.0e7 * s, 100 * s }')
@@ -312,7 +331,7 @@ shear_rows() {
   mkdir -p "$v"
   reuse() { [ "$SHEAR_REUSE" = 1 ]; }
   echo
-  echo "Constant-volume biaxial shear to e1 = $SHEAR_STRAIN (e2 = -e1), the starts: $([ "$SHEAR_START" = own ] && echo "each code's own relaxation of the packing" || echo "the path's start $(basename "$v")")"
+  echo "Constant-volume biaxial shear to e1 = $SHEAR_STRAIN (e2 = -e1), the starts: $([ "$SHEAR_START" = own ] && echo "each code's own relaxation of the packing" || echo "the oedometric path's start, in $d/path$sfx$psfx")"
   echo "| N | shear start: code | status | iterations or steps | wall s | peak MB | final largest force, checker [dyn] | contacts | s1, s2 [dyn/cm] |"
   echo "|---|---|---|---|---|---|---|---|---|"
   # gembem's start
