@@ -16,7 +16,8 @@ For every run: q = (s1 - s2) / 2 and p = (s1 + s2) / 2, divided by the run's own
 points: gembem's load steps need not fall on the grid); the path means are the means over those
 points (0.25 %, 0.5 %, ... 5 %: the start left out). A run that stopped short has no path mean.
 Printed as Markdown: a row per run (gembem's work a load step from steps.csv: Newton iterations,
-smoother steps, factorisations, mean / median / max over the load steps), then LAMMPS's own spread
+smoother steps, factorisations, mean / median / max over the load steps, and how many were cut
+back into sub-steps), then LAMMPS's own spread
 between rates and between repeats, and gembem's path means against LAMMPS's slowest run.
 --curves writes every run's q/p0 and p/p0 on the grid (a column each) for plotting.
 """
@@ -51,6 +52,7 @@ def read_curve(run):
                 rows = list(csv.DictReader(f))
             run["work"] = {k: [float(r[k]) for r in rows if int(r["step"]) > 0]
                            for k in ("iterations", "sweeps", "factorisations")}
+            run["cut"] = sum(1 for r in rows if int(r["step"]) > 0 and int(r.get("substeps") or 1) > 1)
             rows = [(r["e1"], r["s1"], r["s2"]) for r in rows]
         else:
             with open(run["curve"]) as f:  # columns step, e1, e2, s1, s2
@@ -130,6 +132,8 @@ def main():
         if r["code"] == "gembem" and "work" in r:
             work = (f"Newton {counts(r['work'], 'iterations')}; smoother steps {counts(r['work'], 'sweeps')}; "
                     f"factorisations {counts(r['work'], 'factorisations')}")
+            if r["cut"]:
+                work += f"; {r['cut']} load step{'s' if r['cut'] > 1 else ''} cut back"
         elif r["code"] == "gembem":
             work = "-"
         else:
