@@ -29,7 +29,8 @@
 #   pressed to a stress; N must be its grains' count)
 #   [SHEAR_STEPS="25 50 100"] (shear: gembem's load-step counts) [SHEAR_STRAIN=0.05] (e1 at the end)
 #   [LAMMPS_SHEAR_STEPS="100000 200000 400000"] (shear: LAMMPS's time steps for the whole strain,
-#   multiples of 20) [LAMMPS_SHEAR_REPEAT="100000:2"] (the repeats, STEPS:SEED; the rates use seed 1)
+#   multiples of 20) [LAMMPS_SHEAR_REPEAT="100000:2"] (the repeats, STEPS:SEED, empty for none;
+#   the rates use seed 1)
 #   [LAMMPS_SHEAR_V0=0.01] (the start velocities' standard deviation over the top wall's speed)
 #   [SHEAR_SOLVER="method: global, linear: umfpack, newton: line_search, max_iterations: 500"]
 #   [SHEAR_SOLVER_EXTRA=""] (more keys of gembem's solver map, e.g. "history: true"; a key of
@@ -105,7 +106,7 @@ SHEAR_START=${SHEAR_START:-own} SHEAR_STRAIN=${SHEAR_STRAIN:-0.05} SHEAR_STEPS=$
 SHEAR_SOLVER_DEFAULT="method: global, linear: umfpack, newton: line_search, max_iterations: 500"
 SHEAR_SOLVER=${SHEAR_SOLVER:-$SHEAR_SOLVER_DEFAULT} SHEAR_SOLVER_EXTRA=${SHEAR_SOLVER_EXTRA:-}
 LAMMPS_SHEAR_STEPS=${LAMMPS_SHEAR_STEPS:-100000 200000 400000} LAMMPS_SHEAR_V0=${LAMMPS_SHEAR_V0:-0.01}
-LAMMPS_SHEAR_REPEAT=${LAMMPS_SHEAR_REPEAT:-${LAMMPS_SHEAR_STEPS%% *}:2} SHEAR_REUSE=${SHEAR_REUSE:-0}
+LAMMPS_SHEAR_REPEAT=${LAMMPS_SHEAR_REPEAT-${LAMMPS_SHEAR_STEPS%% *}:2} SHEAR_REUSE=${SHEAR_REUSE:-0}
 case $SHEAR_START in own|pressed) ;; *) echo "bench_peer.sh: SHEAR_START must be own or pressed" >&2; usage;; esac
 for S in $SHEAR_STEPS $LAMMPS_SHEAR_STEPS ${LAMMPS_SHEAR_REPEAT//:/ }; do
   [[ $S =~ ^[1-9][0-9]*$ ]] || { echo "bench_peer.sh: SHEAR_STEPS, LAMMPS_SHEAR_STEPS and LAMMPS_SHEAR_REPEAT (STEPS:SEED) take positive integers, got '$S'" >&2; usage; }
