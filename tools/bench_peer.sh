@@ -344,7 +344,7 @@ shear_rows() {
     elif env SOLVER=global LINEAR=umfpack NEWTON=line_search PACKING="$d/packing.csv" \
         "$root/tools/solver_packing.sh" "$build" "$v" "$n" 1 > /dev/null 2>&1 &&
         timed "$v/start" "$v" "$build/gembem" run relax_friction.yaml -o start --overwrite --quiet; then
-      gstatus="converged"; read -r gsecs gmb < <(secs_mb "$v/start")
+      gstatus="converged"
     else
       echo "| $n | gembem's relaxation failed: see $v/start.log | | | | | | | |"; return
     fi
@@ -357,6 +357,7 @@ shear_rows() {
     else echo "| $n | $start_error | | | | | | | |"; return
     fi
   fi
+  [ -s "$gstart.time" ] && read -r gsecs gmb < <(secs_mb "$gstart") # the last step's run (pressed: the pressing)
   [ -s "$gstart/steps.csv" ] && gits=$(awk -F, 'NR == 1 { for (k = 1; k <= NF; k++) c[$k] = k; next } $c["step"] > 0 { s += $c["iterations"] } END { print s + 0 }' "$gstart/steps.csv")
   check "$gstart"
   local gstress=$stress
