@@ -22,17 +22,20 @@ between rates and between repeats, and gembem's path means against LAMMPS's slow
 --curves writes every run's q/p0 and p/p0 on the grid (a column each) for plotting.
 """
 import argparse
-import csv
+import os
 import sys
 
 import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
+import gembem  # noqa: E402
 
 COLUMNS = ("n", "code", "label", "status", "steps", "seed", "curve", "cpu", "wall", "mb", "force")
 
 
 def read_runs(path):
     with open(path) as f:
-        rows = list(csv.reader(f, delimiter="\t"))
+        rows = [line.rstrip("\n").split("\t") for line in f]
     if not rows or tuple(rows[0]) != COLUMNS:
         sys.exit(f"shear_stats: {path}: expected the header {' '.join(COLUMNS)}")
     runs = []
@@ -48,16 +51,15 @@ def read_curve(run):
     gembem's steps.csv also gives the load steps' work counts."""
     try:
         if run["code"] == "gembem":
-            with open(run["curve"]) as f:
-                rows = list(csv.DictReader(f))
-            run["work"] = {k: [float(r[k]) for r in rows if int(r["step"]) > 0]
-                           for k in ("iterations", "sweeps", "factorisations")}
-            run["cut"] = sum(1 for r in rows if int(r["step"]) > 0 and int(r.get("substeps") or 1) > 1)
-            rows = [(r["e1"], r["s1"], r["s2"]) for r in rows]
+            g = gembem.read_csv(run["curve"])
+            load = g["step"] > 0
+            run["work"] = {k: g[k][load].astype(float) for k in ("iterations", "sweeps", "factorisations")}
+            run["cut"] = int(np.sum(g["substeps"][load] > 1)) if "substeps" in g else 0
+            rows = list(zip(g["e1"], g["s1"], g["s2"]))
         else:
             with open(run["curve"]) as f:  # columns step, e1, e2, s1, s2
                 rows = [(v[1], v[3], v[4]) for v in (line.split() for line in f if line[:1].isdigit())]
-    except (OSError, KeyError, ValueError):
+    except (OSError, KeyError, ValueError, IndexError):
         return None
     if not rows:
         return None
@@ -84,7 +86,7 @@ def pct(a, b):
 
 
 def counts(work, key):
-    v = np.array(work[key])
+    v = work[key]
     if v.size == 0:
         return "-"
     return f"{v.mean():.1f} / {np.median(v):g} / {v.max():g}"
