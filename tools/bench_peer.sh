@@ -12,17 +12,32 @@
 # disc's force and moment from the positions and the stored tangential forces (LAMMPS's, from
 # `compute pair/local p1 p2` with the velocities zeroed: no damping forces). With `path` in RUNS,
 # also the users' main workload: a 1 % oedometric loading path by both codes from one equilibrium,
-# LAMMPS at several loading rates, the stress paths compared (path_rows below). Prints the machine
-# and one Markdown row per run; a run that fails is a row: the exit status is non-zero only for a
-# usage error or a set-up failure (LAMMPS not installable, the contact-law check failing).
+# LAMMPS at several loading rates, the stress paths compared (path_rows below). With `shear` in
+# RUNS, a path where the grains rearrange: the constant-volume biaxial shear to 5 % by both codes,
+# each from its own relaxation, gembem in several load-step counts, LAMMPS at several rates and a
+# repeat with other start velocities, compared as statistics (shear_rows below,
+# tools/shear_stats.py). Prints the machine and one Markdown row per run; a run that fails is a
+# row: the exit status is non-zero only for a usage error or a set-up failure (LAMMPS not
+# installable, the contact-law check failing).
 #
 #   [LAMMPS_DT=0.2] [LAMMPS_ZETA=0.5] [LAMMPS_TDAMP=1] [LAMMPS_VISCOUS=0.01]
 #   [LAMMPS_MAX_STEPS=20000000] [MAX_ITERATIONS=1000] [REF_MAX_ITERATIONS=1000000]
-#   [REF_MAX_N=10000] [RUNS="lammps line_search damped reference path"] [SWEEP=1]
+#   [REF_MAX_N=10000] [RUNS="lammps line_search damped reference path shear"] [SWEEP=1]
 #   [LAMMPS_PATH_STEPS="3120 6240 12480 24960 49920"] (path: the loading's time steps, multiples of 20)
 #   [PATH_STRESS=1e5] (path: the start's isotropic stress, dyn/cm; 0: the relaxed packing)
 #   [PATH_START=DIR] (path: start from this state directory instead, e.g. a `gembem pack` packing
 #   pressed to a stress; N must be its grains' count)
+#   [SHEAR_STEPS="25 50 100"] (shear: gembem's load-step counts) [SHEAR_STRAIN=0.05] (e1 at the end)
+#   [LAMMPS_SHEAR_STEPS="100000 200000 400000"] (shear: LAMMPS's time steps for the whole strain,
+#   multiples of 20) [LAMMPS_SHEAR_REPEAT="100000:2"] (the repeats, STEPS:SEED, empty for none;
+#   the rates use seed 1)
+#   [LAMMPS_SHEAR_V0=0.01] (the start velocities' standard deviation over the top wall's speed)
+#   [SHEAR_SOLVER="method: global, linear: umfpack, newton: line_search, max_iterations: 500"]
+#   [SHEAR_SOLVER_EXTRA=""] (more keys of gembem's solver map, e.g. "history: true"; a key of
+#   SHEAR_SOLVER repeated is refused by gembem: change SHEAR_SOLVER instead; threads and accuracy
+#   are always THREADS and a) [SHEAR_START=own|pressed] (own: each code's relaxation; pressed:
+#   both from the path's start) [SHEAR_REUSE=1] (keep the starts and LAMMPS's shear runs of an
+#   earlier invocation whose inputs are the same: another gembem solver on the same path)
 #   [RANKS=1] (LAMMPS on RANKS MPI processes: mpirun, Debian's openmpi-bin) [THREADS=1] (gembem's
 #   solver.threads) [KN_SCALE=1] (kn, kt and the static criterion times KN_SCALE: the same
 #   packing with stiffer springs, issue 15's cost in kn)
@@ -72,7 +87,7 @@
 set -uo pipefail
 source "$(dirname "$0")/lib.sh"
 bench_args "$@"
-usage() { echo "usage: [LAMMPS_DT=..] [LAMMPS_ZETA=..] [LAMMPS_TDAMP=0|1] [LAMMPS_VISCOUS=..] [RUNS=\"lammps line_search damped reference\"] [SWEEP=1] tools/bench_peer.sh [BUILD_DIR] [N ...]" >&2; exit 2; }
+usage() { echo "usage: [LAMMPS_DT=..] [LAMMPS_ZETA=..] [LAMMPS_TDAMP=0|1] [LAMMPS_VISCOUS=..] [RUNS=\"lammps line_search damped reference path shear\"] [SWEEP=1] tools/bench_peer.sh [BUILD_DIR] [N ...] (more in the header)" >&2; exit 2; }
 for n in $sizes; do
   [[ $n =~ ^[1-9][0-9]*$ ]] || { echo "bench_peer.sh: N must be a positive integer, got '$n'" >&2; usage; }
 done
@@ -87,6 +102,17 @@ psfx=""; [ "$PATH_STRESS" = 0 ] || psfx=_p$PATH_STRESS # the path runs' director
 PATH_START=${PATH_START:-} # path: a state directory to start from instead (its grains' count is N)
 [ -z "$PATH_START" ] || { PATH_START=$(cd "$PATH_START" && pwd); psfx=_start_$(basename "$(dirname "$PATH_START")"); }
 RANKS=${RANKS:-1}
+SHEAR_START=${SHEAR_START:-own} SHEAR_STRAIN=${SHEAR_STRAIN:-0.05} SHEAR_STEPS=${SHEAR_STEPS:-25 50 100}
+SHEAR_SOLVER_DEFAULT="method: global, linear: umfpack, newton: line_search, max_iterations: 500"
+SHEAR_SOLVER=${SHEAR_SOLVER:-$SHEAR_SOLVER_DEFAULT} SHEAR_SOLVER_EXTRA=${SHEAR_SOLVER_EXTRA:-}
+LAMMPS_SHEAR_STEPS=${LAMMPS_SHEAR_STEPS:-100000 200000 400000} LAMMPS_SHEAR_V0=${LAMMPS_SHEAR_V0:-0.01}
+LAMMPS_SHEAR_REPEAT=${LAMMPS_SHEAR_REPEAT-${LAMMPS_SHEAR_STEPS%% *}:2} SHEAR_REUSE=${SHEAR_REUSE:-0}
+case $SHEAR_START in own|pressed) ;; *) echo "bench_peer.sh: SHEAR_START must be own or pressed" >&2; usage;; esac
+for S in $SHEAR_STEPS $LAMMPS_SHEAR_STEPS ${LAMMPS_SHEAR_REPEAT//:/ }; do
+  [[ $S =~ ^[1-9][0-9]*$ ]] || { echo "bench_peer.sh: SHEAR_STEPS, LAMMPS_SHEAR_STEPS and LAMMPS_SHEAR_REPEAT (STEPS:SEED) take positive integers, got '$S'" >&2; usage; }
+done
+awk -v e="$SHEAR_STRAIN" 'BEGIN { k = e / 0.0025; exit !(k >= 0.5 && k < 200 && (k - int(k + 0.5)) ^ 2 < 1e-12) }' ||
+  { echo "bench_peer.sh: SHEAR_STRAIN must be a multiple of 0.0025 (the curves' points) below 0.5, got '$SHEAR_STRAIN'" >&2; usage; }
 export KN_SCALE=${KN_SCALE:-1} # read by tools/solver_packing.sh
 sfx=""; [ "$KN_SCALE" = 1 ] || sfx=_kn$KN_SCALE # the runs' directories
 read -r kn kt acc < <(awk -v s="$KN_SCALE" 'BEGIN { printf "%.6g %.6g %.6g\n", 1.0e8 * s, 7.0e7 * s, 100 * s }')
@@ -131,14 +157,16 @@ echo "LAMMPS: dt $LAMMPS_DT sqrt(m_min/kn), zeta_n $LAMMPS_ZETA, tangential damp
 echo "problem: 25 deg between discs, frictionless fixed walls, kn $kn, kt $kt dyn/cm; static criterion: every disc's largest fixing force <= $acc dyn (tools/check_equilibrium.py)"
 echo
 
-# timed OUT_PREFIX DIR CMD...: CMD in DIR under /usr/bin/time; OUT_PREFIX.time gets "s KB",
-# OUT_PREFIX.log stderr; returns CMD's exit status.
+# timed OUT_PREFIX DIR CMD...: CMD in DIR under /usr/bin/time; OUT_PREFIX.time gets "wall-s KB
+# user-s system-s", OUT_PREFIX.log stderr; returns CMD's exit status.
 timed() {
   local out=$1 dir=$2; shift 2
-  (cd "$dir" && "$timer" -f "%e %M" -o "$out.time" "$@" > "$out.out" 2> "$out.log")
+  (cd "$dir" && "$timer" -f "%e %M %U %S" -o "$out.time" "$@" > "$out.out" 2> "$out.log")
 }
 # secs_mb OUT_PREFIX: "seconds megabytes" from the timing file
 secs_mb() { grep -v status "$1.time" | tail -1 | awk '{ printf "%s %.0f", $1, $2 / 1024 }'; }
+# cpu_secs OUT_PREFIX: the process's CPU seconds (user + system) from the timing file
+cpu_secs() { grep -v status "$1.time" | tail -1 | awk '{ printf "%.2f", $3 + $4 }'; }
 # check DIR: the independent checker, at the one static criterion of every row (100 dyn; a LAMMPS
 # state has no steps.csv with a resolved accuracy); sets chk (passed / FAILED ...) and force
 check() {
@@ -193,6 +221,39 @@ lammps_run() {
   [ "$chk" = "check passed" ] && [ "${lmp_status#static}" != "$lmp_status" ] && lmp_ok=1
 }
 
+# path_start N DIR V: the path's start in V (the path's scenes by tools/solver_packing.sh, then
+# gembem's frictionless relaxation of the packing, pressed to PATH_STRESS unless 0; or a copy of
+# PATH_START): sets start (the start's run directory in V: relax_frictionless, pressed or given);
+# on failure sets start_error and returns 1.
+path_start() {
+  local n=$1 d=$2 v=$3
+  start=relax_frictionless
+  [ "$PATH_STRESS" = 0 ] || start=pressed
+  mkdir -p "$v"
+  [ -z "$PATH_START" ] || { rm -rf "$v/given" && cp -r "$PATH_START" "$v/given" && start=given; }
+  if ! env SOLVER=global LINEAR=umfpack NEWTON=line_search PACKING="$d/packing.csv" STATE="$v/$start" \
+      "$root/tools/solver_packing.sh" "$build" "$v" "$n" 1 > /dev/null 2>&1 ||
+     { [ "$start" != given ] &&
+       ! timed "$v/relax_frictionless" "$v" "$build/gembem" run relax_frictionless.yaml -o relax_frictionless --overwrite --quiet; }; then
+    start_error="the start (the path's scenes, gembem's frictionless relaxation) failed: see $v"
+    return 1
+  fi
+  if [ "$start" = pressed ]; then
+    sed -n '1,/^grains:/p' "$v/relax_frictionless.yaml" | grep -v '^grains:\|^#' > "$v/pressed.yaml"
+    cat >> "$v/pressed.yaml" <<YAML
+initial_state: relax_frictionless/state.yaml
+$(grep '^solver:' "$v/relax_frictionless.yaml")
+loading:
+  - isotropic: {stress: $PATH_STRESS, steps: 5}
+output: {measures_every: 0, localisation: false}
+YAML
+    if ! timed "$v/pressed" "$v" "$build/gembem" run pressed.yaml -o pressed --overwrite --quiet; then
+      start_error="the start (gembem's frictionless compression to $PATH_STRESS dyn/cm) failed: see $v/pressed.log"
+      return 1
+    fi
+  fi
+}
+
 # path_rows N DIR: the oedometric path (1 % vertical compression, side walls fixed, 25 deg
 # between discs, frictionless walls) from a frictionless equilibrium of the packing that gembem's
 # line search reaches (no tangential force: a start LAMMPS can take, which reads no tangential
@@ -206,36 +267,13 @@ lammps_run() {
 # difference over the 20 strains of LAMMPS's wall stresses s1, s2 while loading (curve.txt, at
 # 1/20 of S apart) with gembem's at rest (steps.csv), over gembem's s1 and s2 at 1 %.
 path_rows() {
-  local n=$1 d=$2 v=$2/path$sfx$psfx code secs mb its status gsecs="" start=relax_frictionless
+  local n=$1 d=$2 v=$2/path$sfx$psfx code secs mb its status gsecs=""
   echo
   if [ -n "$PATH_START" ]; then echo "Oedometric path from the state $PATH_START"
   else echo "Oedometric path from the frictionless packing $([ "$PATH_STRESS" = 0 ] && echo relaxed || echo "pressed to $PATH_STRESS dyn/cm")"; fi
   echo "| N | oedometric 1 %: code | status | iterations or steps (loading + relaxation) | wall s | peak MB | final largest force, checker [dyn] | this s / gembem s | contacts | s1, s2 at 1 % [dyn/cm] | path: largest difference in s1, s2 over gembem's at 1 % |"
   echo "|---|---|---|---|---|---|---|---|---|---|---|"
-  [ "$PATH_STRESS" = 0 ] || start=pressed
-  mkdir -p "$v"
-  [ -z "$PATH_START" ] || { rm -rf "$v/given" && cp -r "$PATH_START" "$v/given" && start=given; }
-  if ! env SOLVER=global LINEAR=umfpack NEWTON=line_search PACKING="$d/packing.csv" STATE="$v/$start" \
-      "$root/tools/solver_packing.sh" "$build" "$v" "$n" 1 > /dev/null 2>&1 ||
-     { [ "$start" != given ] &&
-       ! timed "$v/relax_frictionless" "$v" "$build/gembem" run relax_frictionless.yaml -o relax_frictionless --overwrite --quiet; }; then
-    echo "| $n | the start (the path's scenes, gembem's frictionless relaxation) failed: see $v | | | | | | | | | |"
-    return
-  fi
-  if [ "$start" = pressed ]; then
-    sed -n '1,/^grains:/p' "$v/relax_frictionless.yaml" | grep -v '^grains:\|^#' > "$v/pressed.yaml"
-    cat >> "$v/pressed.yaml" <<YAML
-initial_state: relax_frictionless/state.yaml
-$(grep '^solver:' "$v/relax_frictionless.yaml")
-loading:
-  - isotropic: {stress: $PATH_STRESS, steps: 5}
-output: {measures_every: 0, localisation: false}
-YAML
-    if ! timed "$v/pressed" "$v" "$build/gembem" run pressed.yaml -o pressed --overwrite --quiet; then
-      echo "| $n | the start (gembem's frictionless compression to $PATH_STRESS dyn/cm) failed: see $v/pressed.log | | | | | | | | | |"
-      return
-    fi
-  fi
+  path_start "$n" "$d" "$v" || { echo "| $n | $start_error | | | | | | | | | |"; return; }
   timed "$v/path" "$v" "$build/gembem" run path.yaml -o path --overwrite --quiet
   code=$?
   read -r secs mb < <(secs_mb "$v/path")
@@ -268,6 +306,140 @@ PY
     local steps=""; [ -z "$lmp_steps" ] || steps="$S + $((lmp_steps - S))"
     echo "| $n | $lmp_label, walls moved in $S steps | $lmp_status | $steps | $lmp_secs | $lmp_mb | $lmp_force | $ratio | $lmp_contacts | $lmp_stress | $diff |"
   done
+}
+
+# shear_rows N DIR: the constant-volume biaxial shear (RUNS=shear; docs/benchmarks.md, "Shear
+# path"): e1 from 0 to SHEAR_STRAIN (5 %) with e2 = -e1, bottom and top walls in, sides out, 25 deg
+# between discs, frictionless walls, the static criterion a. The starts (SHEAR_START=own, the
+# default): each code's own relaxation of the packing (gembem's line search + UMFPACK; LAMMPS's
+# relaxation of the `lammps` row, ending in a restart file that keeps every contact's shear
+# history); SHEAR_START=pressed: both from the path's start (path_start: gembem's frictionless
+# equilibrium pressed to PATH_STRESS, friction on, no tangential force), LAMMPS after its own
+# static check of it. gembem: `strain: {de1: e/n, de2: -e/n}` in n load steps for each n of
+# SHEAR_STEPS, its solver `{SHEAR_SOLVER, threads, accuracy, SHEAR_SOLVER_EXTRA}`, every end state
+# checked. LAMMPS (tools/lammps_peer.py shear): the walls at a constant velocity over S time steps
+# for each S of LAMMPS_SHEAR_STEPS, global drag off, start velocities of seed 1 (LAMMPS_SHEAR_V0 of
+# the top wall's speed), plus each S:SEED of LAMMPS_SHEAR_REPEAT; the walls' spring stresses
+# every 0.25 % of e1. Loading CPU seconds: each loading is its own process (gembem from the
+# start's state.yaml, LAMMPS from the restart), timed by /usr/bin/time (user + system).
+# tools/shear_stats.py prints the rows and the statistics. SHEAR_REUSE=1 keeps the starts and
+# the LAMMPS runs of an earlier invocation whose inputs are the same (gembem's shear runs always
+# run): a new solver variant on exactly the same path, against the same LAMMPS runs.
+shear_rows() {
+  local n=$1 d=$2 v gstart status code secs mb cpu S seed steps reused ldir label
+  v=$d/shear$sfx
+  [ "$SHEAR_START" = own ] || v=$d/shear$sfx"_pressed"$psfx
+  mkdir -p "$v"
+  reuse() { [ "$SHEAR_REUSE" = 1 ]; }
+  echo
+  echo "Constant-volume biaxial shear to e1 = $SHEAR_STRAIN (e2 = -e1), the starts: $([ "$SHEAR_START" = own ] && echo "each code's own relaxation of the packing" || echo "the oedometric path's start, in $d/path$sfx$psfx")"
+  echo "| N | shear start: code | status | iterations or steps | wall s | peak MB | final largest force, checker [dyn] | contacts | s1, s2 [dyn/cm] |"
+  echo "|---|---|---|---|---|---|---|---|---|"
+  # gembem's start
+  local gstatus="" gits="" gsecs="" gmb=""
+  if [ "$SHEAR_START" = own ]; then
+    gstart=$v/start
+    if reuse && [ -s "$gstart/state.yaml" ]; then
+      gstatus="reused"
+    elif env SOLVER=global LINEAR=umfpack NEWTON=line_search PACKING="$d/packing.csv" \
+        "$root/tools/solver_packing.sh" "$build" "$v" "$n" 1 > /dev/null 2>&1 &&
+        timed "$v/start" "$v" "$build/gembem" run relax_friction.yaml -o start --overwrite --quiet; then
+      gstatus="converged"
+    else
+      echo "| $n | gembem's relaxation failed: see $v/start.log | | | | | | | |"; return
+    fi
+  else
+    gstart=$d/path$sfx$psfx/pressed
+    [ -n "$PATH_START" ] && gstart=$d/path$sfx$psfx/given
+    [ "$PATH_STRESS" = 0 ] && [ -z "$PATH_START" ] && gstart=$d/path$sfx$psfx/relax_frictionless
+    if reuse && [ -s "$gstart/state.yaml" ]; then gstatus="reused"
+    elif path_start "$n" "$d" "$d/path$sfx$psfx"; then gstatus="converged"
+    else echo "| $n | $start_error | | | | | | | |"; return
+    fi
+  fi
+  [ -s "$gstart.time" ] && read -r gsecs gmb < <(secs_mb "$gstart") # the last step's run (pressed: the pressing)
+  [ -s "$gstart/steps.csv" ] && gits=$(awk -F, 'NR == 1 { for (k = 1; k <= NF; k++) c[$k] = k; next } $c["step"] > 0 { s += $c["iterations"] } END { print s + 0 }' "$gstart/steps.csv")
+  check "$gstart"
+  local gstress=$stress
+  echo "| $n | gembem ($(basename "$gstart")) | $gstatus, $chk | $gits | $gsecs | $gmb | $force | $contacts | $stress |"
+  # LAMMPS's start: its relaxation (or static check) of the packing or of gembem's start, with a restart file
+  local lstart=$v/lammps_start grains=$d/packing.csv box=$d/packing.box.yaml
+  [ "$SHEAR_START" = own ] || { grains=$gstart/state_grains.csv box=$gstart/state.yaml; }
+  if reuse && [ -s "$lstart/start.restart" ] && [ -s "$lstart/state/state.yaml" ]; then
+    check "$lstart/state"
+    echo "| $n | $lmp_label | reused, $chk | | | | $force | $contacts | $stress |"
+  else
+    lammps_run "$n" "$lstart" "$LAMMPS_DT" "$LAMMPS_ZETA" "$LAMMPS_TDAMP" "$LAMMPS_VISCOUS" "$grains" "$box" --restart start.restart
+    echo "| $n | $lmp_label | $lmp_status | $lmp_steps | $lmp_secs | $lmp_mb | $lmp_force | $lmp_contacts | $lmp_stress |"
+    [ "$lmp_ok" = 1 ] && [ -s "$lstart/start.restart" ] || { echo "LAMMPS's start failed: no shear (see $lstart)"; return; }
+    stress=$lmp_stress
+  fi
+  # a start far below the other's stress (an unjammed packing) makes the normalised paths incomparable
+  awk -v a="$gstress" -v b="$stress" 'BEGIN { split(a, g, ", "); split(b, l, ", "); pg = g[1] + g[2]; pl = l[1] + l[2];
+    exit !(pg > 0 && pl > 0 && (pl < 0.01 * pg || pg < 0.01 * pl)) }' &&
+    echo "Warning: the two starts' mean stresses differ by more than 100 times (a packing unjammed by its relaxation): the paths are not comparable; SHEAR_START=pressed starts both codes from one jammed state"
+
+  local man=$v/runs.tsv
+  printf 'n\tcode\tlabel\tstatus\tsteps\tseed\tcurve\tcpu\twall\tmb\tforce\n' > "$man"
+  # gembem: the load steps
+  local solver="$SHEAR_SOLVER, threads: $THREADS, accuracy: $acc${SHEAR_SOLVER_EXTRA:+, $SHEAR_SOLVER_EXTRA}"
+  for steps in $SHEAR_STEPS; do
+    local scene=shear_$steps de
+    de=$(awk -v e="$SHEAR_STRAIN" -v k="$steps" 'BEGIN { printf "%.17g", e / k }')
+    { printf '# Written by tools/bench_peer.sh (RUNS=shear): constant-volume biaxial shear to e1 = %s (e2 = -e1)\n' "$SHEAR_STRAIN"
+      printf '# in %s load steps from %s.\ngembem: 1\nunits: {length: cm, force: dyn}\n' "$steps" "$gstart"
+      table3_materials 25 "$kn" "$kt"
+      printf 'initial_state: %s/state.yaml\nsolver: {%s}\nloading:\n' "$gstart" "$solver"
+      printf '  - strain: {de1: %s, de2: -%s, steps: %s}\n' "$de" "$de" "$steps"
+      printf 'output: {measures_every: 0, localisation: false}   # the solver, not the per-step measures\n'
+    } > "$v/$scene.yaml"
+    timed "$v/$scene" "$v" "$build/gembem" run "$scene.yaml" -o "$scene" --overwrite --quiet
+    code=$?
+    read -r secs mb < <(secs_mb "$v/$scene")
+    cpu=$(cpu_secs "$v/$scene")
+    force=-
+    if [ $code = 0 ]; then check "$v/$scene"; status="converged, $chk"
+    else status="exit $code: $(grep -m1 . "$v/$scene.log" | sed 's/^gembem: //' | tr '|\t' '/ ' | cut -c1-120)"; fi
+    label="gembem $steps load steps"
+    [ "$solver" = "$SHEAR_SOLVER_DEFAULT, threads: 1, accuracy: $acc" ] || label="$label, solver {$solver}"
+    printf '%s\tgembem\t%s\t%s\t%s\t\t%s\t%s\t%s\t%s\t%s\n' "$n" "$label" "$status" "$steps" "$v/$scene/steps.csv" "$cpu" "$secs" "$mb" "$force" >> "$man"
+  done
+  # LAMMPS: the rates with seed 1, then the repeats
+  local points
+  points=$(awk -v e="$SHEAR_STRAIN" 'BEGIN { printf "%d", e / 0.0025 + 0.5 }')
+  for run in $(for S in $LAMMPS_SHEAR_STEPS; do echo "$S:1"; done) $LAMMPS_SHEAR_REPEAT; do
+    S=${run%%:*} seed=${run##*:}
+    ldir=$v/lammps_${S}_seed$seed
+    mkdir -p "$ldir"
+    reused=""
+    if ! $py "$root/tools/lammps_peer.py" shear "$lstart" "$ldir/next" --steps "$S" --strain "$SHEAR_STRAIN" \
+        --points "$points" --seed "$seed" --start-velocity "$LAMMPS_SHEAR_V0" > /dev/null 2> "$ldir/input.log"; then
+      printf '%s\tlammps\t%s\t%s\t%s\t%s\t\t\t\t\t\n' "$n" "$lmp_label, walls moved in $S steps" \
+        "no input: $(tail -1 "$ldir/input.log" | tr '|\t' '/ ' | cut -c1-100)" "$S" "$seed" >> "$man"
+      continue
+    fi
+    if reuse && cmp -s "$ldir/next/in.shear" "$ldir/in.shear" && [ -s "$ldir/lmp.time" ] &&
+       ! grep -q status "$ldir/lmp.time" && [ "$(grep -c '^[0-9]' "$ldir/curve.txt" 2>/dev/null)" = $((points + 1)) ]; then
+      reused="reused, "
+    else
+      rm -f "$ldir"/{curve.txt,log.lammps,lmp.*}
+      mv "$ldir/next/in.shear" "$ldir/next/params.yaml" "$ldir/"
+      timed "$ldir/lmp" "$ldir" "${lmp_cmd[@]}" -nocite -in in.shear -log log.lammps -screen none
+    fi
+    rm -rf "$ldir/next"
+    code=$(grep -q status "$ldir/lmp.time" && echo 1 || echo 0)
+    read -r secs mb < <(secs_mb "$ldir/lmp")
+    cpu=$(cpu_secs "$ldir/lmp")
+    if [ "$code" = 0 ]; then
+      status="${reused}sheared: $(sed -n 's/^sheared: step \([0-9]*\) e1 \(.*\)$/e1 = \2 in \1 steps/p' "$ldir/log.lammps")"
+    else
+      status="failed: $(grep -m1 ERROR "$ldir/log.lammps" 2>/dev/null | tr '|\t' '/ ' | cut -c1-120)"
+    fi
+    printf '%s\tlammps\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t-\n' "$n" "$lmp_label, walls moved in $S steps, seed $seed" \
+      "$status" "$S" "$seed" "$ldir/curve.txt" "$cpu" "$secs" "$mb" >> "$man"
+  done
+  echo
+  $py "$root/tools/shear_stats.py" "$man" --strain "$SHEAR_STRAIN" --curves "$v/curves.csv"
 }
 
 for n in $sizes; do
@@ -342,5 +514,6 @@ for n in $sizes; do
     echo "| $n | $label | $status | $its | $secs | $mb | $force | $ratio | $contacts | $stress |"
   done
   [[ " $RUNS " != *" path "* ]] || path_rows "$n" "$d"
+  [[ " $RUNS " != *" shear "* ]] || shear_rows "$n" "$d"
 done
 exit 0

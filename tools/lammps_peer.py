@@ -5,7 +5,9 @@ tools/check_equilibrium.py checks like any gembem state.
 
     tools/lammps_peer.py input PACKING.csv BOX.yaml OUT_DIR [--dt-factor 0.2] [--zeta-n 0.5]
                          [--tangential-damping 1] [--viscous 0.01] [--accuracy 100]
-                         [--max-steps 10000000] [--path-strain E --path-steps S]
+                         [--max-steps 10000000] [--path-strain E --path-steps S] [--restart FILE]
+    tools/lammps_peer.py shear START_DIR OUT_DIR --steps S [--strain 0.05] [--points 20]
+                         [--seed 1] [--start-velocity 0.01]
     tools/lammps_peer.py state OUT_DIR          (after `lmp -in OUT_DIR/in.relax` ran in OUT_DIR)
     tools/lammps_peer.py lawcheck OUT_DIR       (two-disc check of LAMMPS's contact law; runs lmp)
 
@@ -46,6 +48,20 @@ The model (one to one with gembem's, docs/method.md section 3; cgs units):
     on the discs (their `contacts` arrays) are written at every 1/20 of the loading to
     curve.txt: step, strain, s1 = (|F_bottom| + |F_top|) / (2 width), s2 = (|F_left| + |F_right|)
     / (2 height) [dyn/cm], the stress path that gembem's 20 load steps give at rest.
+  - --restart FILE: the relaxation ends with `write_restart FILE` (in OUT_DIR): positions and
+    every contact's shear history (gran/hooke/history's fix NEIGH_HISTORY is in restart files),
+    the start of a shear run.
+  - The constant-volume biaxial shear (`shear`: START_DIR a relaxation run with --restart
+    start.restart): read_restart, global drag off (no `fix viscous`; the contact damping stays),
+    then the four walls move at a constant velocity for S time steps (--steps): the bottom and
+    top in by e1/2 of the start height each, the sides out by e1/2 of the start width each
+    (e2 = -e1, as gembem's `strain: {de1: e1/n, de2: -e1/n}` over n steps), to e1 = --strain.
+    The discs start with a random velocity, each component normal with a standard deviation
+    --start-velocity times the top wall's speed (seeded by --seed: a repeat with another seed is
+    another trajectory of the same chaotic path). The walls' stresses are read statically: kn
+    times the overlaps of the discs with each wall (the springs alone, without the contact
+    damping), per current length of wall, at every S / --points steps (curve.txt: step, e1, e2,
+    s1, s2, compression positive; step 0 is the start at rest).
 What differs from gembem's law, invisible at rest: LAMMPS keeps the shear displacement as a
 vector and, when the contact normal turns by dtheta in a step, projects it on the new tangent (its
 length falls by 1 - cos dtheta; gembem's pt is a scalar turning with the contact); its Coulomb cap
@@ -166,6 +182,7 @@ dump_modify     contacts format float %.17g
 unfix           halt
 run             0
 print           "final: step $(step) largest force $(c_fmax:%.6g) dyn"
+{f"write_restart   {a.restart}" if a.restart else ""}
 """
     with open(os.path.join(a.out, "in.relax"), "w") as f:
         f.write(inp)
@@ -175,7 +192,8 @@ print           "final: step $(step) largest force $(c_fmax:%.6g) dyn"
                         "dt_factor": a.dt_factor, "zeta_n": a.zeta_n, "gamman": gamman,
                         "tangential_damping": a.tangential_damping, "viscous": a.viscous,
                         "density": RHO, "max_steps": a.max_steps, "path_strain": a.path_strain,
-                        "path_steps": a.path_steps, "path_wall_move": dy_max}, f, sort_keys=False)
+                        "path_steps": a.path_steps, "path_wall_move": dy_max, "restart": a.restart,
+                        "rmin": rmin, "rmax": radii[-1]}, f, sort_keys=False)
 
 
 def walls(a, box, kn, gamman, dy_max):
@@ -215,6 +233,85 @@ run             {a.path_steps}
 unfix           curve
 print           "loaded: step $(step) largest force $(c_fmax:%.6g) dyn"
 """
+
+
+def write_shear(a):
+    """OUT_DIR/in.shear: the constant-volume biaxial shear from START_DIR's restart (module doc)."""
+    p = yaml.safe_load(open(os.path.join(a.start, "params.yaml")))
+    if not p.get("restart") or float(p.get("path_wall_move", 0)) != 0:
+        sys.exit(f"lammps_peer: {a.start} is not a relaxation written with --restart")
+    restart = os.path.abspath(os.path.join(a.start, p["restart"]))
+    box = {k: float(p["box"][k]) for k in ("left", "right", "bottom", "top")}
+    width, height = box["right"] - box["left"], box["top"] - box["bottom"]
+    kn, dt, rmin, rmax = float(p["kn"]), float(p["dt"]), float(p["rmin"]), float(p["rmax"])
+    dy_max, dx_max = 0.5 * a.strain * height, 0.5 * a.strain * width  # each wall's move
+    v0 = a.start_velocity * dy_max / (a.steps * dt)
+    law = f"hooke {kn:.17g} 0 {float(p['gamman']):.17g} 0 0 0"
+    # a wall's spring force on each disc: kn times its overlap (the wall at coordinate c, the
+    # disc's distance to it d: max(r - d, 0)); the contact damping is left out
+    ov = lambda d: f"(c_radius-({d}))*(c_radius>({d}))"
+    os.makedirs(a.out, exist_ok=True)
+    inp = f"""# Written by tools/lammps_peer.py shear for tools/bench_peer.sh: the constant-volume biaxial
+# shear to e1 = {a.strain:g} (e2 = -e1) in {a.steps} time steps from the relaxation {a.start}.
+units           cgs
+read_restart    {restart}
+comm_modify     vel yes
+neighbor        {0.1 * rmin:.6g} bin
+neigh_modify    delay 0 every 1 check yes
+# a run of no step first: the contacts' shear history comes back from the restart file with it
+# (change_box refuses a box with per-atom restart data not yet taken up)
+run             0
+# room for the side walls' move out (the box's boundaries are fixed: a disc beyond them is lost)
+change_box      all x final {box['left'] - 2 * rmax - dx_max:.17g} {box['right'] + 2 * rmax + dx_max:.17g} units box
+reset_timestep  0
+# the walls' moves: bottom and top in by dy, the sides out by dx, linear in time (constant velocity)
+variable        dy equal {dy_max:.17g}*step/{a.steps}
+variable        dx equal {dx_max:.17g}*step/{a.steps}
+variable        mdy equal -v_dy
+variable        mdx equal -v_dx
+region          bottom plane 0 {box['bottom']:.17g} 0 0 1 0 side in move NULL v_dy NULL units box
+region          top plane 0 {box['top']:.17g} 0 0 -1 0 side in move NULL v_mdy NULL units box
+region          left plane {box['left']:.17g} 0 0 1 0 0 side in move v_mdx NULL NULL units box
+region          right plane {box['right']:.17g} 0 0 -1 0 0 side in move v_dx NULL NULL units box
+fix             wall_bottom all wall/gran/region {law} region bottom
+fix             wall_top all wall/gran/region {law} region top
+fix             wall_left all wall/gran/region {law} region left
+fix             wall_right all wall/gran/region {law} region right
+fix             move all nve/sphere disc
+fix             plane all enforce2d
+# no fix viscous: global damping off while loading
+timestep        {dt:.17g}
+# the start velocities: normal, standard deviation {a.start_velocity:g} of the top wall's speed, seed {a.seed}
+variable        vx0 atom normal(0,{v0:.17g},{a.seed})
+variable        vy0 atom normal(0,{v0:.17g},{a.seed + 104729})
+velocity        all set v_vx0 v_vy0 NULL units box
+# the walls' stresses from their springs alone (kn times the overlaps), per current length of wall
+compute         radius all property/atom radius
+variable        ob atom {ov(f"y-({box['bottom']:.17g}+v_dy)")}
+variable        ot atom {ov(f"({box['top']:.17g}-v_dy)-y")}
+variable        ol atom {ov(f"x-({box['left']:.17g}-v_dx)")}
+variable        or atom {ov(f"({box['right']:.17g}+v_dx)-x")}
+compute         ob all reduce sum v_ob
+compute         ot all reduce sum v_ot
+compute         ol all reduce sum v_ol
+compute         or all reduce sum v_or
+variable        e1 equal 2*v_dy/{height:.17g}
+variable        e2 equal -2*v_dx/{width:.17g}
+variable        s1 equal {kn:.17g}*(c_ob+c_ot)/(2*({width:.17g}+2*v_dx))
+variable        s2 equal {kn:.17g}*(c_ol+c_or)/(2*({height:.17g}-2*v_dy))
+fix             curve all print {a.steps // a.points} "$(step) $(v_e1:%.10g) $(v_e2:%.10g) $(v_s1:%.10g) $(v_s2:%.10g)" file curve.txt screen no title "step e1 e2 s1 s2"
+thermo_style    custom step ke
+thermo          {max(a.steps // 10, 1)}
+thermo_modify   norm no flush yes
+run             {a.steps}
+print           "sheared: step $(step) e1 $(v_e1:%.10g)"
+"""
+    with open(os.path.join(a.out, "in.shear"), "w") as f:
+        f.write(inp)
+    with open(os.path.join(a.out, "params.yaml"), "w") as f:
+        yaml.safe_dump({"start": os.path.abspath(a.start), "strain": a.strain, "steps": a.steps,
+                        "points": a.points, "seed": a.seed, "start_velocity": a.start_velocity,
+                        "start_velocity_std": v0, "dt": dt, "kn": kn}, f, sort_keys=False)
 
 
 def read_dump(path):
@@ -388,6 +485,16 @@ def main():
                    help="a loading path: the walls' total vertical strain (0: a relaxation)")
     p.add_argument("--path-steps", type=int, default=50000,
                    help="the time steps over which the walls move (the loading rate)")
+    p.add_argument("--restart", default="", help="write_restart this file (in OUT_DIR) at the end")
+    p = sub.add_parser("shear")
+    p.add_argument("start", help="a relaxation's OUT_DIR, written with --restart")
+    p.add_argument("out")
+    p.add_argument("--steps", type=int, required=True, help="the time steps of the whole shear")
+    p.add_argument("--strain", type=float, default=0.05, help="e1 at the end (e2 = -e1)")
+    p.add_argument("--points", type=int, default=20, help="curve.txt's points past the start")
+    p.add_argument("--seed", type=int, default=1, help="the start velocities' seed")
+    p.add_argument("--start-velocity", type=float, default=0.01,
+                   help="the start velocities' standard deviation over the top wall's speed")
     p = sub.add_parser("state")
     p.add_argument("out")
     p = sub.add_parser("lawcheck")
@@ -397,6 +504,12 @@ def main():
         if a.path_strain and (a.path_steps < 20 or a.path_steps % 20):
             sys.exit("lammps_peer: --path-steps must be a positive multiple of 20 (the curve's points)")
         write_input(a)
+    elif a.cmd == "shear":
+        if a.points < 1 or a.steps < a.points or a.steps % a.points:
+            sys.exit("lammps_peer: --steps must be a positive multiple of --points")
+        if not 0 < a.strain < 0.5 or a.seed < 1 or a.start_velocity < 0:
+            sys.exit("lammps_peer: --strain must be in (0, 0.5), --seed >= 1, --start-velocity >= 0")
+        write_shear(a)
     elif a.cmd == "state":
         write_state(a)
     else:
