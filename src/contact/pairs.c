@@ -1,6 +1,7 @@
 #include "contact/pairs.h"
 
 #include <math.h>
+#include <stdio.h>
 #ifdef _OPENMP
 #include <omp.h>
 static int gb_pairs_thread(void) { return omp_get_thread_num(); }
@@ -63,12 +64,37 @@ void gb_particles_free(gb_particles *bp)
 static gb_status grow(void **buf, int *cap, int need, size_t size, gb_error *err)
 {
     if (need <= *cap) return GB_OK;
-    int c = *cap ? *cap : 64;
+    long long c = *cap ? *cap : 64; /* doubled past INT_MAX, then cut back to it */
     while (c < need) c *= 2;
+    if (c > INT_MAX) c = INT_MAX;
     void *q = realloc(*buf, (size_t)c * size);
-    if (!q) return gb_fail(err, GB_ENOMEM, "out of memory for %d contact pairs", c);
+    if (!q) return gb_fail(err, GB_ENOMEM, "out of memory for %lld contact pairs", c);
     *buf = q;
-    *cap = c;
+    *cap = (int)c;
+    return GB_OK;
+}
+
+/* m: the pairs counted, 0 if a thread's count passed GB_PAIRS_MAX before all were counted. */
+static gb_status too_many(int n, long long m, gb_error *err)
+{
+    char counted[48] = "";
+    if (m > 0) snprintf(counted, sizeof counted, " (%lld)", m);
+    return gb_fail(err, GB_ENOMEM, "%d grains have more candidate pairs%s than the %d a pair list can count; use "
+                   "fewer grains, or radii less spread (the pairs are searched within the grains' reach)",
+                   n, counted, GB_PAIRS_MAX);
+}
+
+gb_status gb_pairs_offsets(int *count, int n, gb_error *err)
+{
+    long long m = 0;
+    for (int i = 0; i < n; i++) m += count[i];
+    if (m > GB_PAIRS_MAX) return too_many(n, m, err);
+    int at = 0;
+    for (int i = 0; i < n; i++) {
+        int c = count[i];
+        count[i] = at, at += c;
+    }
+    count[n] = at;
     return GB_OK;
 }
 
@@ -95,14 +121,20 @@ static void sort_ints(int *a, int n)
     }
 }
 
-/* Appends one candidate to thread t's buffer at position at; 0, or -1 out of memory. */
-static int push(gb_pair_search *S, int t, int at, int j)
+/* What a candidate search ran out of (bits: threads may run out of both): memory, or the ints that
+ * count the pairs. */
+enum { OUT_OF_MEMORY = 1, TOO_MANY = 2 };
+
+/* Appends one candidate to thread t's buffer at position at; 0, or -OUT_OF_MEMORY, -TOO_MANY. */
+static int push(gb_pair_search *S, int t, long long at, int j)
 {
     if (at >= S->tcand_cap[t]) {
-        int c = S->tcand_cap[t] ? 2 * S->tcand_cap[t] : 1024;
+        if (at >= GB_PAIRS_MAX) return -TOO_MANY;
+        long long c = S->tcand_cap[t] ? 2LL * S->tcand_cap[t] : 1024;
+        if (c > GB_PAIRS_MAX) c = GB_PAIRS_MAX;
         int *q = realloc(S->tcand[t], (size_t)c * sizeof(int));
-        if (!q) return -1;
-        S->tcand[t] = q, S->tcand_cap[t] = c;
+        if (!q) return -OUT_OF_MEMORY;
+        S->tcand[t] = q, S->tcand_cap[t] = (int)c;
     }
     S->tcand[t][at] = j;
     return 0;
@@ -110,13 +142,13 @@ static int push(gb_pair_search *S, int t, int at, int j)
 
 /* Grain i's candidates appended to thread t's buffer at position at: the boundary particles and
  * walls within reach (their indices are negative), then the grains j > i, each part sorted, so
- * that the list is sorted by (i, j). Returns their count, or -1 out of memory. */
-static int candidates(gb_pair_search *S, const gb_grid *G, const gb_world *w, int i, int t, int at)
+ * that the list is sorted by (i, j). Returns their count, or push's negative code. */
+static int candidates(gb_pair_search *S, const gb_grid *G, const gb_world *w, int i, int t, long long at)
 {
     const gb_grain *g = w->g, *a = &g[i];
     const gb_box *box = w->box;
     const gb_particles *bp = w->bp;
-    int np = bp ? bp->n : 0, nc = 0, cx, cy;
+    int np = bp ? bp->n : 0, nc = 0, cx, cy, st;
     cell_of(G, a->x, a->y, &cx, &cy);
     for (int y = cy - 1; np > 0 && y <= cy + 1; y++) {
         if (y < 0 || y >= G->ny) continue;
@@ -125,13 +157,13 @@ static int candidates(gb_pair_search *S, const gb_grid *G, const gb_world *w, in
             for (int e = S->pcell_head[y * G->nx + x]; e >= 0; e = S->pcell_next[e]) {
                 double dx = bp->x[e] - a->x, dy = bp->y[e] - a->y, reach = a->r + bp->r[e] + S->skin;
                 if (dx * dx + dy * dy >= reach * reach) continue;
-                if (push(S, t, at + nc++, GB_PARTICLE_J(e))) return -1;
+                if ((st = push(S, t, at + nc++, GB_PARTICLE_J(e)))) return st;
             }
         }
     }
     for (int wl = GB_N_WALLS - 1; box && wl >= 0; wl--) {
         double gap[GB_N_WALLS] = {a->x - box->left, box->right - a->x, a->y - box->bottom, box->top - a->y};
-        if (gap[wl] < a->r + S->skin && push(S, t, at + nc++, -1 - wl)) return -1;
+        if (gap[wl] < a->r + S->skin && (st = push(S, t, at + nc++, -1 - wl))) return st;
     }
     int first_grain = nc;
     for (int y = cy - 1; y <= cy + 1; y++) {
@@ -144,7 +176,7 @@ static int candidates(gb_pair_search *S, const gb_grid *G, const gb_world *w, in
                 if (e->j <= i) continue;
                 double dx = e->x - a->x, dy = e->y - a->y, reach = a->r + e->r + S->skin;
                 if (dx * dx + dy * dy >= reach * reach) continue;
-                if (push(S, t, at + nc++, e->j)) return -1;
+                if ((st = push(S, t, at + nc++, e->j))) return st;
             }
         }
     }
@@ -285,23 +317,20 @@ gb_status gb_pairs_rebuild(gb_pair_set *P, gb_pair_search *S, const gb_world *w,
         (st = grow((void **)&S->old_start, &S->old_start_cap, n + 1, sizeof(int), err)))
         return st;
     int failed = 0;
-#pragma omp parallel num_threads(T) if (T > 1) reduction(|| : failed)
+#pragma omp parallel num_threads(T) if (T > 1) reduction(| : failed)
     {
         int t = T > 1 ? gb_pairs_thread() : 0, i0 = (int)((long)n * t / T), i1 = (int)((long)n * (t + 1) / T);
-        int at = 0;
+        long long at = 0;
         for (int i = i0; i < i1 && !failed; i++) {
             int nc = candidates(S, &G, w, i, t, at);
-            if (nc < 0) failed = 1;
+            if (nc < 0) failed |= -nc;
             else S->count[i] = nc, at += nc;
         }
     }
+    if (failed & TOO_MANY) return too_many(n, 0, err);
     if (failed) return gb_fail(err, GB_ENOMEM, "out of memory for the candidate pairs");
-    int m = 0;
-    for (int i = 0; i < n; i++) {
-        int c = S->count[i];
-        S->count[i] = m, m += c; /* now each grain's offset */
-    }
-    S->count[n] = m;
+    if ((st = gb_pairs_offsets(S->count, n, err))) return st;
+    int m = S->count[n];
     for (int k = 0, i = 0; i <= n; i++) { /* the old list's first pair of each grain */
         while (k < P->n && P->p[k].i < i) k++;
         S->old_start[i] = k;

@@ -3,6 +3,7 @@
 #ifndef GB_PAIRS_H
 #define GB_PAIRS_H
 
+#include <limits.h>
 #include <math.h>
 #include <string.h>
 
@@ -96,6 +97,15 @@ typedef struct {
     int *old_start, old_start_cap; /* per grain: its first pair in the old list */
     long generations;     /* of the lists built in this process (gb_pair_set.generation) */
 } gb_pair_search;
+
+/* The most candidate pairs a list holds: pairs are indexed and counted in ints. A packing has
+ * about 10 per grain, so only some 2e8 grains reach it. */
+#define GB_PAIRS_MAX INT_MAX
+
+/* Turns the candidate counts of grains 0..n-1 in count[0..n) into offsets: count[i] the index of
+ * grain i's first pair, count[n] the total. A total above GB_PAIRS_MAX is refused (GB_ENOMEM, what
+ * to change in the message) and count left as it was: counted in ints, it would wrap. */
+gb_status gb_pairs_offsets(int *count, int n, gb_error *err);
 
 void gb_pair_set_free(gb_pair_set *P);
 void gb_pair_search_free(gb_pair_search *S);

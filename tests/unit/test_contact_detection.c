@@ -1,6 +1,8 @@
 /* Contact detection: the cell-list pair list equals a brute-force pair loop on random
  * polydisperse packings (size ratio up to 10), including after moves and rebuilds. */
+#include <limits.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "check.h"
 #include "contact/pairs.h"
@@ -65,5 +67,20 @@ int main(void)
         gb_pair_set_free(&L), gb_pair_search_free(&S);
         free(g);
     }
+    /* The counts become offsets; a total past what an int counts is refused, not wrapped. A list
+     * of 2^31 real pairs needs some 2e8 grains and 140 GB, so the counts are made up. */
+    gb_error err;
+    int count[4] = {3, 0, 5, -1};
+    CHECK(gb_pairs_offsets(count, 3, &err) == GB_OK);
+    CHECK(count[0] == 0 && count[1] == 3 && count[2] == 3 && count[3] == 8);
+    int big[4] = {INT_MAX / 2, INT_MAX / 2, 1, -1}; /* INT_MAX in all: the most a list holds */
+    CHECK(gb_pairs_offsets(big, 3, &err) == GB_OK && big[3] == INT_MAX);
+    int over[4] = {INT_MAX / 2, INT_MAX / 2, 2, -1}; /* one more */
+    CHECK(gb_pairs_offsets(over, 3, &err) == GB_ENOMEM);
+    CHECK(over[2] == 2 && over[3] == -1); /* left as they were */
+    CHECK(strstr(err.msg, "3 grains have more candidate pairs (2147483648) than the 2147483647 a pair list can count; "
+                          "use fewer grains") == err.msg);
+    int wrap[4] = {INT_MAX, INT_MAX, INT_MAX, -1}; /* would wrap to a small positive total in an int */
+    CHECK(gb_pairs_offsets(wrap, 3, &err) == GB_ENOMEM && strstr(err.msg, "(6442450941)"));
     TEST_END();
 }
