@@ -214,6 +214,7 @@ class Simulation:
             self._scene = None
             _check(lib, status, err, ["gb_sim_create", self.path])
         self.report = None  # the last step's StepReport
+        self._reports = []
 
     def close(self):
         """Frees the simulation and its scene (then every other call is an error)."""
@@ -251,7 +252,22 @@ class Simulation:
         fields.update(trials=rep.work.trials, factorisations=rep.work.factorisations, sweeps=rep.work.sweeps,
                       cut_by=self._lib.gb_solve_stop_name(rep.cut_by).decode())
         self.report = StepReport(**fields)
+        self._reports.append(self.report)
         return self.report
+
+    @property
+    def steps(self):
+        """The steps taken so far as steps.csv would hold them (gembem.Run's steps): a Table of
+        the columns the reports give, by steps.csv's names (stage 1-based there, 0 for step 0;
+        contacts, e1_minus_e2), so that gembem.figures.stress_strain draws a Simulation."""
+        rows = self._reports
+        cols = {"step": [r.step for r in rows], "stage": [r.stage + 1 for r in rows],
+                "e1_minus_e2": [r.e1 - r.e2 for r in rows], "contacts": [r.n_contacts for r in rows]}
+        for name in ("e1", "e2", "ev", "s1", "s2", "stress_ratio", "iterations", "max_fixing_force", "seconds",
+                     "width", "height", "substeps", "trials", "factorisations", "sweeps", "force_scale", "accuracy",
+                     "coulomb_excess", "mean_normal_force", "coordination", "rattlers"):
+            cols[name] = [getattr(r, name) for r in rows]
+        return Table({k: np.array(v) for k, v in cols.items()})
 
     @property
     def finished(self):

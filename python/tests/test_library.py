@@ -85,6 +85,13 @@ class Library(RunDirTest):
                 self.assertFalse(c["sliding"].any())  # frictionless (friction_deg: 0): no shear to slide
             self.assertEqual(len(reports), 111)
             self.assert_reports(reports, cli.steps)
+            steps = sim.steps  # by steps.csv's names
+            for name in ("step", "stage", "iterations", "contacts", "substeps", "rattlers"):
+                np.testing.assert_array_equal(steps[name], cli.steps[name], err_msg=name)
+            for name in ("e1_minus_e2", "s1", "stress_ratio", "force_scale"):
+                np.testing.assert_allclose(steps[name], cli.steps[name].astype(float), rtol=1e-9, atol=1e-300,
+                                           err_msg=name)
+            np.testing.assert_allclose(steps["coordination"], cli.steps["coordination"], atol=5e-7)  # written %f
             self.assert_same_state(sim, STATE_FILES)
             with self.assertRaises(gembem.SceneError) as e:
                 sim.step()
