@@ -38,7 +38,8 @@ typedef enum {
 /* "converged", "iterations", "stalled", "time", "error". */
 const char *gb_solve_stop_name(gb_solve_stop stop);
 
-/* One converged (or failed) load step (mirrored by the Python binding, python/gembem/library.py). Stresses and strains: compression positive, 1 = vertical. */
+/* One converged (or failed) load step (mirrored by the Python binding, python/gembem/library.py).
+ * Stresses and strains: compression positive, 1 = vertical. */
 typedef struct {
     int stage;           /* 0-based stage of the loading program; -1 for the initial state */
     int step;            /* global step number, 0 = the initial state */

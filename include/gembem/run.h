@@ -23,9 +23,9 @@ typedef struct {
 gb_status gb_sim_create(const gb_scene *scene, gb_sim **out, gb_error *err);
 void gb_sim_free(gb_sim *sim);
 
-/* Runs the whole loading program, from its start (unless resumed): for the initial state (step 0,
- * unless resumed) and each load step, control -> solve -> measure -> output. With `out` (gb_run_output_open or _resume; NULL:
- * none) the loop writes the step's files, checkpoints (also within a step) and solver.history;
+/* Runs the whole loading program from its start: for the initial state (step 0, unless resumed)
+ * and each load step, control -> solve -> measure -> output. With `out` (gb_run_output_open or
+ * _resume; NULL: none) the loop writes the step's files, checkpoints (also within a step) and solver.history;
  * then on_step (NULL: none), e.g. to print progress, sees the step's report. A step that reaches
  * the iteration cap returns GB_ENOCONV with a message naming the step and its distance from
  * convergence; the simulation then holds the state of the last converged step. */
