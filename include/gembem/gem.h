@@ -7,7 +7,7 @@
 
 typedef struct gb_sim gb_sim;
 
-/* A contact that carries force. */
+/* A contact that carries force (mirrored by the Python binding, python/gembem/library.py). */
 typedef struct {
     int i, j;          /* grains; j < 0 is the wall -1 - j (GB_WALL_xxx) or a boundary particle (GB_IS_PARTICLE) */
     double nx, ny;     /* unit normal from i towards j */
@@ -38,7 +38,8 @@ typedef enum {
 /* "converged", "iterations", "stalled", "time", "error". */
 const char *gb_solve_stop_name(gb_solve_stop stop);
 
-/* One converged (or failed) load step. Stresses and strains: compression positive, 1 = vertical. */
+/* One converged (or failed) load step (mirrored by the Python binding, python/gembem/library.py).
+ * Stresses and strains: compression positive, 1 = vertical. */
 typedef struct {
     int stage;           /* 0-based stage of the loading program; -1 for the initial state */
     int step;            /* global step number, 0 = the initial state */
@@ -127,7 +128,13 @@ const gb_scene *gb_sim_scene(const gb_sim *sim);
 int gb_sim_n_grains(const gb_sim *sim);
 /* Grain i, numbered as in the scene (the simulation keeps its grains in another order). */
 gb_grain gb_sim_grain(const gb_sim *sim, int i);
+/* All the grains into out (gb_sim_n_grains of them), numbered as in the scene. */
+void gb_sim_grains(const gb_sim *sim, gb_grain *out);
+/* The walls' places (where their faces are). */
 gb_box gb_sim_box(const gb_sim *sim);
+/* The normal force of the grains on each wall (GB_WALL_xxx order, compression positive), of the
+ * forces as the last balance left them (a step's end); zero with a host. */
+void gb_sim_wall_forces(const gb_sim *sim, double force[GB_N_WALLS]);
 /* Copies up to `cap` force-carrying contacts into out (may be NULL) and returns how many there are:
  * grains numbered as in the scene, i < j between grains, sorted by (i, j) when all fit. */
 int gb_sim_contacts(const gb_sim *sim, gb_contact *out, int cap);

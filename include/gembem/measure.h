@@ -45,6 +45,11 @@ void gb_micro_measure(const gb_sim *sim, gb_micro *m);
  * `energy` is the same weighted by the contact's elastic energy (K 22). */
 void gb_micro_rose(const gb_sim *sim, int nbins, double *count, double *energy);
 
+/* Which of the m contacts c (as gb_sim_contacts gives them) slide: |pt| at the Coulomb limit
+ * pn tan(phi) + c (K 13), as the run's sliding contacts count them (docs/measures.md); 1 or 0 into
+ * sliding[k]. */
+void gb_contacts_sliding(const gb_sim *sim, const gb_contact *c, int m, int *sliding);
+
 /* Principal values and direction of a symmetric 2x2 tensor. */
 void gb_tensor2_principal(gb_tensor2 *t);
 

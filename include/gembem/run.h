@@ -23,13 +23,35 @@ typedef struct {
 gb_status gb_sim_create(const gb_scene *scene, gb_sim **out, gb_error *err);
 void gb_sim_free(gb_sim *sim);
 
-/* Runs the whole loading program: for the initial state (step 0, unless resumed) and each load
- * step, control -> solve -> measure -> output. With `out` (gb_run_output_open or _resume; NULL:
- * none) the loop writes the step's files, checkpoints (also within a step) and solver.history;
+/* Runs the whole loading program from its start: for the initial state (step 0, unless resumed)
+ * and each load step, control -> solve -> measure -> output. With `out` (gb_run_output_open or
+ * _resume; NULL: none) the loop writes the step's files, checkpoints (also within a step) and solver.history;
  * then on_step (NULL: none), e.g. to print progress, sees the step's report. A step that reaches
  * the iteration cap returns GB_ENOCONV with a message naming the step and its distance from
  * convergence; the simulation then holds the state of the last converged step. */
 gb_status gb_sim_run(gb_sim *sim, gb_run_output *out, gb_step_fn on_step, void *user, gb_error *err);
+
+/* The loading program one step at a time, for a caller that looks at the simulation between steps
+ * (the Python binding): the first call takes the initial state (step 0: its report, no solve) of a
+ * new run, or, on a resumed one, the step after its checkpoint's; each later call the next load
+ * step, with its control, solve, measure and (with `out`) output phases as gb_sim_run takes them,
+ * so that a run by steps and one by gb_sim_run give the same states and files. *rep: the step's
+ * report. A step that fails returns its error (as gb_sim_run's) and leaves the state of the last
+ * completed step; the next call takes the failed step again. Past the last step: GB_EINPUT. */
+gb_status gb_sim_advance(gb_sim *sim, gb_run_output *out, gb_step_report *rep, gb_error *err);
+/* Whether every step of the loading program is taken (by gb_sim_advance or gb_sim_run). */
+int gb_sim_finished(const gb_sim *sim);
+
+/* Where a simulation's loading program stands: the last step taken and the program's size. */
+typedef struct {
+    int step;         /* the last step taken: 0 the initial state, -1 none yet */
+    int stage;        /* its stage, 0-based; -1 for step 0 or none */
+    int stage_step;   /* its number in its stage, 1-based; 0 for step 0 or none */
+    int stage_steps;  /* the steps of its stage; 0 for step 0 or none */
+    int total_steps;  /* of the whole program (step 0 not counted) */
+    int n_stages;
+} gb_run_place;
+gb_run_place gb_sim_place(const gb_sim *sim);
 
 /* A stop asked for from outside the run, e.g. by a signal handler (the library installs none;
  * the gembem command does, for SIGTERM, SIGINT and SIGHUP): async-signal-safe, it only records

@@ -3,6 +3,8 @@
 #ifndef GEMBEM_SCENE_H
 #define GEMBEM_SCENE_H
 
+#include <stddef.h>
+
 #include "gembem/bem.h"
 #include "gembem/status.h"
 
@@ -251,7 +253,13 @@ gb_status gb_scene_admit(gb_scene *s, const gb_bem_mesh *mesh, gb_error *err);
 
 /* Reads and validates a scene; on any error *out is left empty and err says file:line:column. */
 gb_status gb_scene_load(const char *path, gb_scene *out, gb_error *err);
+/* The same from len bytes of YAML in memory (a scene built by a program): `path` names it in
+ * messages (path:line:column) and in run_info.yaml, and the file names it holds are read from
+ * path's directory; the file need not exist (a run directory, which copies the scene, needs it). */
+gb_status gb_scene_load_text(const char *text, size_t len, const char *path, gb_scene *out, gb_error *err);
 void gb_scene_free(gb_scene *s);
+/* sizeof(gb_scene), for a caller that cannot see this header (a ctypes binding) and allocates one. */
+size_t gb_scene_sizeof(void);
 
 /* Default solver settings: the paper's constants for 122 discs (alpha, alpha', beta, beta' =
  * 0.75, 0.5, 20, 20); the absolute form of the accuracy, 0: a scene built in code sets it (a scene

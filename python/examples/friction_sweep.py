@@ -5,11 +5,12 @@
 
 Kishino (1989) Fig. 7: case 1's three discs, 25 deg of friction between the discs and phi'
 against the walls. Instead of one hand-made YAML file per angle (validation/three_discs/
-friction_wall*.yaml), the validated scene is loaded once, one value changed per case, each case
-run by gembem and read back (as a Snakemake study: studies/examples/three_discs). Writes OUT_DIR/<angle>.yaml and OUT_DIR/<angle>/ (the runs), OUT_DIR/friction_sweep.png
-(stress ratio against shear strain, the rigid frictionless solution dashed) and prints the
-stress ratio at e1 - e2 = 1..5 %. With --jobs N, N cases run at once (threads: each waits on its
-own gembem process), their progress lines left out.
+friction_wall*.yaml), the validated scene is loaded once, one value changed per case, and each
+case run in this process by gembem's library (gembem.Simulation, docs/python.md), its steps'
+reports kept: no run directories (a Snakemake study runs the command instead:
+studies/examples/three_discs). Writes OUT_DIR/friction_sweep.png (stress ratio against shear
+strain, the rigid frictionless solution dashed) and prints the stress ratio at e1 - e2 =
+1..5 %. With --jobs N, N cases run at once (threads: the library runs outside Python's lock).
 """
 import argparse
 import os
@@ -35,11 +36,13 @@ def main():
 
     base = gembem.Scene.load(os.path.join(ROOT, "validation", "three_discs", "case1.yaml"))
     base = base.with_value("materials.grain_grain.friction_deg", 25)
-    base.output = {"measures_every": 0}          # only steps.csv is needed here
+    os.makedirs(a.out, exist_ok=True)
 
     def case(phi):
         scene = base.with_value("materials.grain_wall.friction_deg", phi)
-        return gembem.run(scene, os.path.join(a.out, f"{phi:g}"), overwrite=True, quiet=a.jobs > 1)
+        with gembem.Simulation(scene, name=os.path.join(a.out, f"{phi:g}.yaml")) as sim:
+            sim.run()                            # every step, in this process
+        return sim                               # its steps (a Table, as steps.csv's) stay
 
     with ThreadPoolExecutor(max_workers=a.jobs) as pool:
         runs = list(pool.map(case, a.angles))

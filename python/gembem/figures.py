@@ -13,6 +13,7 @@ from matplotlib.patches import Circle, Polygon, Rectangle
 from matplotlib.path import Path
 from matplotlib.tri import Triangulation
 
+from .library import Simulation
 from .rundir import Packing, Run
 from .vtk import read_vtk
 
@@ -32,10 +33,10 @@ def _done(fig, path, dpi=120):
 
 def _runs(runs):
     """One run or several, as Run objects (a path is opened; a Packing is kept, for the figures of
-    a final state)."""
-    if isinstance(runs, (Run, Packing, str)) or hasattr(runs, "__fspath__"):
+    a final state; a gembem.Simulation too, for the figures of its steps)."""
+    if isinstance(runs, (Run, Packing, Simulation, str)) or hasattr(runs, "__fspath__"):
         runs = [runs]
-    return [r if isinstance(r, (Run, Packing)) else Run(r) for r in runs]
+    return [r if isinstance(r, (Run, Packing, Simulation)) else Run(r) for r in runs]
 
 
 def _host_segments(run, displaced=False):

@@ -211,6 +211,16 @@ int gb_sim_n_grains(const gb_sim *sim) { return sim->state.n; }
 gb_grain gb_sim_grain(const gb_sim *sim, int i) { return sim->state.g[sim->grain_place[i]]; }
 gb_box gb_sim_box(const gb_sim *sim) { return sim->state.box; }
 
+void gb_sim_grains(const gb_sim *sim, gb_grain *out)
+{
+    for (int i = 0; i < sim->state.n; i++) out[i] = sim->state.g[sim->grain_place[i]];
+}
+
+void gb_sim_wall_forces(const gb_sim *sim, double force[GB_N_WALLS])
+{
+    memcpy(force, sim->state.wall_force, sizeof sim->state.wall_force);
+}
+
 static int contact_cmp(const void *a, const void *b)
 {
     const gb_contact *p = a, *q = b;

@@ -169,6 +169,7 @@ struct gb_sim {
     double work_body;         /* done by the body forces */
     double energy0;           /* elastic energy of the initial state */
     gb_sim_position pos;
+    int begun;                /* the program's start is taken (step 0, or a resume's place): gb_sim_advance goes on from pos */
     gb_sim_step cur;          /* the load step in progress */
     gb_run_profile profile;   /* the loop's phases (src/run/program.c) */
     gb_within_step_fn on_within_step; /* between two iterations of a relaxation (checkpoints) */

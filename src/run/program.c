@@ -348,107 +348,173 @@ static gb_status measure_and_output(gb_sim *sim, gb_run_output *out, gb_step_fn 
     return st;
 }
 
-gb_status gb_sim_run(gb_sim *sim, gb_run_output *out, gb_step_fn on_step, void *user, gb_error *err)
+/* The output's hooks within a step (checkpoints, solver.history), for the calls that write into it. */
+static void output_hooks(gb_sim *sim, gb_run_output *out, int on)
 {
-    const gb_scene *sc = sim->scene;
+    if (!out) return;
+    gb_sim_on_within_step(sim, on ? gb_run_output_within_step : NULL, on ? out : NULL);
+    if (sim->scene->solver.history) gb_sim_on_iteration(sim, on ? gb_run_output_iteration : NULL, on ? out : NULL);
+}
+
+/* The program's start: a new run's initial state (step 0: its report in *rep, and its output and
+ * on_step), or a resumed run's place (src/io/checkpoint.c: after the checkpoint's step, or within
+ * the step in progress, sim->cur, whose start is in sim->saved), whose outputs, energy0 and stage's
+ * start are those of the run it continues. */
+static gb_status begin(gb_sim *sim, gb_run_output *out, gb_step_fn on_step, void *user, gb_step_report *rep,
+                       gb_error *err)
+{
     gb_status st = GB_OK;
     double t = gb_clock_seconds();
-    if (out) {
-        gb_sim_on_within_step(sim, gb_run_output_within_step, out);
-        if (sc->solver.history) gb_sim_on_iteration(sim, gb_run_output_iteration, out);
-    }
-    gb_step_report rep;
-    memset(&rep, 0, sizeof rep);
-    rep.stage = -1;
-    rep.total_steps = gb_scene_total_steps(sc);
+    memset(rep, 0, sizeof *rep);
+    rep->stage = -1;
+    rep->total_steps = gb_scene_total_steps(sim->scene);
     gb_sim_resolve_accuracy(sim, sim->state.pairs.p, sim->state.pairs.n, 0);
-    fill_report(sim, &rep, NAN);
-    /* A resumed run (src/io/checkpoint.c) continues after the checkpoint's step, or within the step
-     * in progress (sim->cur, whose start is in sim->saved): its outputs, energy0 and the stage's
-     * start are those of the run it continues. */
-    gb_sim_position from = sim->pos;
-    int within = from.resume && sim->cur.active;
-    if (!from.resume) {
+    fill_report(sim, rep, NAN);
+    int resume = sim->pos.resume;
+    if (!resume) {
         memset(&sim->pos, 0, sizeof sim->pos);
         sim->energy0 = gb_sim_elastic_energy(sim);
     }
-    if (!within) save_state(sim, err, &st);
+    if (!(resume && sim->cur.active)) save_state(sim, err, &st);
     double t1 = gb_clock_seconds();
     sim->profile.measure += t1 - t; /* the initial report */
-    if (!st && !from.resume) st = measure_and_output(sim, out, on_step, user, &rep, t1, err);
-    int step = sim->pos.step;
-    for (int s = within ? sim->cur.stage : from.resume ? from.stage : 0; s < sc->n_stages && !st; s++) {
-        const gb_stage *sg = &sc->stages[s];
-        int first = within ? sim->cur.stage_step : from.resume && s == from.stage ? from.stage_step + 1 : 1;
-        double start[2] = {from.start[0], from.start[1]};
-        if (within) memcpy(start, sim->cur.start, sizeof start);
-        else if (first == 1) {
-            if (sg->reset_strain) {
+    if (!st && !resume) st = measure_and_output(sim, out, on_step, user, rep, t1, err);
+    sim->begun = !st;
+    return st;
+}
+
+/* The stage s and the number k in it of the load step after the last completed (sim->pos);
+ * s = n_stages when there is none. */
+static void next_place(const gb_sim *sim, int *s, int *k)
+{
+    *s = sim->pos.stage, *k = sim->pos.stage_step + 1;
+    while (*s < sim->scene->n_stages && *k > sim->scene->stages[*s].steps) ++*s, *k = 1;
+}
+
+/* Whether the loading program has no step left (a step resumed within is one). */
+static int finished(const gb_sim *sim)
+{
+    int s, k;
+    next_place(sim, &s, &k);
+    return !(sim->pos.resume && sim->cur.active) && s >= sim->scene->n_stages;
+}
+
+/* The next load step (there is one: !finished): control, solve, measure, output; its report in
+ * *rep. A step that fails leaves the state of the last completed one. */
+static gb_status next_step(gb_sim *sim, gb_run_output *out, gb_step_fn on_step, void *user, gb_step_report *rep,
+                           gb_error *err)
+{
+    const gb_scene *sc = sim->scene;
+    gb_status st = GB_OK;
+    int within = sim->pos.resume && sim->cur.active, s, k, step = sim->pos.step + 1;
+    double start[2];
+    if (within) {
+        s = sim->cur.stage, k = sim->cur.stage_step;
+        memcpy(start, sim->cur.start, sizeof start);
+    } else {
+        next_place(sim, &s, &k);
+        if (k == 1) { /* the stage's start */
+            if (sc->stages[s].reset_strain) {
                 sim->ref_width = sim->state.box.right - sim->state.box.left;
                 sim->ref_height = sim->state.box.top - sim->state.box.bottom;
             }
             gb_gem_forces(sim);
             gb_gem_stress(sim, &start[0], &start[1]);
-        }
-        for (int k = first; k <= sg->steps && !st; k++) {
-            /* control and solve */
-            double t0 = gb_clock_seconds(), solve0 = sim->profile.solve, max_force = 0, residual = 0;
-            step++;
-            if (!within) {
-                gb_sim_step c = {.active = 1, .stage = s, .stage_step = k, .step = step, .start = {start[0], start[1]},
-                                 .h = 1, .cuts = sg->kind == GB_STAGE_RELAX ? 0 : sc->solver.cutbacks, .finest = 1,
-                                 .phase = GB_PHASE_LOAD, .work0 = gb_solver_work_done(sim)};
-                sim->cur = c;
-                sim->attempt = 0;
-            }
-            within = 0;
-            gb_sim_watch_step(sim, t0);
-            /* from the step's start, which a step resumed within has from its checkpoint */
-            gb_sim_resolve_accuracy(sim, sim->saved.pairs.p, sim->saved.pairs.n, s);
-            if (!(sim->accuracy > 0))
-                st = gb_fail(err, GB_ENUMERIC, "the relative accuracy has no force scale: the step starts with no "
-                             "contact force, and no body force or stress target loads the grains; give "
-                             "solver.accuracy as a force");
-            if (!st) st = cut_back_step(sim, sg, &max_force, &residual, err);
-            sim->cur.active = 0;
-            sim->iterations_total += sim->cur.iters;
-            sim->watch.t0 = 0; /* no step is watched until the next starts */
-            if (st) {
-                st = step_failed(sim, sg, st, max_force, residual, err);
-                restore_state(sim, &sim->saved);
-                break;
-            }
-            double t1 = gb_clock_seconds();
-            sim->profile.control += t1 - t0 - (sim->profile.solve - solve0);
-            /* measure: the report, the work accounts */
-            rep.stage = s;
-            rep.step = step;
-            rep.iterations = sim->cur.iters;
-            rep.substeps = sim->cur.substeps;
-            rep.work = gb_solver_work_minus(gb_solver_work_done(sim), sim->cur.work0);
-            rep.cut_by = sim->cur.cut_by;
-            fill_report(sim, &rep, stress_controlled(sg) ? residual : NAN);
-            add_step_work(sim);
-            rep.seconds = gb_clock_seconds() - t0;
-            if (gb_sim_watch_done(sim, rep.seconds)) st = gb_fail(err, GB_ENOMEM, "out of memory");
-            gb_sim_position at = {s, k, step, {start[0], start[1]}, 0};
-            sim->pos = at;
-            /* measure and output see the step's start in the saved state; then it becomes the next's */
-            if (!st) st = measure_and_output(sim, out, on_step, user, &rep, t1, err);
-            /* with an output, gb_run_output_step has checked for a stop (and checkpointed) */
-            if (!st && !out && gb_run_stop_requested()) {
-                char name[32];
-                st = gb_fail(err, GB_EINTERRUPTED, "interrupted by %s after step %d",
-                             gb_run_signal_name(gb_run_stop_requested(), name, sizeof name), step);
-            }
-            double t2 = gb_clock_seconds();
-            if (!st) save_state(sim, err, &st);
-            sim->profile.control += gb_clock_seconds() - t2;
-        }
+        } else memcpy(start, sim->pos.start, sizeof start);
     }
-    if (out) { /* the output's hooks end with the run: the caller closes (frees) it next */
-        gb_sim_on_within_step(sim, NULL, NULL);
-        if (sc->solver.history) gb_sim_on_iteration(sim, NULL, NULL);
+    const gb_stage *sg = &sc->stages[s];
+    /* control and solve */
+    double t0 = gb_clock_seconds(), solve0 = sim->profile.solve, max_force = 0, residual = 0;
+    if (!within) {
+        gb_sim_step c = {.active = 1, .stage = s, .stage_step = k, .step = step, .start = {start[0], start[1]},
+                         .h = 1, .cuts = sg->kind == GB_STAGE_RELAX ? 0 : sc->solver.cutbacks, .finest = 1,
+                         .phase = GB_PHASE_LOAD, .work0 = gb_solver_work_done(sim)};
+        sim->cur = c;
+        sim->attempt = 0;
     }
+    gb_sim_watch_step(sim, t0);
+    /* from the step's start, which a step resumed within has from its checkpoint */
+    gb_sim_resolve_accuracy(sim, sim->saved.pairs.p, sim->saved.pairs.n, s);
+    if (!(sim->accuracy > 0))
+        st = gb_fail(err, GB_ENUMERIC, "the relative accuracy has no force scale: the step starts with no "
+                     "contact force, and no body force or stress target loads the grains; give "
+                     "solver.accuracy as a force");
+    if (!st) st = cut_back_step(sim, sg, &max_force, &residual, err);
+    sim->cur.active = 0;
+    sim->iterations_total += sim->cur.iters;
+    sim->watch.t0 = 0; /* no step is watched until the next starts */
+    if (st) {
+        st = step_failed(sim, sg, st, max_force, residual, err);
+        restore_state(sim, &sim->saved);
+        return st;
+    }
+    double t1 = gb_clock_seconds();
+    sim->profile.control += t1 - t0 - (sim->profile.solve - solve0);
+    /* measure: the report, the work accounts */
+    rep->stage = s;
+    rep->step = step;
+    rep->total_steps = gb_scene_total_steps(sc);
+    rep->iterations = sim->cur.iters;
+    rep->substeps = sim->cur.substeps;
+    rep->work = gb_solver_work_minus(gb_solver_work_done(sim), sim->cur.work0);
+    rep->cut_by = sim->cur.cut_by;
+    fill_report(sim, rep, stress_controlled(sg) ? residual : NAN);
+    add_step_work(sim);
+    rep->seconds = gb_clock_seconds() - t0;
+    if (gb_sim_watch_done(sim, rep->seconds)) st = gb_fail(err, GB_ENOMEM, "out of memory");
+    gb_sim_position at = {s, k, step, {start[0], start[1]}, 0};
+    sim->pos = at;
+    /* measure and output see the step's start in the saved state; then it becomes the next's */
+    if (!st) st = measure_and_output(sim, out, on_step, user, rep, t1, err);
+    /* with an output, gb_run_output_step has checked for a stop (and checkpointed) */
+    if (!st && !out && gb_run_stop_requested()) {
+        char name[32];
+        st = gb_fail(err, GB_EINTERRUPTED, "interrupted by %s after step %d",
+                     gb_run_signal_name(gb_run_stop_requested(), name, sizeof name), step);
+    }
+    double t2 = gb_clock_seconds();
+    if (!st) save_state(sim, err, &st);
+    sim->profile.control += gb_clock_seconds() - t2;
     return st;
+}
+
+gb_status gb_sim_run(gb_sim *sim, gb_run_output *out, gb_step_fn on_step, void *user, gb_error *err)
+{
+    gb_step_report rep;
+    output_hooks(sim, out, 1);
+    gb_status st = begin(sim, out, on_step, user, &rep, err);
+    while (!st && !finished(sim)) st = next_step(sim, out, on_step, user, &rep, err);
+    output_hooks(sim, out, 0); /* they end with the run: the caller closes (frees) the output next */
+    return st;
+}
+
+gb_status gb_sim_advance(gb_sim *sim, gb_run_output *out, gb_step_report *rep, gb_error *err)
+{
+    gb_status st = GB_OK;
+    output_hooks(sim, out, 1);
+    int fresh = !sim->begun && !sim->pos.resume; /* a new run's first step is step 0; a resumed run's, the next */
+    if (!sim->begun) st = begin(sim, out, NULL, NULL, rep, err);
+    if (!st && !fresh) {
+        if (finished(sim))
+            st = gb_fail(err, GB_EINPUT, "the loading program is finished: its %d load steps are taken",
+                         gb_scene_total_steps(sim->scene));
+        else st = next_step(sim, out, NULL, NULL, rep, err);
+    }
+    output_hooks(sim, out, 0);
+    return st;
+}
+
+int gb_sim_finished(const gb_sim *sim) { return sim->begun && finished(sim); }
+
+gb_run_place gb_sim_place(const gb_sim *sim)
+{
+    const gb_scene *sc = sim->scene;
+    gb_run_place p = {-1, -1, 0, 0, gb_scene_total_steps(sc), sc->n_stages};
+    if (!sim->begun) return p;
+    p.step = sim->pos.step;
+    if (p.step > 0) {
+        p.stage = sim->pos.stage, p.stage_step = sim->pos.stage_step;
+        p.stage_steps = sc->stages[p.stage].steps;
+    }
+    return p;
 }

@@ -545,6 +545,8 @@ static gb_status load(const gb_yaml_doc *doc, gb_scene *s, gb_bem_mesh *mesh, gb
     return check_force_scale(doc, &top, s, err);
 }
 
+size_t gb_scene_sizeof(void) { return sizeof(gb_scene); }
+
 gb_scene gb_scene_default(void)
 {
     gb_scene s;
@@ -558,15 +560,16 @@ gb_scene gb_scene_default(void)
     return s;
 }
 
-/* A scene file into out (from gb_scene_default) and its host's mesh into *mesh; on failure both are freed. */
-static gb_status load_file(const char *path, gb_scene *out, gb_bem_mesh *mesh, gb_scene_section_fn read_pack,
-                           void *user, gb_error *err)
+/* A scene file (or, text not NULL, len bytes of YAML named `path`) into out (from
+ * gb_scene_default) and its host's mesh into *mesh; on failure both are freed. */
+static gb_status load_file(const char *path, const char *text, size_t len, gb_scene *out, gb_bem_mesh *mesh,
+                           gb_scene_section_fn read_pack, void *user, gb_error *err)
 {
     *out = gb_scene_default();
     memset(mesh, 0, sizeof *mesh);
     snprintf(out->path, sizeof out->path, "%s", path);
     gb_yaml_doc doc;
-    gb_status st = gb_yaml_load(path, &doc, err);
+    gb_status st = text ? gb_yaml_load_text(text, len, path, &doc, err) : gb_yaml_load(path, &doc, err);
     if (st) return st;
     st = load(&doc, out, mesh, read_pack, user, err);
     gb_yaml_free(&doc);
@@ -580,7 +583,15 @@ static gb_status load_file(const char *path, gb_scene *out, gb_bem_mesh *mesh, g
 gb_status gb_scene_load(const char *path, gb_scene *out, gb_error *err)
 {
     gb_bem_mesh mesh;
-    gb_status st = load_file(path, out, &mesh, NULL, NULL, err);
+    gb_status st = load_file(path, NULL, 0, out, &mesh, NULL, NULL, err);
+    if (!st) gb_bem_mesh_free(&mesh);
+    return st;
+}
+
+gb_status gb_scene_load_text(const char *text, size_t len, const char *path, gb_scene *out, gb_error *err)
+{
+    gb_bem_mesh mesh;
+    gb_status st = load_file(path, text, len, out, &mesh, NULL, NULL, err);
     if (!st) gb_bem_mesh_free(&mesh);
     return st;
 }
@@ -588,5 +599,5 @@ gb_status gb_scene_load(const char *path, gb_scene *out, gb_error *err)
 gb_status gb_scene_load_pack(const char *path, gb_scene *out, gb_bem_mesh *mesh, gb_scene_section_fn read_pack,
                              void *user, gb_error *err)
 {
-    return load_file(path, out, mesh, read_pack, user, err);
+    return load_file(path, NULL, 0, out, mesh, read_pack, user, err);
 }

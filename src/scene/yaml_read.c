@@ -1,3 +1,4 @@
+#define _POSIX_C_SOURCE 200809L /* fmemopen */
 #include "scene/yaml_read.h"
 
 #include "core/number.h"
@@ -52,16 +53,10 @@ static gb_status check_utf8(const char *path, FILE *f, gb_error *err)
     return GB_OK;
 }
 
-gb_status gb_yaml_load(const char *path, gb_yaml_doc *doc, gb_error *err)
+/* Parses the UTF-8-checked YAML of `text` (NULL: the file doc->path) into doc. */
+static gb_status parse(gb_yaml_doc *doc, FILE *text, gb_error *err)
 {
-    memset(doc, 0, sizeof *doc);
-    snprintf(doc->path, sizeof doc->path, "%s", path);
-    FILE *probe = fopen(path, "rb");
-    if (!probe) return gb_fail(err, GB_EINPUT, "%s: cannot open: %s", path, strerror(errno));
-    gb_status text = check_utf8(path, probe, err);
-    fclose(probe);
-    if (text) return text;
-
+    const char *path = doc->path;
     /* A fresh diag per parse, collecting errors so that we can report line and column. */
     struct fy_diag_cfg dcfg;
     fy_diag_cfg_default(&dcfg);
@@ -74,7 +69,7 @@ gb_status gb_yaml_load(const char *path, gb_yaml_doc *doc, gb_error *err)
     struct fy_parse_cfg cfg = {0};
     cfg.flags = FYPCF_QUIET | FYPCF_COLLECT_DIAG;
     cfg.diag = diag;
-    doc->fyd = fy_document_build_from_file(&cfg, path);
+    doc->fyd = text ? fy_document_build_from_fp(&cfg, text) : fy_document_build_from_file(&cfg, path);
     gb_status st = GB_OK;
     if (!doc->fyd) {
         void *it = NULL;
@@ -86,11 +81,35 @@ gb_status gb_yaml_load(const char *path, gb_yaml_doc *doc, gb_error *err)
         else
             st = gb_fail(err, GB_EINPUT, "%s: not a valid YAML document", path);
     } else if (!fy_document_root(doc->fyd)) {
-        st = gb_fail(err, GB_EINPUT, "%s: the file is empty; expected a YAML mapping", path);
+        st = gb_fail(err, GB_EINPUT, "%s: the %s is empty; expected a YAML mapping", path, text ? "text" : "file");
         fy_document_destroy(doc->fyd);
         doc->fyd = NULL;
     }
     fy_diag_destroy(diag);
+    return st;
+}
+
+gb_status gb_yaml_load(const char *path, gb_yaml_doc *doc, gb_error *err)
+{
+    memset(doc, 0, sizeof *doc);
+    snprintf(doc->path, sizeof doc->path, "%s", path);
+    FILE *probe = fopen(path, "rb");
+    if (!probe) return gb_fail(err, GB_EINPUT, "%s: cannot open: %s", path, strerror(errno));
+    gb_status text = check_utf8(path, probe, err);
+    fclose(probe);
+    return text ? text : parse(doc, NULL, err);
+}
+
+gb_status gb_yaml_load_text(const char *text, size_t len, const char *name, gb_yaml_doc *doc, gb_error *err)
+{
+    memset(doc, 0, sizeof *doc);
+    snprintf(doc->path, sizeof doc->path, "%s", name);
+    if (!len) return gb_fail(err, GB_EINPUT, "%s: the text is empty; expected a YAML mapping", name);
+    FILE *f = fmemopen((void *)text, len, "rb");
+    if (!f) return gb_fail(err, GB_ENOMEM, "%s: cannot read the text: %s", name, strerror(errno));
+    gb_status st = check_utf8(name, f, err);
+    if (!st) rewind(f), st = parse(doc, f, err);
+    fclose(f);
     return st;
 }
 

@@ -16,6 +16,9 @@ typedef struct {
 
 /* Parses the whole file; a syntax error is reported with its line and column. */
 gb_status gb_yaml_load(const char *path, gb_yaml_doc *doc, gb_error *err);
+/* The same from len bytes of YAML in memory; `name` stands for the file in messages and relative
+ * file names (gb_yaml_relative_path) are read from its directory. */
+gb_status gb_yaml_load_text(const char *text, size_t len, const char *name, gb_yaml_doc *doc, gb_error *err);
 void gb_yaml_free(gb_yaml_doc *doc);
 
 /* 1-based line and column of a node (of its first scalar for a collection); 0 if unknown. */

@@ -2,7 +2,7 @@
 # ctest install_consumer: `cmake --install` into a scratch prefix, then what a user does with it,
 # outside the source tree: a C program built through pkg-config (shared, then static), through
 # find_package(gembem), run; the installed command (found through its RUNPATH) on a scene; the
-# installed Python package, by itself, finding that command and not this checkout's.
+# installed Python package, by itself, finding that command and library and not this checkout's.
 #   test_install.sh BUILD_DIR SOURCE_DIR VERSION   ($GB_CONSUMER_FLAGS: the build's sanitizer flags)
 set -uo pipefail
 build=$1; src=$2; version=$3
@@ -10,7 +10,7 @@ build=$1; src=$2; version=$3
 gb_test_begin
 p=$out/prefix; scene=$src/validation/three_discs/case1.yaml
 flags=(${GB_CONSUMER_FLAGS:-})
-unset GEMBEM PYTHONPATH LD_LIBRARY_PATH
+unset GEMBEM GEMBEM_LIBRARY PYTHONPATH LD_LIBRARY_PATH
 export PATH=/usr/bin:/bin   # no gembem on it: the installed files must find each other
 
 cmake --install "$build" --prefix "$p" >"$out/install.log" 2>&1 && ok "cmake --install" || bad "cmake --install: $(tail -3 "$out/install.log")"
@@ -56,4 +56,15 @@ found=$(PYTHONPATH=$p/lib/python3/dist-packages /usr/bin/python3 -c "import gemb
 [ "$found" = "$p/bin/gembem" ] && ok "Python: find_gembem() is the installed command" || bad "Python: find_gembem() gave '$found'"
 ratio=$(PYTHONPATH=$p/lib/python3/dist-packages /usr/bin/python3 -c "import gembem; print(gembem.Run('run').steps['step'][-1])" 2>&1)
 [ "$ratio" = "110" ] && ok "Python: the installed package reads the run (110 steps)" || bad "Python: read '$ratio'"
+# the installed Python package in-process: the installed library (not this checkout's), one step of the three discs
+lib=$(PYTHONPATH=$p/lib/python3/dist-packages /usr/bin/python3 -c "import gembem.library as l; print(l.find_library())" 2>&1)
+[ "$lib" = "$p/lib/libgembem.so.0" ] && ok "Python: find_library() is the installed library" || bad "Python: find_library() gave '$lib'"
+stepped=$(PYTHONPATH=$p/lib/python3/dist-packages /usr/bin/python3 -c "
+import gembem
+sim = gembem.Simulation('$scene')
+sim.step()
+r = sim.step()
+print(r.step, sim.grains.nrows, gembem.library.version())" 2>&1)
+[ "$stepped" = "1 3 $version" ] && ok "Python: gembem.Simulation takes step 1 of the three discs in-process" \
+  || bad "Python: in-process step gave '$stepped'"
 gb_test_end
