@@ -55,12 +55,19 @@ static gb_status crossing(gb_scene *s, int i, double c, const char *where, const
     return GB_OK;
 }
 
-static gb_status too_large(const gb_scene *s, int i, double w, double h, const char *space, gb_error *err)
+/* A grain that cannot fit its space: its diameter, less `slack` on each side, not below the space's
+ * width and height. Walls take slack = grains.max_overlap of the radius, the crossing admitted on
+ * each side: a disc pressed between two walls (a state gembem wrote after a compression) is
+ * admitted as its crossings are. */
+static gb_status too_large(const gb_scene *s, int i, double w, double h, double slack, const char *space,
+                           gb_error *err)
 {
-    if (2 * s->grains[i].r < w && 2 * s->grains[i].r < h) return GB_OK;
-    return grain_fail(s, i, err, "is larger than %s (%g x %g); expected a diameter below its width and height: "
+    double d = 2 * (s->grains[i].r - slack);
+    if (d < w && d < h) return GB_OK;
+    return grain_fail(s, i, err, "is larger than %s (%g x %g); expected a diameter below its width and height%s: "
                       "check that r is in the same unit as the positions and %s (units.length: %s)",
-                      space, w, h, s->host.present ? "the mesh" : "the box", s->length_unit);
+                      space, w, h, slack > 0 ? " with grains.max_overlap of its radius on each side" : "",
+                      s->host.present ? "the mesh" : "the box", s->length_unit);
 }
 
 /* A grain whose centre is outside its space: what to change, and when several are, the signature
@@ -99,7 +106,8 @@ static gb_status admit_box(gb_scene *s, unsigned char *touch, gb_error *err)
         double edge[4] = {g->x - g->r, g->x + g->r, g->y - g->r, g->y + g->r};
         char fix[160], wall[64];
         snprintf(wall, sizeof wall, "box.%s: %g%s", gb_wall_name(w), edge[w], w % 2 ? " or more" : " or less");
-        if ((st = too_large(s, i, b->right - b->left, b->top - b->bottom, "the box", err))) return st;
+        if ((st = too_large(s, i, b->right - b->left, b->top - b->bottom, s->max_overlap * g->r, "the box", err)))
+            return st;
         if (!(gap[w] > 0)) {
             int n = 0;
             for (int k = 0; k < s->n_grains; k++) {
@@ -147,7 +155,7 @@ static gb_status admit_host(gb_scene *s, const gb_bem_mesh *mesh, unsigned char 
     for (int i = 0; !st && i < s->n_grains; i++) {
         double p[2];
         gb_host_state_at_rest(&s->restart.host, s->grains[i].x, s->grains[i].y, p);
-        if ((st = too_large(s, i, box[1] - box[0], box[3] - box[2], "the host's cavity", err))) return st;
+        if ((st = too_large(s, i, box[1] - box[0], box[3] - box[2], 0, "the host's cavity", err))) return st;
         if (!gb_bem_mesh_in_cavity(mesh, cavity, p[0], p[1])) {
             int n = 0;
             for (int k = 0; k < s->n_grains; k++) {
