@@ -79,8 +79,12 @@ static void box_cases(void)
     CHECK(admitted(&s, NULL, "crosses the right wall by 0.4 (0.8 of its radius)"));
     g[1].x = 4.1;
     CHECK(admitted(&s, NULL, "has its centre outside the box [0, 4] x [0, 4] (beyond the right wall)"));
-    g[1].x = 2, g[1].y = 2, g[1].r = 2.0; /* its disc fills the box: larger than the space */
+    /* a disc that does not fit even crossing both walls by max_overlap = 0.75 of its radius:
+     * 2 (r - 0.75 r) = 0.5 r, at least the side 4 from r = 8 */
+    g[1].x = 2, g[1].y = 2, g[1].r = 8.0;
     CHECK(admitted(&s, NULL, "is larger than the box (4 x 4)"));
+    g[1].r = 7.9; /* centred, it crosses each wall by 5.9 = 0.747 r: past the box, refused for grain 0 */
+    CHECK(admitted(&s, NULL, "grain 1 (x 2, y 2, r 7.9) overlaps grain 0"));
 }
 
 /* A circular cavity of radius 1 in an infinite plane (64 elements). */
