@@ -100,6 +100,8 @@ def main():
                 marker = os.path.join(root, ".cwd")
                 script = f"set -e\n{text}\npwd > '{marker}'\n"
                 env = dict(os.environ, OPENBLAS_NUM_THREADS=os.environ.get("OPENBLAS_NUM_THREADS", "1"))
+                if os.environ.get("GB_SANITIZER_PRELOAD"):  # a sanitized build: python3 loads its library
+                    env.update(LD_PRELOAD=os.environ["GB_SANITIZER_PRELOAD"], ASAN_OPTIONS="detect_leaks=0")
                 r = subprocess.run(["bash", "-c", script], cwd=cwd, env=env, text=True,
                                    stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
                 if r.returncode != 0:

@@ -57,9 +57,12 @@ found=$(PYTHONPATH=$p/lib/python3/dist-packages /usr/bin/python3 -c "import gemb
 ratio=$(PYTHONPATH=$p/lib/python3/dist-packages /usr/bin/python3 -c "import gembem; print(gembem.Run('run').steps['step'][-1])" 2>&1)
 [ "$ratio" = "110" ] && ok "Python: the installed package reads the run (110 steps)" || bad "Python: read '$ratio'"
 # the installed Python package in-process: the installed library (not this checkout's), one step of the three discs
-lib=$(PYTHONPATH=$p/lib/python3/dist-packages /usr/bin/python3 -c "import gembem.library as l; print(l.find_library())" 2>&1)
+# (a sanitized library needs the sanitizers' runtimes preloaded into python3: GB_SANITIZER_PRELOAD)
+inproc=(env PYTHONPATH=$p/lib/python3/dist-packages)
+[ -n "${GB_SANITIZER_PRELOAD:-}" ] && inproc+=(LD_PRELOAD=$GB_SANITIZER_PRELOAD ASAN_OPTIONS=detect_leaks=0)
+lib=$("${inproc[@]}" /usr/bin/python3 -c "import gembem.library as l; print(l.find_library())" 2>&1)
 [ "$lib" = "$p/lib/libgembem.so.0" ] && ok "Python: find_library() is the installed library" || bad "Python: find_library() gave '$lib'"
-stepped=$(PYTHONPATH=$p/lib/python3/dist-packages /usr/bin/python3 -c "
+stepped=$("${inproc[@]}" /usr/bin/python3 -c "
 import gembem
 sim = gembem.Simulation('$scene')
 sim.step()
