@@ -17,9 +17,8 @@ set -u
 gembem=$1; root=$(cd "$(dirname "$0")/../.." && pwd)
 source "$root/tests/csv.sh"
 source "$root/tests/scene.sh"
-out=$(mktemp -d); fail=0; passed=0
-ok() { echo "ok   $1"; passed=$((passed + 1)); }
-bad() { echo "FAIL $1"; fail=$((fail + 1)); }
+source "$root/tools/lib.sh"
+gb_test_begin
 scene() { # OUT.yaml ALPHA [EXTRA scene_edit arguments]: case1's isotropic stage (loading 0) in one step
   local o=$1 a=$2; shift 2
   scene_edit "$root/validation/three_discs/case1.yaml" -o "$o" --delete loading.1 --set loading.0.isotropic.steps=1 \
@@ -56,6 +55,4 @@ if "$gembem" run "$out/stable.yaml" -o "$out/stable" --quiet; then
   [ "$spi" = "0 " ] && ok "stable: no smoother steps" || bad "stable: sweeps_per_iteration '$spi'"
 else bad "stable: did not converge"; fi
 
-echo "$passed passed, $fail failed"
-rm -rf "$out"
-[ $fail -eq 0 ]
+gb_test_end

@@ -12,9 +12,8 @@ set -u
 gembem=$1; root=$(cd "$(dirname "$0")/../.." && pwd)
 source "$root/tests/csv.sh"
 source "$root/tests/scene.sh"
-out=$(mktemp -d); fail=0; passed=0
-ok() { echo "ok   $1"; passed=$((passed + 1)); }
-bad() { echo "FAIL $1"; fail=$((fail + 1)); }
+source "$root/tools/lib.sh"
+gb_test_begin
 scene() { # OUT.yaml STEPS CAP [CUTBACKS]: case1's isotropic stage (loading 0) alone
   scene_edit "$root/validation/three_discs/case1.yaml" -o "$1" --delete loading.1 --set loading.0.isotropic.steps="$2" \
     --delete output.snapshot_steps --add output.snapshot_every=0 --set solver.max_iterations="$3" \
@@ -56,6 +55,4 @@ msg=$("$gembem" run "$out/onecut.yaml" -o "$out/onecut" 2>&1 >/dev/null); code=$
 [ $code -eq 3 ] && ok "cutbacks 1, cap 35: exit 3" || bad "cutbacks 1, cap 35: exit $code, expected 3"
 case "$msg" in *"nor in sub-steps down to 1/2 of the step; the outputs hold the 0 completed steps"*)
   ok "cutbacks 1: the message names the finest sub-step";; *) bad "cutbacks 1: message: $msg";; esac
-rm -rf "$out"
-echo "$passed passed, $fail failed"
-exit $((fail > 0))
+gb_test_end
