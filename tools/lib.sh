@@ -53,3 +53,18 @@ bench_args() {
   steps=${STEPS:-4}
   out=$root/runs/bench_gem
 }
+
+# Whether run directories A and B hold the same bytes in every file but run_info.yaml (times),
+# .lock (its holder), steps.csv's seconds column and pack_info.yaml's `made` and `seconds` lines
+# (wall time); what differs goes to DIFF.
+gb_same_run_dirs() { # A B DIFF
+  diff -r -x run_info.yaml -x steps.csv -x pack_info.yaml -x .lock "$1" "$2" > "$3" 2>&1 || return 1
+  local drop='NR == 1 { for (i = 1; i <= NF; i++) if ($i == "seconds") k = i } k { $k = "" } 1' f
+  for f in steps.csv pack_info.yaml; do
+    [ -f "$1/$f" ] || [ -f "$2/$f" ] || continue
+    if [ $f = steps.csv ]; then
+      cmp -s <(awk -F, -v OFS=, "$drop" "$1/$f") <(awk -F, -v OFS=, "$drop" "$2/$f") && continue
+    else cmp -s <(grep -Ev '^(made|seconds):' "$1/$f") <(grep -Ev '^(made|seconds):' "$2/$f") && continue; fi
+    echo "$f differs (wall times aside)" >> "$3"; return 1
+  done
+}

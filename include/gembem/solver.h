@@ -40,14 +40,23 @@ typedef struct {
  * restart state (scene->restart.solver) when it has one: a restart continues the run it continues. */
 gb_status gb_solver_create(gb_sim *sim, const gb_solver_settings *set, gb_error *err);
 
-/* Relaxes sim to equilibrium under the wall control, at most `cap` iterations, adding the
- * iterations done to *iterations; the largest fixing force and the walls' residual at the end.
- * The accuracy is the load step's (outside gb_sim_run: as for a first step). GB_ENOCONV at the
- * cap. */
-gb_status gb_solver_relax(gb_sim *sim, const gb_wall_control *wc, long cap, long *iterations, double *max_force,
-                          double *wall_residual, gb_error *err);
+/* What one relaxation did (gb_solver_relax): that call's work alone, and where it ended. */
+typedef struct {
+    gb_solve_stop stop;      /* why it stopped: GB_STOP_CONVERGED, or why not */
+    long iterations;         /* its iterations (resumed from a checkpoint within it: those before too) */
+    gb_solver_work work;     /* the moves tried, factorisations and smoother steps of this call */
+    double max_force;        /* the largest fixing force of a grain at its end (K 14) */
+    double wall_residual;    /* the walls' force error at its end (0 with walls held) */
+    double seconds;          /* its wall time */
+} gb_solve_result;
 
-/* The solver's work since the start of the process (all zero for the reference iteration). */
+/* Relaxes sim to equilibrium under the wall control, at most `cap` iterations; what it did in
+ * *res. The accuracy is the load step's (outside gb_sim_run: as for a first step). GB_ENOCONV when
+ * it stops unconverged (res->stop says why: the cap, a stall, the step's time limit). */
+gb_status gb_solver_relax(gb_sim *sim, const gb_wall_control *wc, long cap, gb_solve_result *res, gb_error *err);
+
+/* The solver's work since it was created (all zero for the reference iteration): its relaxations'
+ * work summed (a benchmark's totals). */
 gb_solver_work gb_solver_work_done(const gb_sim *sim);
 /* The global system's statistics, or NULL for the reference iteration. */
 const gb_global_stats *gb_solver_statistics(const gb_sim *sim);

@@ -101,7 +101,8 @@ typedef struct {
     long phase_iters;     /* iterations of the sub-step's relaxations that ended (shear_mean_stress: the first) */
     long relax_iters;     /* iterations done by the relaxation in progress (gb_solver_relax); 0 outside one */
     gb_solve_stop cut_by; /* why the first attempt that was cut back stopped (GB_STOP_CONVERGED: none yet) */
-    gb_solver_work work0; /* the solver's work counters of this process at the step's start */
+    gb_solver_work work;  /* the solver's work in the step's relaxations that ended (resumed within a
+                             relaxation: also its work before the checkpoint) */
 } gb_sim_step;
 
 /* The iterations a step has done so far. */
@@ -181,10 +182,10 @@ struct gb_sim {
  * on one thread; a parallel region costs a few microseconds. */
 enum { GB_PARALLEL_PAIRS = 1024, GB_PARALLEL_GRAINS = 512 };
 
-/* The difference of two counts of the solver's work. */
-static inline gb_solver_work gb_solver_work_minus(gb_solver_work a, gb_solver_work b)
+/* The sum of two counts of the solver's work. */
+static inline gb_solver_work gb_solver_work_plus(gb_solver_work a, gb_solver_work b)
 {
-    gb_solver_work d = {a.trials - b.trials, a.factorisations - b.factorisations, a.sweeps - b.sweeps};
+    gb_solver_work d = {a.trials + b.trials, a.factorisations + b.factorisations, a.sweeps + b.sweeps};
     return d;
 }
 

@@ -180,7 +180,7 @@ static void put_step(FILE *f, const gb_sim *sim)
             c->h, c->finest);
     fprintf(f, "progress %d %d %ld %d %ld %ld %d\n", c->cuts, c->substeps, c->iters, (int)c->phase, c->phase_iters,
             c->relax_iters, sim->attempt);
-    gb_solver_work w = gb_solver_work_minus(gb_solver_work_done(sim), c->work0);
+    gb_solver_work w = gb_solver_work_plus(c->work, gb_solver_relaxation_work(sim));
     fprintf(f, "work %ld %ld %ld\n", w.trials, w.factorisations, w.sweeps);
     const gb_solver_damping *d = gb_solver_damping_of(sim);
     fprintf(f, "stall %ld %a %d\n", d->since, d->best, d->newton_failures); /* "inf" before the solver's first move */
@@ -658,7 +658,7 @@ gb_status gb_checkpoint_read(const char *dir, gb_sim *sim, uint64_t scene_hash, 
             gb_state_free(&sim->saved), sim->saved = x.start, memset(&x.start, 0, sizeof x.start);
             if (x.cur.cuts > 0) gb_state_free(&sim->substep), sim->substep = x.sub, memset(&x.sub, 0, sizeof x.sub);
             memcpy(sim->scratch.dX, x.dX, 3 * (size_t)sim->state.n * sizeof(double));
-            x.cur.work0 = gb_solver_work_minus(gb_solver_work_done(sim), x.work);
+            x.cur.work = x.work; /* the resumed relaxation counts its work from here */
             sim->cur = x.cur;
             sim->attempt = x.attempt, d->since = x.damping.since, d->best = x.damping.best;
             d->newton_failures = x.damping.newton_failures;

@@ -125,13 +125,14 @@ static gb_status apply_loads(gb_sim *sim, const gb_stage *sg, double h, gb_error
     }
 }
 
-/* The solve phase: a relaxation of the sub-step in progress, timed. */
-static gb_status relax(gb_sim *sim, const gb_wall_control *wc, long cap, double *max_force, double *residual,
-                       gb_error *err)
+/* The solve phase: a relaxation of the sub-step in progress, what it did in *res and added to the
+ * step's (sim->cur) and the run's accounts. */
+static gb_status relax(gb_sim *sim, const gb_wall_control *wc, long cap, gb_solve_result *res, gb_error *err)
 {
-    double t0 = gb_clock_seconds();
-    gb_status st = gb_solver_relax(sim, wc, cap, &sim->cur.phase_iters, max_force, residual, err);
-    sim->profile.solve += gb_clock_seconds() - t0;
+    gb_status st = gb_solver_relax(sim, wc, cap, res, err);
+    sim->cur.phase_iters += res->iterations;
+    sim->cur.work = gb_solver_work_plus(sim->cur.work, res->work);
+    sim->profile.solve += res->seconds;
     return st;
 }
 
@@ -168,7 +169,7 @@ static gb_status weight_reachable(const gb_sim *sim, const gb_stage *sg, const g
  * step: t = 0, h = 1): its loads, unless a checkpoint within it has them applied already, then
  * relaxation to equilibrium; shear_mean_stress relaxes with the walls held, then restores the mean
  * stress by an isotropic strain under stress control (K section 2.6). */
-static gb_status load_step(gb_sim *sim, const gb_stage *sg, double *max_force, double *residual, gb_error *err)
+static gb_status load_step(gb_sim *sim, const gb_stage *sg, gb_solve_result *res, gb_error *err)
 {
     gb_sim_step *c = &sim->cur;
     long cap = sim->scene->solver.max_iterations;
@@ -192,7 +193,7 @@ static gb_status load_step(gb_sim *sim, const gb_stage *sg, double *max_force, d
         break;
     case GB_STAGE_SHEAR_MEAN:
         if (c->phase == GB_PHASE_RELAX) {
-            if ((st = relax(sim, &wc, cap, max_force, residual, err))) return st;
+            if ((st = relax(sim, &wc, cap, res, err))) return st;
             c->phase = GB_PHASE_MEAN;
         }
         wc.mode = GB_WALLS_MEAN;
@@ -206,7 +207,7 @@ static gb_status load_step(gb_sim *sim, const gb_stage *sg, double *max_force, d
     /* a whole step only: a cut-back's sub-steps of a ramp from zero can start below the weight,
      * where the step they split was above it (they fail as not converged, as before) */
     if (c->h == 1 && (st = weight_reachable(sim, sg, &wc, err))) return st;
-    return relax(sim, &wc, cap - c->phase_iters, max_force, residual, err);
+    return relax(sim, &wc, cap - c->phase_iters, res, err);
 }
 
 /* The step in progress (sim->cur). A step that does not converge is cut back, as nonlinear finite
@@ -216,19 +217,19 @@ static gb_status load_step(gb_sim *sim, const gb_stage *sg, double *max_force, d
  * solver (a grain that must roll out of a squeeze, a slip that moves many grains) can be a load
  * step too large for one Newton path. Leaves the iterations of all attempts, the sub-steps taken
  * and the finest sub-step tried in sim->cur. */
-static gb_status cut_back_step(gb_sim *sim, const gb_stage *sg, double *max_force, double *residual, gb_error *err)
+static gb_status cut_back_step(gb_sim *sim, const gb_stage *sg, gb_solve_result *res, gb_error *err)
 {
     gb_sim_step *c = &sim->cur;
     gb_status st;
     for (;;) {
         /* the sub-step's start (one resumed within has it from its checkpoint) */
         if (c->phase == GB_PHASE_LOAD && c->cuts > 0 && (st = gb_sim_state_save(sim, &sim->substep, err))) return st;
-        st = load_step(sim, sg, max_force, residual, err);
+        st = load_step(sim, sg, res, err);
         c->iters += c->phase_iters;
         c->phase = GB_PHASE_LOAD, c->phase_iters = 0;
         c->finest = c->h;
         /* past the step's time limit a cut-back would only take longer */
-        gb_solve_stop stop = gb_solver_stop(sim);
+        gb_solve_stop stop = res->stop;
         if (st == GB_ENOCONV && c->cut_by == GB_STOP_CONVERGED) c->cut_by = stop;
         if (st == GB_ENOCONV && c->cuts > 0 && stop != GB_STOP_TIME) {
             restore_state(sim, &sim->substep);
@@ -260,19 +261,18 @@ void gb_sim_on_within_step(gb_sim *sim, gb_within_step_fn fn, void *user)
  * springs and coordinates (gb_scene_force_resolution) asks for a looser accuracy; otherwise the
  * step was too large for the iterations it had: steps each the size of the finest sub-step tried
  * (each of which may still be cut back as finely again), or more iterations. */
-static void failure_hint(const gb_sim *sim, const gb_stage *sg, double max_force, double residual, char *hint,
-                         size_t n)
+static void failure_hint(const gb_sim *sim, const gb_stage *sg, const gb_solve_result *res, char *hint, size_t n)
 {
     const gb_sim_step *c = &sim->cur;
     const gb_solver_settings *sv = &sim->scene->solver;
-    double kn, x, res = gb_scene_force_resolution(sim->scene, &kn, &x);
-    if (fmax(max_force, residual) <= res) {
+    double kn, x, round_off = gb_scene_force_resolution(sim->scene, &kn, &x);
+    if (fmax(res->max_force, res->wall_residual) <= round_off) {
         snprintf(hint, n, ". The largest fixing force is at the round-off of these springs and coordinates (kn eps "
-                 "|x|max = %.3g): give solver.accuracy: %g or more", res, gb_scene_suggested_accuracy(res));
+                 "|x|max = %.3g): give solver.accuracy: %g or more", round_off, gb_scene_suggested_accuracy(round_off));
         return;
     }
     char more[80] = "";
-    gb_solve_stop stop = gb_solver_stop(sim);
+    gb_solve_stop stop = res->stop;
     if (stop != GB_STOP_ITERATIONS) { /* more iterations would not help */
         const char *longer = stop == GB_STOP_TIME ? ", or a larger solver.max_step_seconds" : "";
         if (sg->kind == GB_STAGE_RELAX) snprintf(hint, n, "%s", stop == GB_STOP_TIME ? ". Give a larger "
@@ -293,7 +293,7 @@ static void failure_hint(const gb_sim *sim, const gb_stage *sg, double max_force
 }
 
 /* The error of a failed step, naming it and what to change. */
-static gb_status step_failed(const gb_sim *sim, const gb_stage *sg, gb_status st, double max_force, double residual,
+static gb_status step_failed(const gb_sim *sim, const gb_stage *sg, gb_status st, const gb_solve_result *res,
                              gb_error *err)
 {
     const gb_sim_step *c = &sim->cur;
@@ -302,8 +302,8 @@ static gb_status step_failed(const gb_sim *sim, const gb_stage *sg, gb_status st
     if (st == GB_ENOCONV) {
         char cut[96] = "", hint[400], why[160];
         if (c->finest < 1) snprintf(cut, sizeof cut, ", nor in sub-steps down to 1/%.0f of the step", 1 / c->finest);
-        failure_hint(sim, sg, max_force, residual, hint, sizeof hint);
-        gb_solve_stop stop = gb_solver_stop(sim);
+        failure_hint(sim, sg, res, hint, sizeof hint);
+        gb_solve_stop stop = res->stop;
         long work = gb_solver_step_work(sim);
         if (stop == GB_STOP_TIME)
             snprintf(why, sizeof why, "reached solver.max_step_seconds (%g s) after %ld iterations and smoother "
@@ -315,8 +315,8 @@ static gb_status step_failed(const gb_sim *sim, const gb_stage *sg, gb_status st
         return gb_fail(err, GB_ENOCONV,
                        "step %d (stage %d '%s', step %d of %d) %s: largest fixing force %.6g, walls off their "
                        "target by %.6g (accuracy a = %g)%s; the outputs hold the %d completed steps%s",
-                       c->step, c->stage + 1, gb_stage_name(sg->kind), c->stage_step, sg->steps, why, max_force,
-                       residual, sim->accuracy, cut, c->step - 1, hint);
+                       c->step, c->stage + 1, gb_stage_name(sg->kind), c->stage_step, sg->steps, why, res->max_force,
+                       res->wall_residual, sim->accuracy, cut, c->step - 1, hint);
     }
     char msg[GB_ERROR_MSG_MAX];
     snprintf(msg, sizeof msg, "%s", err->msg);
@@ -424,11 +424,12 @@ static gb_status next_step(gb_sim *sim, gb_run_output *out, gb_step_fn on_step, 
     }
     const gb_stage *sg = &sc->stages[s];
     /* control and solve */
-    double t0 = gb_clock_seconds(), solve0 = sim->profile.solve, max_force = 0, residual = 0;
+    double t0 = gb_clock_seconds(), solve0 = sim->profile.solve;
+    gb_solve_result res = {0};
     if (!within) {
         gb_sim_step c = {.active = 1, .stage = s, .stage_step = k, .step = step, .start = {start[0], start[1]},
                          .h = 1, .cuts = sg->kind == GB_STAGE_RELAX ? 0 : sc->solver.cutbacks, .finest = 1,
-                         .phase = GB_PHASE_LOAD, .work0 = gb_solver_work_done(sim)};
+                         .phase = GB_PHASE_LOAD};
         sim->cur = c;
         sim->attempt = 0;
     }
@@ -439,12 +440,12 @@ static gb_status next_step(gb_sim *sim, gb_run_output *out, gb_step_fn on_step, 
         st = gb_fail(err, GB_ENUMERIC, "the relative accuracy has no force scale: the step starts with no "
                      "contact force, and no body force or stress target loads the grains; give "
                      "solver.accuracy as a force");
-    if (!st) st = cut_back_step(sim, sg, &max_force, &residual, err);
+    if (!st) st = cut_back_step(sim, sg, &res, err);
     sim->cur.active = 0;
     sim->iterations_total += sim->cur.iters;
     sim->watch.t0 = 0; /* no step is watched until the next starts */
     if (st) {
-        st = step_failed(sim, sg, st, max_force, residual, err);
+        st = step_failed(sim, sg, st, &res, err);
         restore_state(sim, &sim->saved);
         return st;
     }
@@ -456,9 +457,9 @@ static gb_status next_step(gb_sim *sim, gb_run_output *out, gb_step_fn on_step, 
     rep->total_steps = gb_scene_total_steps(sc);
     rep->iterations = sim->cur.iters;
     rep->substeps = sim->cur.substeps;
-    rep->work = gb_solver_work_minus(gb_solver_work_done(sim), sim->cur.work0);
+    rep->work = sim->cur.work;
     rep->cut_by = sim->cur.cut_by;
-    fill_report(sim, rep, stress_controlled(sg) ? residual : NAN);
+    fill_report(sim, rep, stress_controlled(sg) ? res.wall_residual : NAN);
     add_step_work(sim);
     rep->seconds = gb_clock_seconds() - t0;
     if (gb_sim_watch_done(sim, rep->seconds)) st = gb_fail(err, GB_ENOMEM, "out of memory");

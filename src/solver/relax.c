@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/clock.h"
 #include "solver/solver_impl.h"
 
 void gb_solver_free(gb_solver *s)
@@ -105,9 +106,18 @@ void gb_solver_report_smoother(const gb_solver *s, gb_sim *sim, double wall_resi
 enum { STALL_WORK = 200000, STALL_RATIO = 4 };
 static const double STALL_FALL = 0.5;
 
+gb_solver_work gb_solver_relaxation_work(const gb_sim *sim)
+{
+    const gb_solver *s = sim->solver;
+    gb_solver_work w = gb_solver_work_done(sim);
+    w.trials -= s->relax_work.trials, w.factorisations -= s->relax_work.factorisations;
+    w.sweeps -= s->relax_work.sweeps;
+    return w;
+}
+
 long gb_solver_step_work(const gb_sim *sim)
 {
-    return gb_sim_step_iterations(&sim->cur) + (gb_solver_work_done(sim).sweeps - sim->cur.work0.sweeps);
+    return gb_sim_step_iterations(&sim->cur) + sim->cur.work.sweeps + gb_solver_relaxation_work(sim).sweeps;
 }
 
 static int stalled(gb_solver_damping *d, const gb_sim *sim, double force)
@@ -123,18 +133,20 @@ static int stalled(gb_solver_damping *d, const gb_sim *sim, double force)
 
 gb_status gb_solver_poll(gb_solver *s, gb_sim *sim, double max_force)
 {
-    long sweeps = gb_solver_work_done(sim).sweeps - sim->cur.work0.sweeps;
+    long sweeps = sim->cur.work.sweeps + gb_solver_relaxation_work(sim).sweeps;
     gb_solve_stop stop = gb_sim_poll(sim, sweeps, max_force);
     if (stop == GB_STOP_CONVERGED) return GB_OK;
     s->stop = stop;
     return GB_ENOCONV;
 }
 
-gb_status gb_solver_relax(gb_sim *sim, const gb_wall_control *wc, long cap, long *iterations, double *max_force,
-                          double *wall_residual, gb_error *err)
+gb_status gb_solver_relax(gb_sim *sim, const gb_wall_control *wc, long cap, gb_solve_result *res, gb_error *err)
 {
     gb_solver *s = sim->solver;
     gb_solver_damping *d = &s->damping;
+    double t0 = gb_clock_seconds(), *max_force = &res->max_force, *wall_residual = &res->wall_residual;
+    *max_force = *wall_residual = 0;
+    s->relax_work = gb_solver_work_done(sim);
     long it = sim->cur.relax_iters;
     if (!it) {
         sim->attempt++;
@@ -169,15 +181,16 @@ gb_status gb_solver_relax(gb_sim *sim, const gb_wall_control *wc, long cap, long
     }
     sim->cur.relax_iters = 0;
     if (it > cap) {
-        *iterations += cap;
-        s->stop = GB_STOP_ITERATIONS;
-        return GB_ENOCONV;
+        it = cap;
+        s->stop = GB_STOP_ITERATIONS, st = GB_ENOCONV;
     }
-    *iterations += it;
+    res->stop = s->stop;
+    res->iterations = it;
+    res->work = gb_solver_relaxation_work(sim);
+    s->relax_work = gb_solver_work_done(sim); /* none in progress now */
+    res->seconds = gb_clock_seconds() - t0;
     return st;
 }
-
-gb_solve_stop gb_solver_stop(const gb_sim *sim) { return sim->solver->stop; }
 
 gb_solver_work gb_solver_work_done(const gb_sim *sim)
 {

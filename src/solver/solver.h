@@ -47,8 +47,8 @@ void gb_solver_free(gb_solver *s);
  * (sim->cur.relax_iters > 0) goes on from there: its iterations, attempt and the damped
  * iteration's stall detection are those it had. Between two iterations (not after the last allowed
  * one) it calls sim->on_within_step, whose error ends it. */
-/* Why the last relaxation stopped. */
-gb_solve_stop gb_solver_stop(const gb_sim *sim);
+/* The work of the relaxation in progress so far (a checkpoint within it); zero outside one. */
+gb_solver_work gb_solver_relaxation_work(const gb_sim *sim);
 /* The load step's work so far (its iterations plus the smoother's steps), the unit of the stall
  * window. */
 long gb_solver_step_work(const gb_sim *sim);

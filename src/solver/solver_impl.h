@@ -25,8 +25,8 @@ struct gb_solver {
     double length;              /* the share of Newton's step the last line search took (0: the smoother) */
     gb_solve_stop stop;         /* why the last relaxation stopped */
     long sweeps0;               /* work.sweeps at the start of the iteration in progress */
-    gb_solver_work work;        /* since the start of the process: only its changes within a load step are
-                                   reported, so a resumed run needs none of it */
+    gb_solver_work work;        /* since the solver was created (gb_solver_work_done) */
+    gb_solver_work relax_work;  /* gb_solver_work_done at the start of the relaxation in progress */
 };
 
 /* The smoother's sums over the grains run on solver.threads threads in blocks of

@@ -21,13 +21,10 @@ export OPENBLAS_NUM_THREADS=1
 seed=12345
 draw() { seed=$(( (seed * 1103515245 + 12345) % 2147483648 )); n=$(( seed / 65536 % $1 + 1 )); } # n in 1..$1
 
-# Equal run directories: every file (run_info.yaml and the lock file's holder aside), steps.csv
-# without its seconds column.
+# Equal run directories (tools/lib.sh's gb_same_run_dirs: times and the lock file's holder aside).
 same_runs() { # A B LABEL
   local a=$1 b=$2
-  if diff -r -x run_info.yaml -x steps.csv -x .lock "$a" "$b" > "$out/diff" &&
-     cmp -s <(csv_awk '{ $col("seconds") = "" } 1' OFS=, "$a/steps.csv") \
-            <(csv_awk '{ $col("seconds") = "" } 1' OFS=, "$b/steps.csv"); then
+  if gb_same_run_dirs "$a" "$b" "$out/diff"; then
     ok "$3: the resumed run directory equals the uninterrupted one ($(find "$a" -type f | wc -l) files)"
   else bad "$3: the run directories differ: $(head -c 600 "$out/diff")"; fi
 }

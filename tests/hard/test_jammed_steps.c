@@ -46,12 +46,11 @@ int main(int argc, char **argv)
         long most = 0;
         for (int k = 1; k <= 4; k++) {
             gb_wall_control wc = {GB_WALLS_STRESS, s0 * (1 + 0.05 * k), s0 * (1 + 0.05 * k), 0};
-            long it = 0;
-            double mf, wr;
-            gb_status st = gb_solver_relax(sim, &wc, solver ? 500 : 100000, &it, &mf, &wr, &err);
+            gb_solve_result res;
+            gb_status st = gb_solver_relax(sim, &wc, solver ? 500 : 100000, &res, &err);
             CHECK(st == GB_OK);
-            if (st) fprintf(stderr, "%s step %d: %s (largest force %g)\n", NAMES[solver], k, err.msg, mf);
-            most = it > most ? it : most;
+            if (st) fprintf(stderr, "%s step %d: %s (largest force %g)\n", NAMES[solver], k, err.msg, res.max_force);
+            most = res.iterations > most ? res.iterations : most;
             gb_sim_stress(sim, &s1, &s2);
             gb_box box = gb_sim_box(sim);
             double W = box.right - box.left;

@@ -196,9 +196,9 @@ static void sheared_disc(int solver, double kr, double eta, double tol_w)
     sim->scratch.wall_dx[GB_WALL_TOP][0] = shear;
     CHECK(gb_gem_apply_moves(sim, &err) == GB_OK);
     gb_wall_control wc = {GB_WALLS_FIXED, 0, 0, 0};
-    long it = 0;
-    double mf, wr;
-    gb_status st = gb_solver_relax(sim, &wc, 100000, &it, &mf, &wr, &err);
+    gb_solve_result res;
+    gb_status st = gb_solver_relax(sim, &wc, 100000, &res, &err);
+    long it = res.iterations;
     CHECK(st == GB_OK);
     if (st) fprintf(stderr, "%s: %s\n", NAMES[solver], err.msg);
     double pn = KN * delta, u = sim->state.g[0].x - 5, w = sim->state.g[0].rot;
@@ -233,9 +233,9 @@ static void single_contact(int solver)
     gb_sim *sim;
     CHECK(gb_sim_create(&s, &sim, &err) == GB_OK);
     gb_wall_control wc = {GB_WALLS_FIXED, 0, 0, 0};
-    long it = 0;
-    double mf, wr;
-    CHECK(gb_solver_relax(sim, &wc, 100000, &it, &mf, &wr, &err) == GB_OK);
+    gb_solve_result res;
+    CHECK(gb_solver_relax(sim, &wc, 100000, &res, &err) == GB_OK);
+    long it = res.iterations;
     gb_pair *p = pair_of(sim, 0, -1 - GB_WALL_BOTTOM);
     printf("single contact with a moment, %s: %ld iterations, w %.10g (analytic %.10g), mr %.3g, pt %.3g\n",
            solver ? "global" : "reference", it, sim->state.g[0].rot, m0 / kr, p->mr, p->pt);

@@ -89,9 +89,10 @@ static void relaxed(void)
     double limit = ci.mr, w = limit / (2 * KR);
     gb_error err;
     gb_wall_control wc = {GB_WALLS_FIXED, 0, 0, 0};
-    long it = 0;
-    double mf, wr;
-    gb_status st = gb_solver_relax(sim, &wc, 100000, &it, &mf, &wr, &err);
+    gb_solve_result r;
+    gb_status st = gb_solver_relax(sim, &wc, 100000, &r, &err);
+    long it = r.iterations;
+    double mf = r.max_force;
     CHECK(st == GB_OK);
     if (st) fprintf(stderr, "%s\n", err.msg);
     gb_pair *p = pair_of(sim, 0, 1);

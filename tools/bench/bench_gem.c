@@ -37,10 +37,11 @@ int main(int argc, char **argv)
         return 1;
     }
     gb_wall_control wc = {GB_WALLS_STRESS, 0.5 * s0, 0.5 * s0, 0};
-    long prep_it = 0;
-    double max_force, wall;
+    gb_solve_result prep;
     double t0 = bench_now();
-    gb_status st = gb_solver_relax(sim, &wc, prep_cap, &prep_it, &max_force, &wall, &err);
+    gb_status st = gb_solver_relax(sim, &wc, prep_cap, &prep, &err);
+    long prep_it = prep.iterations;
+    double max_force = prep.max_force, wall = prep.wall_residual;
     double t_prep = bench_now() - t0;
     int contacts = gb_sim_contacts(sim, NULL, 0);
     bench_totals load = {0, 0, (double)prep_it * contacts, contacts}; /* the preparation's contact-iterations too */

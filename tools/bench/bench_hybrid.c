@@ -23,10 +23,10 @@ int main(int argc, char **argv)
     if (gb_sim_create(&sc, &sim, &err)) return fprintf(stderr, "%s\n", err.msg), 1;
     double t_host = bench_now() - t0;
     t0 = bench_now();
-    long it = 0;
-    double mf, wr;
+    gb_solve_result res;
     gb_wall_control wc = {GB_WALLS_FIXED, 0, 0, 0};
-    gb_status st = gb_solver_relax(sim, &wc, sc.solver.max_iterations, &it, &mf, &wr, &err);
+    gb_status st = gb_solver_relax(sim, &wc, sc.solver.max_iterations, &res, &err);
+    long it = res.iterations;
     double t_run = bench_now() - t0;
     const gb_global_stats *g = gb_solver_statistics(sim);
     double rest = t_run - g->assemble - g->analyse - g->factorise - g->solve;

@@ -45,15 +45,16 @@ int main(int argc, char **argv)
     }
     if (gb_sim_create(&sc, &sim, &err)) return fprintf(stderr, "%s\n", err.msg), 1;
     gb_wall_control wc = {GB_WALLS_FIXED, 0, 0, 0};
-    long prep = 0;
-    double mf, wr, t0 = bench_now();
+    gb_solve_result res;
+    double t0 = bench_now();
     const char *verbose = getenv("BENCH_PROGRESS");
     if (verbose && !strcmp(verbose, "1")) gb_sim_on_iteration(sim, progress, &t0);
-    gb_status st = gb_solver_relax(sim, &wc, prep_cap, &prep, &mf, &wr, &err);
+    gb_status st = gb_solver_relax(sim, &wc, prep_cap, &res, &err);
     double t_prep = bench_now() - t0;
+    long prep = res.iterations;
     if (st) {
         printf("| %s | %d | | preparation not converged in %ld iterations (%.0f s), largest fixing force %g |\n", method,
-               gb_sim_n_grains(sim), prep, t_prep, mf);
+               gb_sim_n_grains(sim), prep, t_prep, res.max_force);
         gb_sim_free(sim);
         gb_scene_free(&sc);
         return 3;
@@ -74,6 +75,7 @@ int main(int argc, char **argv)
     if (gb_solver_statistics(sim)) g0 = *gb_solver_statistics(sim);
     bench_totals load = {0, 0, 0, gb_sim_contacts(sim, NULL, 0)};
     int done = 0;
+    double mf, wr;
     for (int k = 1; k <= steps; k++) {
         wc.mode = GB_WALLS_STRESS;
         wc.s1 = wc.s2 = sr * (1 + 0.05 * k);

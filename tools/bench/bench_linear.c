@@ -31,11 +31,11 @@ int main(int argc, char **argv)
         return fprintf(stderr, "this build has no PETSc\n"), 2;
     if (gb_sim_create(&sc, &sim, &err)) return fprintf(stderr, "%s\n", err.msg), 1;
     /* The walls under stress control, 5 % above the packing's mean stress: a load step's first iteration. */
-    double s1, s2, mf, wr;
+    double s1, s2;
     gb_sim_stress(sim, &s1, &s2);
     gb_wall_control wc = {GB_WALLS_STRESS, 0.525 * (s1 + s2), 0.525 * (s1 + s2), 0};
-    long its = 0;
-    gb_solver_relax(sim, &wc, 1, &its, &mf, &wr, &err); /* one iteration: not converged, as expected */
+    gb_solve_result res;
+    gb_solver_relax(sim, &wc, 1, &res, &err); /* one iteration: not converged, as expected */
     const gb_global_stats *g = gb_solver_statistics(sim);
     struct rusage ru;
     getrusage(RUSAGE_SELF, &ru);

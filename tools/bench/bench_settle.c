@@ -37,10 +37,10 @@ int main(int argc, char **argv)
     if (gb_sim_create(&sc, &sim, &err)) return fprintf(stderr, "%s\n", err.msg), 1;
     double t_create = bench_now() - t0;
     gb_wall_control wc = {GB_WALLS_FIXED, 0, 0, 0};
-    long it = 0;
-    double mf, wr;
+    gb_solve_result res;
     t0 = bench_now();
-    gb_status st = gb_solver_relax(sim, &wc, cap, &it, &mf, &wr, &err);
+    gb_status st = gb_solver_relax(sim, &wc, cap, &res, &err);
+    long it = res.iterations;
     double t = bench_now() - t0;
     struct rusage ru;
     getrusage(RUSAGE_SELF, &ru);
@@ -55,9 +55,8 @@ int main(int argc, char **argv)
     } else {
         printf(" %.2f | | | | | %.2f |\n", detect, t - detect);
     }
-    gb_solver_work w = gb_solver_work_done(sim);
     fprintf(stderr, "  %s %d: set-up (pair list) %.2f s, largest fixing force %.3g, status %d; %ld trials, %ld smoother steps\n",
-            method, gb_sim_n_grains(sim), t_create, mf, (int)st, w.trials, w.sweeps);
+            method, gb_sim_n_grains(sim), t_create, res.max_force, (int)st, res.work.trials, res.work.sweeps);
     gb_sim_free(sim);
     gb_scene_free(&sc);
     return st ? 3 : 0;

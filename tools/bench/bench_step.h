@@ -16,9 +16,11 @@ typedef struct {
 static inline gb_status bench_load_step(gb_sim *sim, const gb_wall_control *wc, long cap, bench_totals *t,
                                         double *max_force, double *wall_residual, gb_error *err)
 {
-    long n = 0;
+    gb_solve_result res;
     double t0 = bench_now();
-    gb_status st = gb_solver_relax(sim, wc, cap, &n, max_force, wall_residual, err);
+    gb_status st = gb_solver_relax(sim, wc, cap, &res, err);
+    long n = res.iterations;
+    *max_force = res.max_force, *wall_residual = res.wall_residual;
     t->seconds += bench_now() - t0;
     t->iterations += n;
     t->contacts = gb_sim_contacts(sim, NULL, 0);
