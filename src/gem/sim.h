@@ -173,6 +173,8 @@ struct gb_sim {
     int begun;                /* the program's start is taken (step 0, or a resume's place): gb_sim_advance goes on from pos */
     gb_sim_step cur;          /* the load step in progress */
     gb_run_profile profile;   /* the loop's phases (src/run/program.c) */
+    double *phase;            /* the profile's field the run's time goes to now (NULL: none) */
+    double phase_since;       /* since when */
     gb_within_step_fn on_within_step; /* between two iterations of a relaxation (checkpoints) */
     gb_step_watch watch;      /* the step's clock */
     void *on_within_step_user;

@@ -17,6 +17,16 @@ static void save_state(gb_sim *sim, gb_error *err, gb_status *st)
     *st = gb_sim_state_save(sim, &sim->saved, err);
 }
 
+/* From now on the run's time goes to `phase`, one of sim->profile's fields (NULL: none, between
+ * two calls of the library); the time since the last switch to the one before. So every second of
+ * a run is in exactly one phase, each timed where it starts. */
+static void enter(gb_sim *sim, double *phase)
+{
+    double now = gb_clock_seconds();
+    if (sim->phase) *sim->phase += now - sim->phase_since;
+    sim->phase = phase, sim->phase_since = now;
+}
+
 /* External work of a converged step, as a quasi-static test measures it: the walls' mean force at
  * the start and the end of the step times their inward displacement, and the body forces times
  * the grains' displacement (the saved state is the start of the step; sim->state.wall_force and
@@ -126,13 +136,14 @@ static gb_status apply_loads(gb_sim *sim, const gb_stage *sg, double h, gb_error
 }
 
 /* The solve phase: a relaxation of the sub-step in progress, what it did in *res and added to the
- * step's (sim->cur) and the run's accounts. */
+ * step's (sim->cur). */
 static gb_status relax(gb_sim *sim, const gb_wall_control *wc, long cap, gb_solve_result *res, gb_error *err)
 {
+    enter(sim, &sim->profile.solve);
     gb_status st = gb_solver_relax(sim, wc, cap, res, err);
+    enter(sim, &sim->profile.control);
     sim->cur.phase_iters += res->iterations;
     sim->cur.work = gb_solver_work_plus(sim->cur.work, res->work);
-    sim->profile.solve += res->seconds;
     return st;
 }
 
@@ -326,25 +337,23 @@ static gb_status step_failed(const gb_sim *sim, const gb_stage *sg, gb_status st
 
 gb_run_profile gb_sim_profile(const gb_sim *sim) { return sim->profile; }
 
-/* The measure and output phases of a step (or of the initial state, step 0): the step's report
- * from its end state, with an output the step's measures from its start (the saved state, not yet
- * replaced by the end) and end, its files, then on_step. t: when the step's control and solve
- * phases ended. */
+/* The measure and output phases of a step (or of the initial state, step 0), its report made: with
+ * an output the step's measures from its start (the saved state, not yet replaced by the end) and
+ * end, its files, then on_step. */
 static gb_status measure_and_output(gb_sim *sim, gb_run_output *out, gb_step_fn on_step, void *user,
-                                    const gb_step_report *rep, double t, gb_error *err)
+                                    const gb_step_report *rep, gb_error *err)
 {
     gb_status st = GB_OK;
     gb_step_measures m;
     memset(&m, 0, sizeof m);
+    enter(sim, &sim->profile.measure);
     if (out)
         st = gb_step_measure(&sim->saved, sim, rep->step, gb_run_output_fields_due(out, rep->step),
                              sim->scene->localisation, &m, err);
-    double t1 = gb_clock_seconds();
-    sim->profile.measure += t1 - t;
+    enter(sim, &sim->profile.output);
     if (!st && out) st = gb_run_output_step(out, sim, rep, &m, err);
     gb_step_measures_free(&m);
     if (!st && on_step) st = on_step(user, sim, rep, err);
-    sim->profile.output += gb_clock_seconds() - t1;
     return st;
 }
 
@@ -364,7 +373,7 @@ static gb_status begin(gb_sim *sim, gb_run_output *out, gb_step_fn on_step, void
                        gb_error *err)
 {
     gb_status st = GB_OK;
-    double t = gb_clock_seconds();
+    enter(sim, &sim->profile.measure); /* the initial report */
     memset(rep, 0, sizeof *rep);
     rep->stage = -1;
     rep->total_steps = gb_scene_total_steps(sim->scene);
@@ -376,9 +385,7 @@ static gb_status begin(gb_sim *sim, gb_run_output *out, gb_step_fn on_step, void
         sim->energy0 = gb_sim_elastic_energy(sim);
     }
     if (!(resume && sim->cur.active)) save_state(sim, err, &st);
-    double t1 = gb_clock_seconds();
-    sim->profile.measure += t1 - t; /* the initial report */
-    if (!st && !resume) st = measure_and_output(sim, out, on_step, user, rep, t1, err);
+    if (!st && !resume) st = measure_and_output(sim, out, on_step, user, rep, err);
     sim->begun = !st;
     return st;
 }
@@ -399,48 +406,78 @@ static int finished(const gb_sim *sim)
     return !(sim->pos.resume && sim->cur.active) && s >= sim->scene->n_stages;
 }
 
+/* Where the next load step starts (there is one: !finished), into sim->cur: the step a checkpoint
+ * was taken within, as the checkpoint left it; else the step after the last completed one, from its
+ * start (at its stage's start: the strain reference and the start stresses of a stress ramp). Its
+ * stage. */
+static const gb_stage *start_step(gb_sim *sim)
+{
+    const gb_scene *sc = sim->scene;
+    if (sim->pos.resume && sim->cur.active) return &sc->stages[sim->cur.stage];
+    int s, k;
+    double start[2];
+    next_place(sim, &s, &k);
+    const gb_stage *sg = &sc->stages[s];
+    if (k == 1) {
+        if (sg->reset_strain) {
+            sim->ref_width = sim->state.box.right - sim->state.box.left;
+            sim->ref_height = sim->state.box.top - sim->state.box.bottom;
+        }
+        gb_gem_forces(sim);
+        gb_gem_stress(sim, &start[0], &start[1]);
+    } else memcpy(start, sim->pos.start, sizeof start);
+    gb_sim_step c = {.active = 1, .stage = s, .stage_step = k, .step = sim->pos.step + 1,
+                     .start = {start[0], start[1]}, .h = 1, .cuts = sg->kind == GB_STAGE_RELAX ? 0 : sc->solver.cutbacks,
+                     .finest = 1, .phase = GB_PHASE_LOAD};
+    sim->cur = c;
+    sim->attempt = 0;
+    return sg;
+}
+
+/* The control and solve phases of the step in progress (sim->cur), from its start (the saved
+ * state): its accuracy, then its loads and relaxations, cut back where they fail. */
+static gb_status solve_step(gb_sim *sim, const gb_stage *sg, gb_solve_result *res, gb_error *err)
+{
+    gb_sim_resolve_accuracy(sim, sim->saved.pairs.p, sim->saved.pairs.n, sim->cur.stage);
+    if (!(sim->accuracy > 0))
+        return gb_fail(err, GB_ENUMERIC, "the relative accuracy has no force scale: the step starts with no "
+                       "contact force, and no body force or stress target loads the grains; give "
+                       "solver.accuracy as a force");
+    return cut_back_step(sim, sg, res, err);
+}
+
+/* The measure phase's start for a converged step begun at t0: its report, the external work, the
+ * run's place. */
+static gb_status step_done(gb_sim *sim, const gb_stage *sg, const gb_solve_result *res, double t0,
+                           gb_step_report *rep, gb_error *err)
+{
+    const gb_sim_step *c = &sim->cur;
+    rep->stage = c->stage;
+    rep->step = c->step;
+    rep->total_steps = gb_scene_total_steps(sim->scene);
+    rep->iterations = c->iters;
+    rep->substeps = c->substeps;
+    rep->work = c->work;
+    rep->cut_by = c->cut_by;
+    fill_report(sim, rep, stress_controlled(sg) ? res->wall_residual : NAN);
+    add_step_work(sim);
+    rep->seconds = gb_clock_seconds() - t0;
+    gb_sim_position at = {c->stage, c->stage_step, c->step, {c->start[0], c->start[1]}, 0};
+    sim->pos = at;
+    return gb_sim_watch_done(sim, rep->seconds) ? gb_fail(err, GB_ENOMEM, "out of memory") : GB_OK;
+}
+
 /* The next load step (there is one: !finished): control, solve, measure, output; its report in
  * *rep. A step that fails leaves the state of the last completed one. */
 static gb_status next_step(gb_sim *sim, gb_run_output *out, gb_step_fn on_step, void *user, gb_step_report *rep,
                            gb_error *err)
 {
-    const gb_scene *sc = sim->scene;
-    gb_status st = GB_OK;
-    int within = sim->pos.resume && sim->cur.active, s, k, step = sim->pos.step + 1;
-    double start[2];
-    if (within) {
-        s = sim->cur.stage, k = sim->cur.stage_step;
-        memcpy(start, sim->cur.start, sizeof start);
-    } else {
-        next_place(sim, &s, &k);
-        if (k == 1) { /* the stage's start */
-            if (sc->stages[s].reset_strain) {
-                sim->ref_width = sim->state.box.right - sim->state.box.left;
-                sim->ref_height = sim->state.box.top - sim->state.box.bottom;
-            }
-            gb_gem_forces(sim);
-            gb_gem_stress(sim, &start[0], &start[1]);
-        } else memcpy(start, sim->pos.start, sizeof start);
-    }
-    const gb_stage *sg = &sc->stages[s];
-    /* control and solve */
-    double t0 = gb_clock_seconds(), solve0 = sim->profile.solve;
-    gb_solve_result res = {0};
-    if (!within) {
-        gb_sim_step c = {.active = 1, .stage = s, .stage_step = k, .step = step, .start = {start[0], start[1]},
-                         .h = 1, .cuts = sg->kind == GB_STAGE_RELAX ? 0 : sc->solver.cutbacks, .finest = 1,
-                         .phase = GB_PHASE_LOAD};
-        sim->cur = c;
-        sim->attempt = 0;
-    }
+    enter(sim, &sim->profile.control);
+    double t0 = gb_clock_seconds();
+    const gb_stage *sg = start_step(sim);
     gb_sim_watch_step(sim, t0);
-    /* from the step's start, which a step resumed within has from its checkpoint */
-    gb_sim_resolve_accuracy(sim, sim->saved.pairs.p, sim->saved.pairs.n, s);
-    if (!(sim->accuracy > 0))
-        st = gb_fail(err, GB_ENUMERIC, "the relative accuracy has no force scale: the step starts with no "
-                     "contact force, and no body force or stress target loads the grains; give "
-                     "solver.accuracy as a force");
-    if (!st) st = cut_back_step(sim, sg, &res, err);
+    gb_solve_result res = {0};
+    gb_status st = solve_step(sim, sg, &res, err);
     sim->cur.active = 0;
     sim->iterations_total += sim->cur.iters;
     sim->watch.t0 = 0; /* no step is watched until the next starts */
@@ -449,33 +486,18 @@ static gb_status next_step(gb_sim *sim, gb_run_output *out, gb_step_fn on_step, 
         restore_state(sim, &sim->saved);
         return st;
     }
-    double t1 = gb_clock_seconds();
-    sim->profile.control += t1 - t0 - (sim->profile.solve - solve0);
-    /* measure: the report, the work accounts */
-    rep->stage = s;
-    rep->step = step;
-    rep->total_steps = gb_scene_total_steps(sc);
-    rep->iterations = sim->cur.iters;
-    rep->substeps = sim->cur.substeps;
-    rep->work = sim->cur.work;
-    rep->cut_by = sim->cur.cut_by;
-    fill_report(sim, rep, stress_controlled(sg) ? res.wall_residual : NAN);
-    add_step_work(sim);
-    rep->seconds = gb_clock_seconds() - t0;
-    if (gb_sim_watch_done(sim, rep->seconds)) st = gb_fail(err, GB_ENOMEM, "out of memory");
-    gb_sim_position at = {s, k, step, {start[0], start[1]}, 0};
-    sim->pos = at;
+    enter(sim, &sim->profile.measure);
+    st = step_done(sim, sg, &res, t0, rep, err);
     /* measure and output see the step's start in the saved state; then it becomes the next's */
-    if (!st) st = measure_and_output(sim, out, on_step, user, rep, t1, err);
+    if (!st) st = measure_and_output(sim, out, on_step, user, rep, err);
     /* with an output, gb_run_output_step has checked for a stop (and checkpointed) */
     if (!st && !out && gb_run_stop_requested()) {
         char name[32];
         st = gb_fail(err, GB_EINTERRUPTED, "interrupted by %s after step %d",
-                     gb_run_signal_name(gb_run_stop_requested(), name, sizeof name), step);
+                     gb_run_signal_name(gb_run_stop_requested(), name, sizeof name), rep->step);
     }
-    double t2 = gb_clock_seconds();
+    enter(sim, &sim->profile.control);
     if (!st) save_state(sim, err, &st);
-    sim->profile.control += gb_clock_seconds() - t2;
     return st;
 }
 
@@ -485,6 +507,7 @@ gb_status gb_sim_run(gb_sim *sim, gb_run_output *out, gb_step_fn on_step, void *
     output_hooks(sim, out, 1);
     gb_status st = begin(sim, out, on_step, user, &rep, err);
     while (!st && !finished(sim)) st = next_step(sim, out, on_step, user, &rep, err);
+    enter(sim, NULL);
     output_hooks(sim, out, 0); /* they end with the run: the caller closes (frees) the output next */
     return st;
 }
@@ -501,6 +524,7 @@ gb_status gb_sim_advance(gb_sim *sim, gb_run_output *out, gb_step_report *rep, g
                          gb_scene_total_steps(sim->scene));
         else st = next_step(sim, out, NULL, NULL, rep, err);
     }
+    enter(sim, NULL);
     output_hooks(sim, out, 0);
     return st;
 }
