@@ -9,7 +9,8 @@
 #include "gembem/run.h"
 #include "io/run_output.h"
 #include "measure/step_measures.h"
-#include "scene/admit.h"
+#include "run/loads.h"
+#include "run/step_failure.h"
 #include "solver/solver.h"
 
 static void save_state(gb_sim *sim, gb_error *err, gb_status *st)
@@ -49,37 +50,6 @@ static void restore_state(gb_sim *sim, const gb_state *state)
     gb_gem_forces(sim);
 }
 
-/* Imposes a strain increment (compression positive) on the walls, symmetrically, grains held. */
-static gb_status impose_strain(gb_sim *sim, double de1, double de2, gb_error *err)
-{
-    gb_gem_forces(sim); /* the walls' forces before the move, for their work */
-    sim->state.acc.half_pending = 0;
-    memset(sim->scratch.dX, 0, (size_t)sim->state.n * 3 * sizeof(double));
-    if (sim->bp.n) memset(sim->bp.dx, 0, 2 * (size_t)sim->bp.n * sizeof(double));
-    memset(sim->scratch.wall_dx, 0, sizeof sim->scratch.wall_dx);
-    double dy = 0.5 * de1 * sim->ref_height, dx = 0.5 * de2 * sim->ref_width;
-    sim->scratch.wall_dx[GB_WALL_BOTTOM][1] = dy;
-    sim->scratch.wall_dx[GB_WALL_TOP][1] = -dy;
-    sim->scratch.wall_dx[GB_WALL_LEFT][0] = dx;
-    sim->scratch.wall_dx[GB_WALL_RIGHT][0] = -dx;
-    if (gb_solver_predicts_strain(sim)) {
-        /* The grains follow the box affinely, the prediction of a homogeneous strain: Newton
-         * starts with the increment spread over the packing instead of concentrated at the walls
-         * (FIRE-jammed 1e3 discs, 1 % oedometric in 20 steps: 7.7 iterations a step against 8.3). */
-        const gb_box *b = &sim->state.box;
-        double xc = 0.5 * (b->left + b->right), yc = 0.5 * (b->bottom + b->top);
-        double sx = 2 * dx / (b->right - b->left), sy = 2 * dy / (b->top - b->bottom);
-        for (int i = 0; i < sim->state.n; i++) {
-            sim->scratch.dX[3 * i] = -sx * (sim->state.g[i].x - xc);
-            sim->scratch.dX[3 * i + 1] = -sy * (sim->state.g[i].y - yc);
-        }
-        /* a move of the grains like an iteration's: the fixing forces' work, by the trapezoid rule */
-        sim->state.acc.relaxation -= 0.5 * gb_gem_fixing_work(sim);
-        sim->state.acc.half_pending = 1;
-    }
-    return gb_gem_apply_moves(sim, err);
-}
-
 /* The step's state and error; residual: the walls' under stress control, NaN where walls are not
  * stress-controlled (strain, relax, hosts). */
 static void fill_report(gb_sim *sim, gb_step_report *r, double residual)
@@ -111,30 +81,6 @@ static int stress_controlled(const gb_stage *sg)
            (k == GB_STAGE_RELAX && sg->mean_stress > 0);
 }
 
-/* The loads of a sub-step of size h: the host's loads grow (grains and cavity held: f0 changes),
- * or the walls move (strain control, and the shear increment of shear_mean_stress). */
-static gb_status apply_loads(gb_sim *sim, const gb_stage *sg, double h, gb_error *err)
-{
-    gb_status st = GB_OK;
-    sim->state.acc.dissipation_step = 0;
-    for (int q = 0; q < sim->state.pairs.n; q++) sim->state.pairs.p[q].diss = 0;
-    switch (sg->kind) {
-    case GB_STAGE_HOST_DISPLACEMENT:
-    case GB_STAGE_HOST_LOAD:
-        for (int q = 0; q < sg->n_host_groups && !st; q++) {
-            double inc[2] = {h * sg->host_increment[q][0], h * sg->host_increment[q][1]};
-            st = gb_host_add_load(sim->host, &sim->state.host, sg->host_group[q], inc, err);
-        }
-        double remote[3] = {h * sg->host_remote_increment[0], h * sg->host_remote_increment[1],
-                            h * sg->host_remote_increment[2]};
-        if (!st && sim->host->mesh.unbounded) st = gb_host_add_remote(sim->host, &sim->state.host, remote, err);
-        return st;
-    case GB_STAGE_STRAIN: return impose_strain(sim, h * sg->de1, h * sg->de2, err);
-    case GB_STAGE_SHEAR_MEAN: return impose_strain(sim, 0.5 * h * sg->d_shear, -0.5 * h * sg->d_shear, err);
-    default: return GB_OK;
-    }
-}
-
 /* The solve phase: a relaxation of the sub-step in progress, what it did in *res and added to the
  * step's (sim->cur). */
 static gb_status relax(gb_sim *sim, const gb_wall_control *wc, long cap, gb_solve_result *res, gb_error *err)
@@ -145,35 +91,6 @@ static gb_status relax(gb_sim *sim, const gb_wall_control *wc, long cap, gb_solv
     sim->cur.phase_iters += res->iterations;
     sim->cur.work = gb_solver_work_plus(sim->cur.work, res->work);
     return st;
-}
-
-/* Whether servo walls can reach their target under the grains' weight. Frictionless side walls
- * carry no vertical force, so the bottom wall carries the top's force plus the weight: the walls'
- * mean vertical stress s1 = (F_bottom + F_top) / 2W is at least half the weight over the width
- * (across, the same for a horizontal body force). Below it the top wall would rise after grains
- * that fall back, for ever, and the first step would never end. Refused at once instead, with
- * what the stage needs. Walls with friction or cohesion can carry the weight: not checked. */
-static gb_status weight_reachable(const gb_sim *sim, const gb_stage *sg, const gb_wall_control *wc, gb_error *err)
-{
-    const gb_material *m = &sim->scene->grain_wall;
-    if (wc->mode != GB_WALLS_STRESS && wc->mode != GB_WALLS_MEAN) return GB_OK;
-    if (!sim->world.box || !sim->body || m->friction_deg != 0 || m->cohesion != 0) return GB_OK;
-    double bx = 0, by = 0;
-    for (int i = 0; i < sim->state.n; i++) bx += sim->body[2 * i], by += sim->body[2 * i + 1];
-    const gb_box *b = &sim->state.box;
-    double W = b->right - b->left, H = b->top - b->bottom, a = sim->accuracy;
-    /* the least s1 and s2, with the walls' residual allowed (K 14: a force, over the side) */
-    double s1 = fmax(0, 0.5 * fabs(by) / W - a / W), s2 = fmax(0, 0.5 * fabs(bx) / H - a / H);
-    if (wc->mode == GB_WALLS_STRESS && wc->s1 >= s1 && wc->s2 >= s2) return GB_OK;
-    if (wc->mode == GB_WALLS_MEAN && wc->mean >= 0.5 * (s1 + s2)) return GB_OK;
-    char target[96];
-    if (wc->mode == GB_WALLS_MEAN) snprintf(target, sizeof target, "a mean stress of %.6g", wc->mean);
-    else snprintf(target, sizeof target, "s1 %.6g and s2 %.6g", wc->s1, wc->s2);
-    return gb_fail(err, GB_EINPUT,
-                   "loading[%d].%s: the walls cannot reach %s dyn/cm under the grains' weight (%.6g, %.6g dyn): "
-                   "frictionless walls carry at least half of it over the side, s1 >= %.6g and s2 >= %.6g (a mean "
-                   ">= %.6g) here; expected a larger stress or a smaller body force",
-                   sim->cur.stage, gb_stage_name(sg->kind), target, bx, by, s1, s2, 0.5 * (s1 + s2));
 }
 
 /* The sub-step in progress (sim->cur: from fraction t to t + h of the step's increment; the whole
@@ -187,7 +104,7 @@ static gb_status load_step(gb_sim *sim, const gb_stage *sg, gb_solve_result *res
     gb_wall_control wc = {GB_WALLS_FIXED, 0, 0, 0};
     gb_status st;
     if (c->phase == GB_PHASE_LOAD) {
-        if ((st = apply_loads(sim, sg, c->h, err))) return st;
+        if ((st = gb_run_apply_loads(sim, sg, c->h, err))) return st;
         c->phase = GB_PHASE_RELAX;
     }
     double f = (c->stage_step - 1 + c->t + c->h) / sg->steps;
@@ -217,7 +134,7 @@ static gb_status load_step(gb_sim *sim, const gb_stage *sg, gb_solve_result *res
     }
     /* a whole step only: a cut-back's sub-steps of a ramp from zero can start below the weight,
      * where the step they split was above it (they fail as not converged, as before) */
-    if (c->h == 1 && (st = weight_reachable(sim, sg, &wc, err))) return st;
+    if (c->h == 1 && (st = gb_run_weight_reachable(sim, sg, &wc, err))) return st;
     return relax(sim, &wc, cap - c->phase_iters, res, err);
 }
 
@@ -266,73 +183,6 @@ void gb_sim_on_within_step(gb_sim *sim, gb_within_step_fn fn, void *user)
 {
     sim->on_within_step = fn;
     sim->on_within_step_user = user;
-}
-
-/* What to change after a step that did not converge. Forces within the round-off of the
- * springs and coordinates (gb_scene_force_resolution) asks for a looser accuracy; otherwise the
- * step was too large for the iterations it had: steps each the size of the finest sub-step tried
- * (each of which may still be cut back as finely again), or more iterations. */
-static void failure_hint(const gb_sim *sim, const gb_stage *sg, const gb_solve_result *res, char *hint, size_t n)
-{
-    const gb_sim_step *c = &sim->cur;
-    const gb_solver_settings *sv = &sim->scene->solver;
-    double kn, x, round_off = gb_scene_force_resolution(sim->scene, &kn, &x);
-    if (fmax(res->max_force, res->wall_residual) <= round_off) {
-        snprintf(hint, n, ". The largest fixing force is at the round-off of these springs and coordinates (kn eps "
-                 "|x|max = %.3g): give solver.accuracy: %g or more", round_off, gb_scene_suggested_accuracy(round_off));
-        return;
-    }
-    char more[80] = "";
-    gb_solve_stop stop = res->stop;
-    if (stop != GB_STOP_ITERATIONS) { /* more iterations would not help */
-        const char *longer = stop == GB_STOP_TIME ? ", or a larger solver.max_step_seconds" : "";
-        if (sg->kind == GB_STAGE_RELAX) snprintf(hint, n, "%s", stop == GB_STOP_TIME ? ". Give a larger "
-                                                 "solver.max_step_seconds" : "");
-        else snprintf(hint, n, ". Use smaller load steps: loading[%d].%s.steps: %.0f (now %d)%s", c->stage,
-                      gb_stage_name(sg->kind), sg->steps * fmax(2, 1 / c->finest), sg->steps, longer);
-        return;
-    }
-    if (sv->max_iterations < gb_solver_defaults().max_iterations)
-        snprintf(more, sizeof more, " (default %ld)", gb_solver_defaults().max_iterations);
-    if (sg->kind == GB_STAGE_RELAX) {
-        snprintf(hint, n, ". Give solver.max_iterations more than %ld%s", sv->max_iterations, more);
-        return;
-    }
-    double steps = sg->steps * fmax(2, 1 / c->finest); /* the finest sub-step tried, or a half without cut-backs */
-    snprintf(hint, n, ". Use smaller load steps: loading[%d].%s.steps: %.0f (now %d), or give solver.max_iterations "
-             "more than %ld%s", c->stage, gb_stage_name(sg->kind), steps, sg->steps, sv->max_iterations, more);
-}
-
-/* The error of a failed step, naming it and what to change. */
-static gb_status step_failed(const gb_sim *sim, const gb_stage *sg, gb_status st, const gb_solve_result *res,
-                             gb_error *err)
-{
-    const gb_sim_step *c = &sim->cur;
-    const gb_solver_settings *sv = &sim->scene->solver;
-    if (st == GB_EINTERRUPTED) return st; /* its message says where already */
-    if (st == GB_ENOCONV) {
-        char cut[96] = "", hint[400], why[160];
-        if (c->finest < 1) snprintf(cut, sizeof cut, ", nor in sub-steps down to 1/%.0f of the step", 1 / c->finest);
-        failure_hint(sim, sg, res, hint, sizeof hint);
-        gb_solve_stop stop = res->stop;
-        long work = gb_solver_step_work(sim);
-        if (stop == GB_STOP_TIME)
-            snprintf(why, sizeof why, "reached solver.max_step_seconds (%g s) after %ld iterations and smoother "
-                     "steps", sv->max_step_seconds, work);
-        else if (stop == GB_STOP_STALLED)
-            snprintf(why, sizeof why, "stalled (its largest fixing force stopped falling) after %ld iterations and "
-                     "smoother steps", work);
-        else snprintf(why, sizeof why, "did not converge in %ld iterations", sv->max_iterations);
-        return gb_fail(err, GB_ENOCONV,
-                       "step %d (stage %d '%s', step %d of %d) %s: largest fixing force %.6g, walls off their "
-                       "target by %.6g (accuracy a = %g)%s; the outputs hold the %d completed steps%s",
-                       c->step, c->stage + 1, gb_stage_name(sg->kind), c->stage_step, sg->steps, why, res->max_force,
-                       res->wall_residual, sim->accuracy, cut, c->step - 1, hint);
-    }
-    char msg[GB_ERROR_MSG_MAX];
-    snprintf(msg, sizeof msg, "%s", err->msg);
-    return gb_fail(err, st, "step %d (stage %d '%s', step %d of %d): %s", c->step, c->stage + 1, gb_stage_name(sg->kind),
-                   c->stage_step, sg->steps, msg);
 }
 
 gb_run_profile gb_sim_profile(const gb_sim *sim) { return sim->profile; }
@@ -482,7 +332,7 @@ static gb_status next_step(gb_sim *sim, gb_run_output *out, gb_step_fn on_step, 
     sim->iterations_total += sim->cur.iters;
     sim->watch.t0 = 0; /* no step is watched until the next starts */
     if (st) {
-        st = step_failed(sim, sg, st, &res, err);
+        st = gb_run_step_failed(sim, sg, st, &res, err);
         restore_state(sim, &sim->saved);
         return st;
     }

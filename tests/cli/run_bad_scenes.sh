@@ -57,7 +57,7 @@ for scene in "$dir"/warn/*.yaml; do
   echo "ok   $name: $msg"
 done
 # A stress that frictionless walls cannot reach under the grains' weight (src/run/program.c,
-# weight_reachable): two discs of radius 1 weighing 1.5e5 dyn/cm^2 of area each in a box 4 wide,
+# gb_run_weight_reachable): two discs of radius 1 weighing 1.5e5 dyn/cm^2 of area each in a box 4 wide,
 # whose mean vertical wall stress is at least 2 pi 1.5e5 / (2 4) - 100 / 4 = 117 785 dyn/cm: its
 # first step's 7.5e4 is refused at once (exit 2), the initial state kept; 1.5e4 of weight runs.
 n=$((n + 1))

@@ -1,0 +1,14 @@
+/* The error of a load step that failed (src/run/program.c). */
+#ifndef GB_RUN_STEP_FAILURE_H
+#define GB_RUN_STEP_FAILURE_H
+
+#include "gem/sim.h"
+#include "gembem/solver.h"
+
+/* The error of the step in progress (sim->cur) of stage sg, ended by st with the last relaxation's
+ * result *res: GB_ENOCONV names the step, why it stopped (iterations, stall, time limit), its
+ * largest fixing force and what to change; another error is prefixed with the step. */
+gb_status gb_run_step_failed(const gb_sim *sim, const gb_stage *sg, gb_status st, const gb_solve_result *res,
+                             gb_error *err);
+
+#endif
