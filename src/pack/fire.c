@@ -278,6 +278,135 @@ static gb_status refresh(fire_state *S, double drift2, gb_error *err)
     return rebuild(S, err);
 }
 
+/* The relaxation's constants, from the discs and springs at its start. */
+typedef struct {
+    double inv_m;          /* one over the discs' mass (the lightest disc's, for all) */
+    double c;              /* the length of a unit of ln(scale) */
+    double dt_max, dt_min; /* FIRE's bounds on its step */
+} fire_scales;
+
+/* The relaxation's start: the velocities and forces (v, f: len each), the state S with its scale
+ * and the pair list's skin (the list is built next), and the constants. */
+static gb_status fire_start(fire_state *S, const gb_fire_world *w, double scale, size_t len, double **v, double **f,
+                            fire_scales *k, gb_error *err)
+{
+    int n = w->n;
+    S->w = w, S->world = (gb_world){w->g, n, w->box, w->bp};
+    S->fr = w->pairs != NULL, S->L = S->fr ? w->pairs : &S->own;
+    *v = calloc(len, sizeof(double)), *f = calloc(len, sizeof(double));
+    if (S->fr) {
+        S->fw = calloc((size_t)n + 1, sizeof(double)), S->vw = calloc((size_t)n + 1, sizeof(double));
+        S->dX = calloc(3 * (size_t)n + 1, sizeof(double));
+    }
+    S->threads = w->threads > 1 ? w->threads : 1; /* a world made without it: one */
+    S->search.threads = S->threads;
+    S->par = n >= PARALLEL && S->threads > 1;
+    if (!*v || !*f || (S->fr && (!S->fw || !S->vw || !S->dX)))
+        return gb_fail(err, GB_ENOMEM, "out of memory for the relaxation of %d grains", n);
+    set_scale(S, w->r0 ? scale : 1);
+    S->scale0 = S->scale;
+    /* One mass for every disc, the lightest's: the statics do not depend on it, and the larger
+     * discs then move as fast as the smallest instead of twice as slow (a ratio of 2 in radius). */
+    double rmin = HUGE_VAL, c2 = 0, kn = fmax(w->kn_gg, fmax(w->box ? w->kn_gw : 0, w->bp ? w->kn_gb : 0));
+    for (int i = 0; i < n; i++) {
+        rmin = fmin(rmin, w->g[i].r), c2 += 4 * w->g[i].r * w->g[i].r;
+        if (w->r0) S->r0max = fmax(S->r0max, w->r0[i]);
+    }
+    /* With friction a contact's tangential spring acting on both discs' rims and centres is stiffer
+     * than its normal one on the centres alone (its largest eigenvalue 4 kt against 2 kn), the
+     * rolling spring kr / r^2 on the rims: the step is bounded by the stiffest. */
+    for (int q = 0; S->fr && q < 3; q++)
+        kn = fmax(kn, fmax(2 * w->mat[q]->kt, 2 * w->mat[q]->kr / (rmin * rmin)));
+    const double m = PI * rmin * rmin;
+    k->inv_m = 1 / m;
+    /* ln(scale) as the length c ln(scale), c^2 = sum (2 ri)^2: a unit move of it then strains the
+     * contacts about as much as a unit move of a disc its own, so that it shares the discs' mass
+     * and step (its force is -dH/dln(scale) / c). */
+    k->c = sqrt(c2);
+    k->dt_max = DT_MAX * sqrt(m / kn), k->dt_min = DT_MIN_MD / DT_MAX_MD * k->dt_max;
+    /* a skin of half the smallest radius: the growth's steps of 1 % of a radius rebuild the list
+     * every few iterations with less (0.2 rmin: a third more CPU time at 1e4 discs, 0.5 and 1.0
+     * about the same); the pairs apart cost little in the force loop */
+    S->search.skin = 0.5 * rmin;
+    return GB_OK;
+}
+
+/* Half a step back: the descent went past a minimum along v, which is then zeroed (with friction
+ * the move is one as any other for the tangential springs, kept in S->dX). */
+static void step_back(fire_state *S, double *v, size_t len, double dt, int free_scale, double c)
+{
+    const gb_fire_world *w = S->w;
+    int n = w->n;
+#pragma omp parallel for schedule(static) num_threads(S->threads) if (S->par)
+    for (int i = 0; i < n; i++) {
+        w->g[i].x -= 0.5 * dt * v[2 * i], w->g[i].y -= 0.5 * dt * v[2 * i + 1];
+        if (S->fr) {
+            double *d = S->dX + 3 * i;
+            d[0] = -0.5 * dt * v[2 * i], d[1] = -0.5 * dt * v[2 * i + 1], d[2] = -0.5 * dt * S->vw[i];
+            w->g[i].rot += d[2] / w->g[i].r;
+        }
+    }
+    if (free_scale) set_scale(S, S->scale * exp(-0.5 * dt * v[2 * n] / c));
+    memset(v, 0, len * sizeof(double));
+    if (S->fr) memset(S->vw, 0, (size_t)n * sizeof(double));
+    S->vv = 0;
+}
+
+/* One pass over the discs: each velocity v + h F mixed towards the force (keep, mix), the move by
+ * dt, the radii at scale `next`, the drift since the pair list's rebuild and |v|^2 (into S->vv).
+ * back: the step began with half a step back, which S->dX holds. Returns the largest squared
+ * drift. */
+static double move_discs(fire_state *S, double *v, double *f, double dt, double h, double keep, double mix,
+                         double next, int back)
+{
+    const gb_fire_world *w = S->w;
+    const int n = w->n, nb = blocks(n);
+    double drift2 = 0;
+    const double *r0 = w->r0, *fw = S->fw;
+    double *vw = S->vw, *dX = S->dX;
+    gb_grain *g = w->g;
+#pragma omp parallel for schedule(static) num_threads(S->threads) if (S->par) reduction(max : drift2)
+    for (int b = 0; b < nb; b++) {
+        double sv = 0;
+        for (int i = b * BLOCK, e = i + BLOCK < n ? i + BLOCK : n; i < e; i++) {
+            double *u = v + 2 * i, *F = f + 2 * i;
+            u[0] = keep * (u[0] + h * F[0]) + mix * F[0], u[1] = keep * (u[1] + h * F[1]) + mix * F[1];
+            g[i].x += dt * u[0], g[i].y += dt * u[1];
+            if (dX) { /* the rotation, and the move the pairs will be updated with */
+                vw[i] = keep * (vw[i] + h * fw[i]) + mix * fw[i];
+                double *d = dX + 3 * i;
+                if (!back) d[0] = d[1] = d[2] = 0;
+                d[0] += dt * u[0], d[1] += dt * u[1], d[2] += dt * vw[i];
+                g[i].rot += dt * vw[i] / g[i].r;
+                sv += vw[i] * vw[i];
+            }
+            if (r0) g[i].r = next * r0[i];
+            reset_disc(S, f, i); /* the next forces' start (its pass over the discs saved) */
+            double q = gb_pairs_grain_drift2(S->L, &S->world, i);
+            if (q > drift2) drift2 = q;
+            sv += u[0] * u[0] + u[1] * u[1];
+        }
+        S->part[b] = sv;
+    }
+    S->vv = v[2 * n] * v[2 * n];
+    for (int b = 0; b < nb; b++) S->vv += S->part[b];
+    return drift2;
+}
+
+/* The relaxation's end after `it` iterations: its report, and GB_ENOCONV where the goal's
+ * iterations were spent (largest force `worst`, mean stress p). */
+static gb_status fire_end(const fire_state *S, const gb_fire_goal *goal, long it, double worst, double p,
+                          gb_fire_report *rep, gb_error *err)
+{
+    if (rep->capped || it < goal->max_iter) return GB_OK;
+    if (S->w->r0 && goal->free)
+        return gb_fail(err, GB_ENOCONV, "FIRE did not bring the largest force below %g and the mean stress to %g in "
+                                        "%ld iterations (they are %g and %g)", goal->tol, goal->stress,
+                       goal->max_iter, worst, p);
+    return gb_fail(err, GB_ENOCONV, "FIRE did not bring the largest force below %g in %ld iterations (it is %g)",
+                   goal->tol, goal->max_iter, worst);
+}
+
 gb_status gb_fire_relax_scaled(const gb_fire_world *w, const gb_fire_goal *goal, double *scale,
                                gb_fire_report *rep, gb_error *err)
 {
@@ -286,50 +415,13 @@ gb_status gb_fire_relax_scaled(const gb_fire_world *w, const gb_fire_goal *goal,
     memset(rep, 0, sizeof *rep);
     fire_state S;
     memset(&S, 0, sizeof S);
-    S.w = w, S.world = (gb_world){w->g, n, w->box, w->bp};
-    S.fr = w->pairs != NULL, S.L = S.fr ? w->pairs : &S.own;
+    fire_scales k = {0};
+    double *v = NULL, *f = NULL;
+    gb_status st = fire_start(&S, w, w->r0 ? *scale : 1, len, &v, &f, &k, err);
     const long rebuilds0 = S.L->rebuilds;
-    double *v = calloc(len, sizeof(double)), *f = calloc(len, sizeof(double));
-    if (S.fr) {
-        S.fw = calloc((size_t)n + 1, sizeof(double)), S.vw = calloc((size_t)n + 1, sizeof(double));
-        S.dX = calloc(3 * (size_t)n + 1, sizeof(double));
-    }
-    S.threads = w->threads > 1 ? w->threads : 1; /* a world made without it: one */
-    S.search.threads = S.threads;
-    S.par = n >= PARALLEL && S.threads > 1;
-    gb_status st = GB_OK;
-    if (!v || !f || (S.fr && (!S.fw || !S.vw || !S.dX))) {
-        st = gb_fail(err, GB_ENOMEM, "out of memory for the relaxation of %d grains", n);
-        goto done;
-    }
-    set_scale(&S, w->r0 ? *scale : 1);
-    S.scale0 = S.scale;
-    /* One mass for every disc, the lightest's: the statics do not depend on it, and the larger
-     * discs then move as fast as the smallest instead of twice as slow (a ratio of 2 in radius). */
-    double rmin = HUGE_VAL, c2 = 0, kn = fmax(w->kn_gg, fmax(w->box ? w->kn_gw : 0, w->bp ? w->kn_gb : 0));
-    for (int i = 0; i < n; i++) {
-        rmin = fmin(rmin, w->g[i].r), c2 += 4 * w->g[i].r * w->g[i].r;
-        if (w->r0) S.r0max = fmax(S.r0max, w->r0[i]);
-    }
-    /* With friction a contact's tangential spring acting on both discs' rims and centres is stiffer
-     * than its normal one on the centres alone (its largest eigenvalue 4 kt against 2 kn), the
-     * rolling spring kr / r^2 on the rims: the step is bounded by the stiffest. */
-    for (int k = 0; S.fr && k < 3; k++)
-        kn = fmax(kn, fmax(2 * w->mat[k]->kt, 2 * w->mat[k]->kr / (rmin * rmin)));
-    const double m = PI * rmin * rmin, inv_m = 1 / m;
-    /* ln(scale) as the length c ln(scale), c^2 = sum (2 ri)^2: a unit move of it then strains the
-     * contacts about as much as a unit move of a disc its own, so that it shares the discs' mass
-     * and step (its force is -dH/dln(scale) / c). */
-    const double c = sqrt(c2);
-    /* a skin of half the smallest radius: the growth's steps of 1 % of a radius rebuild the list
-     * every few iterations with less (0.2 rmin: a third more CPU time at 1e4 discs, 0.5 and 1.0
-     * about the same); the pairs apart cost little in the force loop */
-    S.search.skin = 0.5 * rmin;
-    if ((st = rebuild(&S, err))) goto done;
-
-    const double dt_max = DT_MAX * sqrt(m / kn), dt_min = DT_MIN_MD / DT_MAX_MD * dt_max;
-    const double target_ln = ramp ? log(goal->scale_to) : 0;
-    double P = 0, dt = dt_max / DT_MAX_MD, alpha = A_START, worst = forces(&S, f, v, &P, rep, 0, 1), p = 0;
+    if (st || (st = rebuild(&S, err))) goto done;
+    const double target_ln = ramp ? log(goal->scale_to) : 0, c = k.c;
+    double P = 0, dt = k.dt_max / DT_MAX_MD, alpha = A_START, worst = forces(&S, f, v, &P, rep, 0, 1), p = 0;
     long since_neg = 0, it = 0;
     for (;; it++) {
         int back = 0; /* with friction: this step began with half a step back, which dX holds */
@@ -349,34 +441,21 @@ gb_status gb_fire_relax_scaled(const gb_fire_world *w, const gb_fire_goal *goal,
             break;
         }
         if (P > 0) {
-            if (++since_neg > N_DELAY) dt = fmin(dt * F_INC, dt_max), alpha *= F_A;
+            if (++since_neg > N_DELAY) dt = fmin(dt * F_INC, k.dt_max), alpha *= F_A;
         } else {
             since_neg = 0;
             if (it >= N_DELAY) {
-                if (dt * F_DEC >= dt_min) dt *= F_DEC;
+                if (dt * F_DEC >= k.dt_min) dt *= F_DEC;
                 alpha = A_START;
             }
-            /* half a step back: the descent went past a minimum along v */
-#pragma omp parallel for schedule(static) num_threads(S.threads) if (S.par)
-            for (int i = 0; i < n; i++) {
-                w->g[i].x -= 0.5 * dt * v[2 * i], w->g[i].y -= 0.5 * dt * v[2 * i + 1];
-                if (S.fr) { /* a move as any other for the tangential springs */
-                    double *d = S.dX + 3 * i;
-                    d[0] = -0.5 * dt * v[2 * i], d[1] = -0.5 * dt * v[2 * i + 1], d[2] = -0.5 * dt * S.vw[i];
-                    w->g[i].rot += d[2] / w->g[i].r;
-                }
-            }
+            step_back(&S, v, len, dt, free_scale, c);
             back = S.fr;
-            if (free_scale) set_scale(&S, S.scale * exp(-0.5 * dt * v[2 * n] / c));
-            memset(v, 0, len * sizeof(double));
-            if (S.fr) memset(S.vw, 0, (size_t)n * sizeof(double));
-            S.vv = 0;
         }
         /* semi-implicit Euler: the velocity first, v + h F, mixed towards the force while descending
          * (in the pass over the discs below, with their move); the mix needs |v + h F|^2, which is
          * |v|^2 + 2 h F.v + h^2 |F|^2 from the sums the last step and the force pass took (one pass
          * over the discs fewer) */
-        const double h = dt * inv_m, ff = S.ff + f[2 * n] * f[2 * n];
+        const double h = dt * k.inv_m, ff = S.ff + f[2 * n] * f[2 * n];
         const double vv = fmax(0, S.vv + 2 * h * (P > 0 ? P : 0) + h * h * ff);
         const double keep = P > 0 && ff > 0 ? 1 - alpha : 1, mix = P > 0 && ff > 0 ? alpha * sqrt(vv / ff) : 0;
         double next = S.scale;
@@ -391,39 +470,8 @@ gb_status gb_fire_relax_scaled(const gb_fire_world *w, const gb_fire_goal *goal,
             double step = target_ln - log(S.scale), grow = step > 0 ? goal->ramp : -goal->ramp;
             next = fabs(step) <= goal->ramp ? goal->scale_to : S.scale * exp(grow);
         }
-        /* one pass over the discs: the velocity, the move, the radii, the drift since the pair
-         * list's rebuild, |v|^2 */
         S.scale = next;
-        double drift2 = 0;
-        const double *r0 = w->r0, *fw = S.fw;
-        double *vw = S.vw, *dX = S.dX;
-        gb_grain *g = w->g;
-        const int nb = blocks(n);
-#pragma omp parallel for schedule(static) num_threads(S.threads) if (S.par) reduction(max : drift2)
-        for (int b = 0; b < nb; b++) {
-            double sv = 0;
-            for (int i = b * BLOCK, e = i + BLOCK < n ? i + BLOCK : n; i < e; i++) {
-                double *u = v + 2 * i, *F = f + 2 * i;
-                u[0] = keep * (u[0] + h * F[0]) + mix * F[0], u[1] = keep * (u[1] + h * F[1]) + mix * F[1];
-                g[i].x += dt * u[0], g[i].y += dt * u[1];
-                if (dX) { /* the rotation, and the move the pairs will be updated with */
-                    vw[i] = keep * (vw[i] + h * fw[i]) + mix * fw[i];
-                    double *d = dX + 3 * i;
-                    if (!back) d[0] = d[1] = d[2] = 0;
-                    d[0] += dt * u[0], d[1] += dt * u[1], d[2] += dt * vw[i];
-                    g[i].rot += dt * vw[i] / g[i].r;
-                    sv += vw[i] * vw[i];
-                }
-                if (r0) g[i].r = next * r0[i];
-                reset_disc(&S, f, i); /* the next forces' start (its pass over the discs saved) */
-                double q = gb_pairs_grain_drift2(S.L, &S.world, i);
-                if (q > drift2) drift2 = q;
-                sv += u[0] * u[0] + u[1] * u[1];
-            }
-            S.part[b] = sv;
-        }
-        S.vv = v[2 * n] * v[2 * n];
-        for (int b = 0; b < nb; b++) S.vv += S.part[b];
+        double drift2 = move_discs(&S, v, f, dt, h, keep, mix, next, back);
         if ((st = refresh(&S, drift2, err))) goto done;
         worst = forces(&S, f, v, &P, rep, 0, 0);
     }
@@ -434,15 +482,7 @@ gb_status gb_fire_relax_scaled(const gb_fire_world *w, const gb_fire_goal *goal,
     rep->max_force = worst;
     if (w->r0) *scale = S.scale;
     if (ramp && goal->stress > 0 && p < goal->stress) rep->capped = 1;
-    if (!rep->capped && it >= goal->max_iter) {
-        if (free_scale)
-            st = gb_fail(err, GB_ENOCONV, "FIRE did not bring the largest force below %g and the mean stress to %g in "
-                                          "%ld iterations (they are %g and %g)", goal->tol, goal->stress,
-                         goal->max_iter, worst, p);
-        else
-            st = gb_fail(err, GB_ENOCONV, "FIRE did not bring the largest force below %g in %ld iterations (it is %g)",
-                         goal->tol, goal->max_iter, worst);
-    }
+    st = fire_end(&S, goal, it, worst, p, rep, err);
 done:
     gb_pair_set_free(&S.own), gb_pair_search_free(&S.search);
     free(S.gg), free(S.other), free(S.gk), free(S.on), free(S.chunk), free(S.part);
