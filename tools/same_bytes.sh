@@ -56,7 +56,8 @@ for c in "${cases[@]}"; do
     [ $side = A ] && [ "${KEEP_A:-0}" = 1 ] && [ -d "$out/A/$c" ] && continue
     start=$(date +%s)
     # (gembem's warnings to OUT/SIDE.CASE.log; in a condition, so a failing case is reported)
-    if ! run_case "$build" "$c" 2> "$out/$side.$c.log"; then
+    # that build's library, also where the build was copied (bin and library in one directory)
+    if ! LD_LIBRARY_PATH=$build/src:$build run_case "$build" "$c" 2> "$out/$side.$c.log"; then
       echo "FAIL  $c: $side's run failed: $(tail -c 400 "$out/$side.$c.log")"; differ=1; continue 2
     fi
     rm -rf "${out:?}/$side/$c"; mkdir -p "$out/$side"; mv "$out/run/$c" "$out/$side/$c"

@@ -295,49 +295,32 @@ gb_status gb_pairs_scan_overlaps(gb_pair_search *S, const gb_world *w, gb_pair_v
     return st;
 }
 
-gb_status gb_pairs_rebuild(gb_pair_set *P, gb_pair_search *S, const gb_world *w, gb_error *err)
+/* The first pass: each grain's sorted candidates into its thread's buffer (T threads), their
+ * counts S->count turned into offsets (gb_pairs_offsets: S->count[n] pairs in all). */
+static gb_status count_candidates(gb_pair_search *S, const gb_grid *G, const gb_world *w, int T, gb_error *err)
 {
-    const gb_grain *g = w->g;
-    const gb_box *box = w->box;
-    const gb_particles *bp = w->bp;
-    int n = w->n, np = bp ? bp->n : 0;
-    gb_grid G;
-    gb_status st = cells_fill(S, w, &G, err);
-    if (st) return st;
-    if (!P->x0 && !(P->x0 = malloc((size_t)(2 * (n > 0 ? n : 1)) * sizeof(double))))
-        return gb_fail(err, GB_ENOMEM, "out of memory for the cell list");
-
-    /* The candidates in two passes over the grains, each thread on one contiguous range of them
-     * (the same in both): their sorted candidates into the thread's buffer, then, after the
-     * offsets, the pairs merged with the old list into theirs. The list is the same whatever the
-     * number of threads: the thread count only splits the work. */
-    int T = S->threads > 1 && n >= GB_PAIRS_PARALLEL ? S->threads : 1;
-    if (T > GB_PAIRS_MAX_THREADS) T = GB_PAIRS_MAX_THREADS;
-    if ((st = grow((void **)&S->count, &S->count_cap, n + 1, sizeof(int), err)) ||
-        (st = grow((void **)&S->old_start, &S->old_start_cap, n + 1, sizeof(int), err)))
-        return st;
-    int failed = 0;
+    int n = w->n, failed = 0;
 #pragma omp parallel num_threads(T) if (T > 1) reduction(| : failed)
     {
         int t = T > 1 ? gb_pairs_thread() : 0, i0 = (int)((long)n * t / T), i1 = (int)((long)n * (t + 1) / T);
         long long at = 0;
         for (int i = i0; i < i1 && !failed; i++) {
-            int nc = candidates(S, &G, w, i, t, at);
+            int nc = candidates(S, G, w, i, t, at);
             if (nc < 0) failed |= -nc;
             else S->count[i] = nc, at += nc;
         }
     }
     if (failed & TOO_MANY) return too_many(n, 0, err);
     if (failed) return gb_fail(err, GB_ENOMEM, "out of memory for the candidate pairs");
-    if ((st = gb_pairs_offsets(S->count, n, err))) return st;
-    int m = S->count[n];
-    for (int k = 0, i = 0; i <= n; i++) { /* the old list's first pair of each grain */
-        while (k < P->n && P->p[k].i < i) k++;
-        S->old_start[i] = k;
-    }
-    /* A list the machine cannot hold (the grains admitted, but far more pairs than their count) is
-     * refused with its size rather than left to the kernel's out-of-memory killer; checked only
-     * when the list grows by much, as reading the kernel's count costs a file. */
+    return gb_pairs_offsets(S->count, n, err);
+}
+
+/* A list the machine cannot hold (the grains admitted, but far more pairs than their count) is
+ * refused with its size rather than left to the kernel's out-of-memory killer; checked only when
+ * the list grows by much, as reading the kernel's count costs a file. Then room for m pairs in
+ * S->tmp. */
+static gb_status room_for_pairs(gb_pair_search *S, int n, int m, gb_error *err)
+{
     double grows = ((double)m - S->tmp_cap) * sizeof(gb_pair);
     if (grows > 64e6) {
         double have = gb_memory_available();
@@ -346,7 +329,14 @@ gb_status gb_pairs_rebuild(gb_pair_set *P, gb_pair_search *S, const gb_world *w,
                            "than the %.3g GB this machine has available; use fewer grains, or radii less spread "
                            "(the pairs are searched within the largest grain's reach)", n, m, grows / 1e9, have / 1e9);
     }
-    if ((st = grow((void **)&S->tmp, &S->tmp_cap, m, sizeof(gb_pair), err))) return st;
+    return grow((void **)&S->tmp, &S->tmp_cap, m, sizeof(gb_pair), err);
+}
+
+/* The second pass: the candidates merged with the old list P (both sorted by (i, j)) into S->tmp,
+ * on the same threads' ranges: a pair kept keeps its contact, a new one starts apart. */
+static void merge_pairs(const gb_pair_set *P, gb_pair_search *S, const gb_world *w, int T)
+{
+    int n = w->n;
 #pragma omp parallel num_threads(T) if (T > 1)
     {
         int t = T > 1 ? gb_pairs_thread() : 0, i0 = (int)((long)n * t / T), i1 = (int)((long)n * (t + 1) / T);
@@ -355,7 +345,6 @@ gb_status gb_pairs_rebuild(gb_pair_set *P, gb_pair_search *S, const gb_world *w,
             int old = S->old_start[i], end = S->old_start[i + 1];
             for (int k = S->count[i]; k < S->count[i + 1]; k++) {
                 int j = *c++;
-                /* Merge: the old list is sorted by (i, j) as well. */
                 while (old < end && P->p[old].j < j) old++;
                 gb_pair *q = &S->tmp[k];
                 if (old < end && P->p[old].j == j) {
@@ -370,7 +359,13 @@ gb_status gb_pairs_rebuild(gb_pair_set *P, gb_pair_search *S, const gb_world *w,
             }
         }
     }
-    /* Swap the lists, the new one at least as long as the old (a state saved before fits in it) */
+}
+
+/* The new list (S->tmp, m pairs) becomes P's, at least as long as the old (a state saved before
+ * fits in it), which becomes the next rebuild's buffer; the positions it was built at. */
+static gb_status swap_lists(gb_pair_set *P, gb_pair_search *S, const gb_world *w, int m, gb_error *err)
+{
+    int n = w->n, np = w->bp ? w->bp->n : 0;
     if (S->tmp_cap < P->cap) {
         gb_pair *q = realloc(S->tmp, (size_t)P->cap * sizeof *q);
         if (!q) return gb_fail(err, GB_ENOMEM, "out of memory for %d contact pairs", P->cap);
@@ -384,13 +379,42 @@ gb_status gb_pairs_rebuild(gb_pair_set *P, gb_pair_search *S, const gb_world *w,
     S->tmp = p;
     S->tmp_cap = cap;
     for (int i = 0; i < n; i++) {
-        P->x0[2 * i] = g[i].x;
-        P->x0[2 * i + 1] = g[i].y;
+        P->x0[2 * i] = w->g[i].x;
+        P->x0[2 * i + 1] = w->g[i].y;
     }
     if (np > 0 && !P->px0 && !(P->px0 = malloc(2 * (size_t)np * sizeof(double))))
         return gb_fail(err, GB_ENOMEM, "out of memory for the cell list");
-    for (int e = 0; e < np; e++) P->px0[2 * e] = bp->x[e], P->px0[2 * e + 1] = bp->y[e];
-    if (box) P->box0 = *box;
+    for (int e = 0; e < np; e++) P->px0[2 * e] = w->bp->x[e], P->px0[2 * e + 1] = w->bp->y[e];
+    if (w->box) P->box0 = *w->box;
+    return GB_OK;
+}
+
+gb_status gb_pairs_rebuild(gb_pair_set *P, gb_pair_search *S, const gb_world *w, gb_error *err)
+{
+    int n = w->n;
+    gb_grid G;
+    gb_status st = cells_fill(S, w, &G, err);
+    if (st) return st;
+    if (!P->x0 && !(P->x0 = malloc((size_t)(2 * (n > 0 ? n : 1)) * sizeof(double))))
+        return gb_fail(err, GB_ENOMEM, "out of memory for the cell list");
+    /* The candidates in two passes over the grains, each thread on one contiguous range of them
+     * (the same in both): their sorted candidates into the thread's buffer, then, after the
+     * offsets, the pairs merged with the old list into theirs. The list is the same whatever the
+     * number of threads: the thread count only splits the work. */
+    int T = S->threads > 1 && n >= GB_PAIRS_PARALLEL ? S->threads : 1;
+    if (T > GB_PAIRS_MAX_THREADS) T = GB_PAIRS_MAX_THREADS;
+    if ((st = grow((void **)&S->count, &S->count_cap, n + 1, sizeof(int), err)) ||
+        (st = grow((void **)&S->old_start, &S->old_start_cap, n + 1, sizeof(int), err)) ||
+        (st = count_candidates(S, &G, w, T, err)))
+        return st;
+    int m = S->count[n];
+    for (int k = 0, i = 0; i <= n; i++) { /* the old list's first pair of each grain */
+        while (k < P->n && P->p[k].i < i) k++;
+        S->old_start[i] = k;
+    }
+    if ((st = room_for_pairs(S, n, m, err))) return st;
+    merge_pairs(P, S, w, T);
+    if ((st = swap_lists(P, S, w, m, err))) return st;
     P->rebuilds++;
     P->generation = ++S->generations;
     return GB_OK;

@@ -108,25 +108,13 @@ static double memory_need(const gb_scene *scene)
     return per_grain * scene->n_grains;
 }
 
-gb_status gb_gem_problem_create(const gb_scene *scene, gb_sim **out, gb_error *err)
+/* The problem's arrays for the scene's grains (the state's, its order, the body forces, the
+ * scratch). */
+static gb_status alloc_problem(gb_sim *sim, int n, gb_error *err)
 {
-    *out = NULL;
-    double need = memory_need(scene), have = gb_memory_available();
-    if (have > 0 && need > have)
-        return gb_fail(err, GB_EINPUT,
-                       "%d grains need at least %.3g GB with the %s solver, more than the %.3g GB of memory "
-                       "this machine has available; use fewer grains", scene->n_grains, need / 1e9,
-                       scene->solver.method == GB_METHOD_GLOBAL ? "global" : "reference", have / 1e9);
-    gb_sim *sim = calloc(1, sizeof *sim);
-    if (!sim) return gb_fail(err, GB_ENOMEM, "out of memory");
-    int n = scene->n_grains;
     size_t nn = (size_t)(n > 0 ? n : 1);
-    sim->scene = scene;
     gb_status st = gb_state_alloc(&sim->state, n, 0, 0, 0, err);
-    if (st) {
-        free(sim);
-        return st;
-    }
+    if (st) return st;
     sim->grain_order = malloc(nn * sizeof(int)), sim->grain_place = malloc(nn * sizeof(int));
     sim->body = malloc(nn * 2 * sizeof(double));
     sim->scratch.F = calloc(nn * 3, sizeof(double));
@@ -134,14 +122,20 @@ gb_status gb_gem_problem_create(const gb_scene *scene, gb_sim **out, gb_error *e
     sim->scratch.dX = calloc(nn * 3, sizeof(double));
     sim->scratch.nc = calloc(nn, sizeof(int));
     sim->scratch.one = calloc(nn * GB_ONE, sizeof(double));
-    if (!sim->grain_order || !sim->grain_place || !sim->body || !sim->scratch.F || !sim->scratch.S || !sim->scratch.dX || !sim->scratch.nc || !sim->scratch.one) {
-        gb_gem_problem_free(sim);
+    if (!sim->grain_order || !sim->grain_place || !sim->body || !sim->scratch.F || !sim->scratch.S ||
+        !sim->scratch.dX || !sim->scratch.nc || !sim->scratch.one)
         return gb_fail(err, GB_ENOMEM, "out of memory for %d grains", n);
-    }
-    if ((st = gb_grains_cell_order(scene->grains, n, sim->grain_order, err))) {
-        gb_gem_problem_free(sim);
-        return st;
-    }
+    return GB_OK;
+}
+
+/* The scene's grains into the state by cell (gb_grains_cell_order), their body forces, the box, the
+ * friction and the pair search. */
+static gb_status place_grains(gb_sim *sim, gb_error *err)
+{
+    const gb_scene *scene = sim->scene;
+    int n = scene->n_grains;
+    gb_status st = gb_grains_cell_order(scene->grains, n, sim->grain_order, err);
+    if (st) return st;
     for (int k = 0; k < n; k++) {
         sim->state.g[k] = scene->grains[sim->grain_order[k]];
         sim->grain_place[sim->grain_order[k]] = k;
@@ -166,13 +160,13 @@ gb_status gb_gem_problem_create(const gb_scene *scene, gb_sim **out, gb_error *e
     sim->world.n = n;
     sim->world.box = &sim->state.box;
     sim->world.bp = NULL;
-    st = scene->host.present ? add_host(sim, err) : GB_OK;
-    if (!st) st = gb_pairs_rebuild(&sim->state.pairs, &sim->search, &sim->world, err);
-    if (st) {
-        gb_gem_problem_free(sim);
-        return st;
-    }
-    /* Initial contacts: pn from the overlap, pt from the scene. */
+    return GB_OK;
+}
+
+/* The initial contacts: pn from the overlap, pt and mr from the scene's (a restart's). */
+static gb_status initial_contacts(gb_sim *sim, gb_error *err)
+{
+    const gb_scene *scene = sim->scene;
     for (int k = 0; k < sim->state.pairs.n; k++) {
         gb_pair *p = &sim->state.pairs.p[k];
         gb_pair_geometry(p, &sim->world);
@@ -188,7 +182,6 @@ gb_status gb_gem_problem_create(const gb_scene *scene, gb_sim **out, gb_error *e
         }
         gb_pair *p = find_pair(&sim->state.pairs, i, j);
         if (!p || !(p->d > 0)) {
-            gb_gem_problem_free(sim);
             if (GB_IS_PARTICLE(ci->j))
                 return gb_fail(err, GB_EINPUT, "initial contact %d (grain %d, boundary particle p%d) does not overlap",
                                c, ci->i, GB_PARTICLE_OF(ci->j));
@@ -199,6 +192,30 @@ gb_status gb_gem_problem_create(const gb_scene *scene, gb_sim **out, gb_error *e
         p->pt = ci->pt;
         p->mr = swap ? -ci->mr : ci->mr;
         if (!(gb_sim_material(sim, p->j)->kr > 0)) p->mr = 0; /* rolling switched off: no moment */
+    }
+    return GB_OK;
+}
+
+gb_status gb_gem_problem_create(const gb_scene *scene, gb_sim **out, gb_error *err)
+{
+    *out = NULL;
+    double need = memory_need(scene), have = gb_memory_available();
+    if (have > 0 && need > have)
+        return gb_fail(err, GB_EINPUT,
+                       "%d grains need at least %.3g GB with the %s solver, more than the %.3g GB of memory "
+                       "this machine has available; use fewer grains", scene->n_grains, need / 1e9,
+                       scene->solver.method == GB_METHOD_GLOBAL ? "global" : "reference", have / 1e9);
+    gb_sim *sim = calloc(1, sizeof *sim);
+    if (!sim) return gb_fail(err, GB_ENOMEM, "out of memory");
+    sim->scene = scene;
+    gb_status st = alloc_problem(sim, scene->n_grains, err);
+    if (!st) st = place_grains(sim, err);
+    if (!st && scene->host.present) st = add_host(sim, err);
+    if (!st) st = gb_pairs_rebuild(&sim->state.pairs, &sim->search, &sim->world, err);
+    if (!st) st = initial_contacts(sim, err);
+    if (st) {
+        gb_gem_problem_free(sim);
+        return st;
     }
     /* the accuracy of a relaxation run outside gb_sim_run (benchmarks, tests): as for a first step */
     gb_sim_resolve_accuracy(sim, sim->state.pairs.p, sim->state.pairs.n, 0);

@@ -115,6 +115,94 @@ static affine_move affine_walls(gb_sim *sim, const gb_wall_control *wc, double c
     return a;
 }
 
+/* A step's sums over the grains and boundary particles (of its DOFs, np particles): the merit
+ * (gb_gem_merit, gb_gem_particle_merit, from the walls' residual), the second half of the last
+ * move's fixing work (the trapezoid of gb_gem_balance), the power of the forces (minus the fixing
+ * forces) on the velocities, |v|^2 and |a|^2, and whether every grain and particle is balanced. */
+typedef struct {
+    double merit, work, power, vv, aa;
+    int balanced;
+} step_sums;
+
+/* The grains' moves at alpha = 1 (K 9: their accelerations), then one pass over the grains in blocks
+ * on solver.threads threads (GB_SMOOTHER_BLOCK; the step's cost is its pass over the contacts, and
+ * these), then the particles': the step's sums. */
+static step_sums force_pass(gb_solver *s, gb_sim *sim, double wall_residual, int np)
+{
+    int n = sim->state.n, threads = s->set->threads, par = threads > 1 && n >= GB_PARALLEL_GRAINS;
+    int nb = gb_smoother_blocks(n);
+    double *v = s->velocity, *acc = s->acceleration, inv_alpha = 1 / s->set->alpha;
+    double a2 = sim->accuracy * sim->accuracy;
+    step_sums t = {wall_residual * wall_residual, 0, 0, 0, 0, 1};
+#pragma omp parallel for schedule(static) num_threads(threads) if (par)
+    for (int i = 0; i < n; i++) gb_gem_grain_move(sim, i, &acc[3 * i]);
+#pragma omp parallel for schedule(static) num_threads(threads) if (par)
+    for (int b = 0; b < nb; b++) {
+        /* block 0 starts from the walls' merit: one block sums as the grains' order would */
+        double m = b ? 0 : t.merit, wk = 0, pw = 0, v2 = 0, a2s = 0, out = 0;
+        for (int i = b * GB_SMOOTHER_BLOCK, e = gb_smoother_block_end(b, n); i < e; i++) {
+            const double *F = &sim->scratch.F[3 * i];
+            if (s->in_system[i]) m += F[0] * F[0], m += F[1] * F[1], m += F[2] * F[2];
+            if (!(gb_gem_force2(sim, i) <= a2)) out = 1;
+            for (int q = 3 * i; q < 3 * i + 3; q++) {
+                wk += sim->scratch.F[q] * sim->scratch.dX[q];
+                acc[q] *= inv_alpha;
+                pw -= sim->scratch.F[q] * v[q];
+                v2 += v[q] * v[q], a2s += acc[q] * acc[q];
+            }
+        }
+        double *sum = &s->block_sums[GB_SMOOTHER_SUMS * b];
+        sum[0] = m, sum[1] = wk, sum[2] = pw, sum[3] = v2, sum[4] = a2s, sum[5] = out;
+    }
+    for (int b = 0; b < nb; b++) {
+        const double *sum = &s->block_sums[GB_SMOOTHER_SUMS * b];
+        t.merit = b ? t.merit + sum[0] : sum[0];
+        t.work += sum[1], t.power += sum[2], t.vv += sum[3], t.aa += sum[4];
+        if (sum[5] != 0) t.balanced = 0;
+    }
+    for (int e = 0; e < np; e++) {
+        const double *F = &sim->scratch.bp_F[2 * e];
+        t.balanced &= F[0] * F[0] + F[1] * F[1] <= a2;
+        particle_move(sim, e, &acc[3 * n + 2 * e]);
+        for (int q = 3 * n + 2 * e, k = 0; k < 2; q++, k++) {
+            t.power -= F[k] * v[q];
+            t.vv += v[q] * v[q], t.aa += acc[q] * acc[q];
+        }
+    }
+    t.merit = gb_gem_particle_merit(sim, t.merit);
+    return t;
+}
+
+/* Semi-implicit Euler: the velocities by dt times the accelerations, then the moves (each capped at
+ * solver.max_move of its radius) with the walls' affine strain aff, into sim->scratch.dX and
+ * sim->bp.dx; returns the fixing forces' work on the grains' moves, summed by blocks as
+ * force_pass's. */
+static double move_pass(gb_solver *s, gb_sim *sim, double dt, const affine_move *aff, int np)
+{
+    int n = sim->state.n, threads = s->set->threads, par = threads > 1 && n >= GB_PARALLEL_GRAINS;
+    int nb = gb_smoother_blocks(n);
+    double *v = s->velocity, *acc = s->acceleration, max_move = s->set->max_move, work = 0;
+#pragma omp parallel for schedule(static) num_threads(threads) if (par)
+    for (int b = 0; b < nb; b++) {
+        double wk = 0;
+        for (int i = b * GB_SMOOTHER_BLOCK, e = gb_smoother_block_end(b, n); i < e; i++) {
+            double *vi = &v[3 * i], *d = &sim->scratch.dX[3 * i];
+            for (int k = 0; k < 3; k++) vi[k] += dt * acc[3 * i + k];
+            advance(vi, d, 3, dt, max_move * sim->state.g[i].r);
+            d[0] += aff->ax * (sim->state.g[i].x - aff->xc), d[1] += aff->ay * (sim->state.g[i].y - aff->yc);
+            for (int k = 0; k < 3; k++) wk += sim->scratch.F[3 * i + k] * d[k];
+        }
+        s->block_sums[GB_SMOOTHER_SUMS * b] = wk;
+    }
+    for (int b = 0; b < nb; b++) work += s->block_sums[GB_SMOOTHER_SUMS * b];
+    for (int e = 0; e < np; e++) {
+        double *vp = &v[3 * n + 2 * e];
+        for (int k = 0; k < 2; k++) vp[k] += dt * acc[3 * n + 2 * e + k];
+        advance(vp, &sim->bp.dx[2 * e], 2, dt, max_move * sim->bp.r[e]);
+    }
+    return work;
+}
+
 gb_status gb_solver_inertial(gb_solver *s, gb_sim *sim, const gb_wall_control *wc, double target, int max_steps,
                              double stall_check, int *stalled, gb_error *err)
 {
@@ -122,85 +210,40 @@ gb_status gb_solver_inertial(gb_solver *s, gb_sim *sim, const gb_wall_control *w
     double check_merit = -1, next_check = stall_check;
     /* The DOFs: grains' (3 each), then the boundary particles' (2 each) unless the host is rigid. */
     int n = sim->state.n, np = sim->host && !sim->scene->host.rigid ? sim->bp.n : 0, dofs = 3 * n + 2 * np;
-    double *v = s->velocity, *acc = s->acceleration, inv_alpha = 1 / s->set->alpha;
+    double *v = s->velocity, *acc = s->acceleration;
     memset(v, 0, (size_t)dofs * sizeof(double));
     memset(sim->scratch.dX, 0, 3 * (size_t)n * sizeof(double));
     if (sim->bp.n) memset(sim->bp.dx, 0, 2 * (size_t)sim->bp.n * sizeof(double));
     double dt = DT_START, mixing = ALPHA_START;
-    int since_uphill = 0;
+    int since_uphill = 0, threads = s->set->threads, par = threads > 1 && n >= GB_PARALLEL_GRAINS, step = 0;
     gb_status st = GB_OK;
-    double a2 = sim->accuracy * sim->accuracy, max_move = s->set->max_move;
-    int threads = s->set->threads, par = threads > 1 && n >= GB_PARALLEL_GRAINS, nb = gb_smoother_blocks(n);
-    int step = 0;
     /* the affine walls' largest move: max_move mean radii (the radii do not change here) */
     double r_sum = 0;
     for (int i = 0; i < n; i++) r_sum += sim->state.g[i].r;
-    double wall_cap = max_move * (n ? r_sum / n : 0);
+    double wall_cap = s->set->max_move * (n ? r_sum / n : 0);
     for (; step < max_steps; step++) {
         /* servo walls follow the grains at every step (K section 2.6): by their own stiffness,
          * then (stress or mean-stress control) with the whole packing */
         double wall_residual = gb_gem_wall_moves(sim, wc);
         affine_move aff = affine_walls(sim, wc, wall_cap);
-        /* The grains' moves, then one pass over the grains in blocks on solver.threads threads
-         * (GB_SMOOTHER_BLOCK; the step's cost is its pass over the contacts, and these): the
-         * merit and the largest force (gb_gem_merit, gb_gem_largest_grain_force2), the second
-         * half of the last move's fixing work (the trapezoid of gb_gem_balance), and the power
-         * of the forces (minus the fixing forces) on the velocities. */
-        double merit = wall_residual * wall_residual, work = 0, power = 0, vv = 0, aa = 0;
-        int balanced = 1;
-#pragma omp parallel for schedule(static) num_threads(threads) if (par)
-        for (int i = 0; i < n; i++) gb_gem_grain_move(sim, i, &acc[3 * i]);
-#pragma omp parallel for schedule(static) num_threads(threads) if (par)
-        for (int b = 0; b < nb; b++) {
-            /* block 0 starts from the walls' merit: one block sums as the grains' order would */
-            double m = b ? 0 : merit, wk = 0, pw = 0, v2 = 0, a2s = 0, out = 0;
-            for (int i = b * GB_SMOOTHER_BLOCK, e = gb_smoother_block_end(b, n); i < e; i++) {
-                const double *F = &sim->scratch.F[3 * i];
-                if (s->in_system[i]) m += F[0] * F[0], m += F[1] * F[1], m += F[2] * F[2];
-                if (!(gb_gem_force2(sim, i) <= a2)) out = 1;
-                for (int q = 3 * i; q < 3 * i + 3; q++) {
-                    wk += sim->scratch.F[q] * sim->scratch.dX[q];
-                    acc[q] *= inv_alpha;
-                    pw -= sim->scratch.F[q] * v[q];
-                    v2 += v[q] * v[q], a2s += acc[q] * acc[q];
-                }
-            }
-            double *sum = &s->block_sums[GB_SMOOTHER_SUMS * b];
-            sum[0] = m, sum[1] = wk, sum[2] = pw, sum[3] = v2, sum[4] = a2s, sum[5] = out;
-        }
-        for (int b = 0; b < nb; b++) {
-            const double *sum = &s->block_sums[GB_SMOOTHER_SUMS * b];
-            merit = b ? merit + sum[0] : sum[0];
-            work += sum[1], power += sum[2], vv += sum[3], aa += sum[4];
-            if (sum[5] != 0) balanced = 0;
-        }
-        sim->state.acc.relaxation -= 0.5 * work;
-        for (int e = 0; e < np; e++) {
-            const double *F = &sim->scratch.bp_F[2 * e];
-            balanced &= F[0] * F[0] + F[1] * F[1] <= a2;
-            particle_move(sim, e, &acc[3 * n + 2 * e]);
-            for (int q = 3 * n + 2 * e, k = 0; k < 2; q++, k++) {
-                power -= F[k] * v[q];
-                vv += v[q] * v[q], aa += acc[q] * acc[q];
-            }
-        }
-        merit = gb_gem_particle_merit(sim, merit);
-        if (merit <= target) break;
-        if (balanced && wall_residual <= sim->accuracy) break;
+        step_sums t = force_pass(s, sim, wall_residual, np);
+        sim->state.acc.relaxation -= 0.5 * t.work;
+        if (t.merit <= target) break;
+        if (t.balanced && wall_residual <= sim->accuracy) break;
         /* Stalled: at the merit's rate of fall over the last stall_check steps, the target is
          * more than another stall_check steps away (FIRE's merit is not monotone: the rate is
          * taken over the whole stretch). */
-        if (check_merit < 0) check_merit = merit;
+        if (check_merit < 0) check_merit = t.merit;
         if (stall_check > 0 && step >= next_check) {
-            double rate = log(check_merit / merit) / stall_check;
-            if (!(rate > 0) || log(merit / target) > rate * stall_check) {
+            double rate = log(check_merit / t.merit) / stall_check;
+            if (!(rate > 0) || log(t.merit / target) > rate * stall_check) {
                 *stalled = 1;
                 break;
             }
-            check_merit = merit, next_check += stall_check;
+            check_merit = t.merit, next_check += stall_check;
         }
-        if (power > 0) { /* downhill: turn the velocity towards the force, and speed up */
-            double keep = 1 - mixing, mix = aa > 0 ? mixing * sqrt(vv / aa) : 0;
+        if (t.power > 0) { /* downhill: turn the velocity towards the force, and speed up */
+            double keep = 1 - mixing, mix = t.aa > 0 ? mixing * sqrt(t.vv / t.aa) : 0;
 #pragma omp parallel for schedule(static) num_threads(threads) if (par)
             for (int q = 0; q < dofs; q++) v[q] = keep * v[q] + mix * acc[q];
             if (++since_uphill > N_MIN) dt = fmin(F_INC * dt, DT_MAX), mixing *= F_ALPHA;
@@ -208,26 +251,7 @@ gb_status gb_solver_inertial(gb_solver *s, gb_sim *sim, const gb_wall_control *w
             since_uphill = 0, dt *= F_DEC, mixing = ALPHA_START;
             memset(v, 0, (size_t)dofs * sizeof(double));
         }
-        /* semi-implicit Euler, the moves' work summed by blocks as above */
-#pragma omp parallel for schedule(static) num_threads(threads) if (par)
-        for (int b = 0; b < nb; b++) {
-            double wk = 0;
-            for (int i = b * GB_SMOOTHER_BLOCK, e = gb_smoother_block_end(b, n); i < e; i++) {
-                double *vi = &v[3 * i], *d = &sim->scratch.dX[3 * i];
-                for (int k = 0; k < 3; k++) vi[k] += dt * acc[3 * i + k];
-                advance(vi, d, 3, dt, max_move * sim->state.g[i].r);
-                d[0] += aff.ax * (sim->state.g[i].x - aff.xc), d[1] += aff.ay * (sim->state.g[i].y - aff.yc);
-                for (int k = 0; k < 3; k++) wk += sim->scratch.F[3 * i + k] * d[k];
-            }
-            s->block_sums[GB_SMOOTHER_SUMS * b] = wk;
-        }
-        work = 0;
-        for (int b = 0; b < nb; b++) work += s->block_sums[GB_SMOOTHER_SUMS * b];
-        for (int e = 0; e < np; e++) {
-            double *vp = &v[3 * n + 2 * e];
-            for (int k = 0; k < 2; k++) vp[k] += dt * acc[3 * n + 2 * e + k];
-            advance(vp, &sim->bp.dx[2 * e], 2, dt, max_move * sim->bp.r[e]);
-        }
+        double work = move_pass(s, sim, dt, &aff, np);
         s->work.sweeps++;
         sim->state.acc.relaxation -= 0.5 * work;
         if ((st = gb_gem_move_and_forces(sim, err))) break;
