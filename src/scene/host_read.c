@@ -84,9 +84,87 @@ static gb_status read_counts(gb_ymap *m, gb_host_def *h, gb_error *err)
     return gb_ymap_close(&counts, err);
 }
 
+/* host.material: the host's elastic constants. */
+static gb_status read_material(gb_ymap *m, gb_host_def *h, gb_error *err)
+{
+    gb_ymap mat;
+    gb_status st;
+    char plane[16] = "strain";
+    if ((st = gb_ymap_map(m, "material", GB_Y_REQUIRED, &mat, err)) ||
+        (st = gb_ymap_number(&mat, "shear_modulus", GB_Y_REQUIRED | GB_Y_POSITIVE, &h->material.shear_modulus, err)) ||
+        (st = gb_ymap_number(&mat, "poisson", GB_Y_REQUIRED, &h->material.poisson, err)) ||
+        (st = gb_ymap_string(&mat, "plane", 0, plane, sizeof plane, err)))
+        return st;
+    if (!(h->material.poisson > -1 && h->material.poisson < 0.5))
+        return gb_yaml_fail(m->doc, mat.node, err, "host.material.poisson: expected a value in (-1, 0.5)");
+    if (!strcmp(plane, "stress")) h->material.plane = GB_BEM_PLANE_STRESS;
+    else if (strcmp(plane, "strain"))
+        return gb_yaml_fail(m->doc, mat.node, err, "host.material.plane: expected 'strain' or 'stress'");
+    return gb_ymap_close(&mat, err);
+}
+
+/* host.boundary (bcs: its map, kept open for check_groups). */
+static gb_status read_boundary(gb_ymap *m, gb_host_def *h, gb_ymap *bcs, gb_error *err)
+{
+    gb_status st;
+    /* boundary: {group: condition, ...} for every group but the cavity; a condition is the BEM
+     * module's (fixed, free, {displacement: [ux, uy]}, {traction: [tx, ty]}, {pressure: p},
+     * {normal_displacement: d}, {ux | tx: a, uy | ty: b}) or `displacement` ({displacement: [0, 0]}) */
+    if ((st = gb_ymap_map(m, "boundary", 0, bcs, err))) return st;
+    void *it = NULL;
+    struct fy_node_pair *p;
+    while (bcs->node && (p = fy_node_mapping_iterate(bcs->node, &it))) {
+        size_t len = 0, vlen = 0;
+        const char *key = fy_node_get_scalar(fy_node_pair_key(p), &len);
+        struct fy_node *vnode = fy_node_pair_value(p);
+        const char *val = fy_node_get_type(vnode) == FYNT_SCALAR ? fy_node_get_scalar(vnode, &vlen) : NULL;
+        if (h->n_bcs == GB_HOST_MAX_BCS || !key || len == 0 || len >= GB_BEM_NAME_MAX)
+            return gb_yaml_fail(m->doc, fy_node_pair_key(p), err, "host.boundary: expected at most %d group names",
+                                GB_HOST_MAX_BCS);
+        gb_bem_bc *bc = &h->bc[h->n_bcs];
+        memcpy(h->bc_group[h->n_bcs], key, len);
+        h->bc_group[h->n_bcs][len] = '\0';
+        char path[GB_BEM_NAME_MAX + 32];
+        snprintf(path, sizeof path, "host.boundary.%s", h->bc_group[h->n_bcs]);
+        int is_map = vnode && fy_node_get_type(vnode) == FYNT_MAPPING;
+        if (val && vlen == 12 && !strncmp(val, "displacement", 12)) {
+            memset(bc, 0, sizeof *bc);
+            bc->kind = GB_BEM_BC_DISPLACEMENT;
+        } else if (!is_map && !(val && ((vlen == 5 && !strncmp(val, "fixed", 5)) || (vlen == 4 && !strncmp(val, "free", 4))))) {
+            /* an empty value has no position of its own: name its key's */
+            return gb_yaml_fail(m->doc, vnode && !(val && vlen == 0) ? vnode : fy_node_pair_key(p), err,
+                                "%s: expected fixed, free, displacement (from zero, moved by stages), {displacement: "
+                                "[ux, uy]}, {traction: [tx, ty]}, {pressure: p}, {normal_displacement: d} or "
+                                "{ux | tx: a, uy | ty: b}", path);
+        } else if ((st = gb_bem_bc_read(m->doc, vnode, path, bc, err))) {
+            return st;
+        }
+        h->n_bcs++;
+        struct fy_node *v;
+        gb_ymap_find(bcs, h->bc_group[h->n_bcs - 1], 0, &v, err); /* mark as read */
+    }
+    return gb_ymap_close(bcs, err);
+}
+
+/* host.unbounded and host.remote_stress. */
+static gb_status read_unbounded(gb_ymap *m, gb_host_def *h, gb_error *err)
+{
+    gb_status st;
+    /* an infinite plane with cavities, loaded at infinity */
+    struct fy_node *rs;
+    if ((st = gb_ymap_bool(m, "unbounded", 0, &h->mesh_opts.unbounded, err)) ||
+        (st = gb_ymap_find(m, "remote_stress", 0, &rs, err)) ||
+        (st = gb_ymap_vector(m, "remote_stress", 0, 3, h->remote_stress, err)))
+        return st;
+    if (rs && !h->mesh_opts.unbounded)
+        return gb_yaml_fail(m->doc, rs, err, "host.remote_stress: applies to an unbounded host only (host.unbounded: "
+                                            "true, a mesh of cavities in an infinite plane)");
+    return GB_OK;
+}
+
 gb_status gb_host_section_read(gb_ymap *top, gb_host_def *h, gb_bem_mesh *mesh, gb_error *err)
 {
-    gb_ymap m, mat, bcs;
+    gb_ymap m, bcs;
     gb_status st;
     char name[512];
     memset(h, 0, sizeof *h);
@@ -100,69 +178,9 @@ gb_status gb_host_section_read(gb_ymap *top, gb_host_def *h, gb_bem_mesh *mesh, 
         (st = gb_ymap_bool(&m, "rigid", 0, &h->rigid, err)))
         return st;
 
-    if ((st = read_counts(&m, h, err))) return st;
-
-    char plane[16] = "strain";
-    if ((st = gb_ymap_map(&m, "material", GB_Y_REQUIRED, &mat, err)) ||
-        (st = gb_ymap_number(&mat, "shear_modulus", GB_Y_REQUIRED | GB_Y_POSITIVE, &h->material.shear_modulus, err)) ||
-        (st = gb_ymap_number(&mat, "poisson", GB_Y_REQUIRED, &h->material.poisson, err)) ||
-        (st = gb_ymap_string(&mat, "plane", 0, plane, sizeof plane, err)))
+    if ((st = read_counts(&m, h, err)) || (st = read_material(&m, h, err)) || (st = read_boundary(&m, h, &bcs, err)) ||
+        (st = read_unbounded(&m, h, err)) || (st = gb_ymap_close(&m, err)))
         return st;
-    if (!(h->material.poisson > -1 && h->material.poisson < 0.5))
-        return gb_yaml_fail(m.doc, mat.node, err, "host.material.poisson: expected a value in (-1, 0.5)");
-    if (!strcmp(plane, "stress")) h->material.plane = GB_BEM_PLANE_STRESS;
-    else if (strcmp(plane, "strain"))
-        return gb_yaml_fail(m.doc, mat.node, err, "host.material.plane: expected 'strain' or 'stress'");
-    if ((st = gb_ymap_close(&mat, err))) return st;
-
-    /* boundary: {group: condition, ...} for every group but the cavity; a condition is the BEM
-     * module's (fixed, free, {displacement: [ux, uy]}, {traction: [tx, ty]}, {pressure: p},
-     * {normal_displacement: d}, {ux | tx: a, uy | ty: b}) or `displacement` ({displacement: [0, 0]}) */
-    if ((st = gb_ymap_map(&m, "boundary", 0, &bcs, err))) return st;
-    void *it = NULL;
-    struct fy_node_pair *p;
-    while (bcs.node && (p = fy_node_mapping_iterate(bcs.node, &it))) {
-        size_t len = 0, vlen = 0;
-        const char *key = fy_node_get_scalar(fy_node_pair_key(p), &len);
-        struct fy_node *vnode = fy_node_pair_value(p);
-        const char *val = fy_node_get_type(vnode) == FYNT_SCALAR ? fy_node_get_scalar(vnode, &vlen) : NULL;
-        if (h->n_bcs == GB_HOST_MAX_BCS || !key || len == 0 || len >= GB_BEM_NAME_MAX)
-            return gb_yaml_fail(m.doc, fy_node_pair_key(p), err, "host.boundary: expected at most %d group names",
-                                GB_HOST_MAX_BCS);
-        gb_bem_bc *bc = &h->bc[h->n_bcs];
-        memcpy(h->bc_group[h->n_bcs], key, len);
-        h->bc_group[h->n_bcs][len] = '\0';
-        char path[GB_BEM_NAME_MAX + 32];
-        snprintf(path, sizeof path, "host.boundary.%s", h->bc_group[h->n_bcs]);
-        int is_map = vnode && fy_node_get_type(vnode) == FYNT_MAPPING;
-        if (val && vlen == 12 && !strncmp(val, "displacement", 12)) {
-            memset(bc, 0, sizeof *bc);
-            bc->kind = GB_BEM_BC_DISPLACEMENT;
-        } else if (!is_map && !(val && ((vlen == 5 && !strncmp(val, "fixed", 5)) || (vlen == 4 && !strncmp(val, "free", 4))))) {
-            /* an empty value has no position of its own: name its key's */
-            return gb_yaml_fail(m.doc, vnode && !(val && vlen == 0) ? vnode : fy_node_pair_key(p), err,
-                                "%s: expected fixed, free, displacement (from zero, moved by stages), {displacement: "
-                                "[ux, uy]}, {traction: [tx, ty]}, {pressure: p}, {normal_displacement: d} or "
-                                "{ux | tx: a, uy | ty: b}", path);
-        } else if ((st = gb_bem_bc_read(m.doc, vnode, path, bc, err))) {
-            return st;
-        }
-        h->n_bcs++;
-        struct fy_node *v;
-        gb_ymap_find(&bcs, h->bc_group[h->n_bcs - 1], 0, &v, err); /* mark as read */
-    }
-    if ((st = gb_ymap_close(&bcs, err))) return st;
-
-    /* an infinite plane with cavities, loaded at infinity */
-    struct fy_node *rs;
-    if ((st = gb_ymap_bool(&m, "unbounded", 0, &h->mesh_opts.unbounded, err)) ||
-        (st = gb_ymap_find(&m, "remote_stress", 0, &rs, err)) ||
-        (st = gb_ymap_vector(&m, "remote_stress", 0, 3, h->remote_stress, err)))
-        return st;
-    if (rs && !h->mesh_opts.unbounded)
-        return gb_yaml_fail(m.doc, rs, err, "host.remote_stress: applies to an unbounded host only (host.unbounded: "
-                                            "true, a mesh of cavities in an infinite plane)");
-    if ((st = gb_ymap_close(&m, err))) return st;
     if ((st = gb_bem_mesh_load(h->mesh, &h->mesh_opts, mesh, err))) {
         if (st != GB_EINPUT) return st;
         char msg[GB_ERROR_MSG_MAX]; /* the mesh's own message, at the scene's host.mesh */

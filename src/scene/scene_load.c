@@ -452,19 +452,12 @@ static gb_status check_springs(const gb_yaml_doc *doc, gb_scene *s, gb_error *er
 
 /* mesh: the host's, as the scene's check meshed it (the caller frees it). read_pack: a pack scene
  * (src/scene/scene_pack.h), else a run scene. */
-static gb_status load(const gb_yaml_doc *doc, gb_scene *s, gb_bem_mesh *mesh, gb_scene_section_fn read_pack,
-                      void *user, gb_error *err)
+/* materials: grain_grain, grain_wall and (optional) grain_boundary. */
+static gb_status read_materials(gb_ymap *top, gb_scene *s, gb_error *err)
 {
-    gb_ymap top;
-    gb_status st;
-    double version = 0;
-    if ((st = gb_ymap_open(doc, fy_document_root(doc->fyd), "", &top, err)) ||
-        (st = gb_ymap_number(&top, "gembem", GB_Y_REQUIRED, &version, err)))
-        return st;
-    if (version != 1) return gb_yaml_fail(doc, top.node, err, "gembem: expected scene format version 1");
-    if ((st = gb_ymap_units(&top, s->length_unit, s->force_unit, sizeof s->length_unit, err))) return st;
     gb_ymap mats;
-    if ((st = gb_ymap_map(&top, "materials", GB_Y_REQUIRED, &mats, err)) ||
+    gb_status st;
+    if ((st = gb_ymap_map(top, "materials", GB_Y_REQUIRED, &mats, err)) ||
         (st = read_material(&mats, "grain_grain", &s->grain_grain, err)) ||
         (st = read_material(&mats, "grain_wall", &s->grain_wall, err)))
         return st;
@@ -475,67 +468,84 @@ static gb_status load(const gb_yaml_doc *doc, gb_scene *s, gb_bem_mesh *mesh, gb
     struct fy_node *gbn;
     if ((st = gb_ymap_find(&mats, "grain_boundary", 0, &gbn, err))) return st;
     if (gbn && (st = read_material(&mats, "grain_boundary", &s->grain_boundary, err))) return st;
-    if ((st = gb_ymap_close(&mats, err))) return st;
+    return gb_ymap_close(&mats, err);
+}
 
-    struct fy_node *state = NULL, *grains = NULL;
-    if (read_pack) {
-        if ((st = read_region(&top, s, mesh, err))) return st;
-    } else if ((st = gb_ymap_find(&top, "initial_state", 0, &state, err)) ||
-        (st = gb_ymap_find(&top, "grains", 0, &grains, err)))
+/* The grains and what holds them: an initial_state (its grains and box; with a host, the scene's
+ * host), or grains with a box of walls or a host (whose grains' extent is the box of the reports). */
+static gb_status read_grains_and_walls(const gb_yaml_doc *doc, gb_ymap *top, gb_scene *s, gb_bem_mesh *mesh,
+                                       gb_error *err)
+{
+    gb_status st;
+    struct fy_node *state = NULL, *grains = NULL, *host, *box;
+    if ((st = gb_ymap_find(top, "initial_state", 0, &state, err)) ||
+        (st = gb_ymap_find(top, "grains", 0, &grains, err)))
         return st;
-    if (read_pack) {
-        /* the region is read */
-    } else if (state) {
-        struct fy_node *box, *host;
-        gb_ymap_find(&top, "box", 0, &box, err);
-        if ((st = gb_ymap_find(&top, "host", 0, &host, err))) return st;
+    if (state) {
+        gb_ymap_find(top, "box", 0, &box, err);
+        if ((st = gb_ymap_find(top, "host", 0, &host, err))) return st;
         if (grains || box)
             return gb_yaml_fail(doc, state, err, "initial_state: gives the grains and the box; do not also give "
                                                  "'grains' or 'box'");
         /* a hybrid state: the scene gives the host, the state where it was */
-        if (host && (st = gb_host_section_read(&top, &s->host, mesh, err))) return st;
-        if ((st = read_initial_state(&top, s, err))) return st;
-    } else {
-        gb_ymap g;
-        struct fy_node *host, *box;
-        if ((st = gb_ymap_find(&top, "host", 0, &host, err)) || (st = gb_ymap_find(&top, "box", 0, &box, err)))
-            return st;
-        if (host && box)
-            return gb_yaml_fail(doc, host, err, "host: a scene has either a box of walls or a host, not both");
-        if ((st = gb_ymap_map(&top, "grains", GB_Y_REQUIRED, &g, err)) || (st = gb_grains_section_read(&g, s, err)))
-            return st;
-        if (host) {
-            if ((st = gb_host_section_read(&top, &s->host, mesh, err))) return st;
-            /* The box only bounds the grains for reports; the host's cavity holds them. */
-            s->box.left = s->box.bottom = HUGE_VAL;
-            s->box.right = s->box.top = -HUGE_VAL;
-            for (int i = 0; i < s->n_grains; i++) {
-                const gb_grain *q = &s->grains[i];
-                s->box.left = fmin(s->box.left, q->x - q->r), s->box.right = fmax(s->box.right, q->x + q->r);
-                s->box.bottom = fmin(s->box.bottom, q->y - q->r), s->box.top = fmax(s->box.top, q->y + q->r);
-            }
-            if (s->restart.n_contacts)
-                return gb_yaml_fail(doc, host, err, "host: initial contact forces are not supported with a host yet");
-        } else if ((st = gb_box_read(&top, &s->box, err)) || (st = gb_grains_check(s, doc->path, err))) {
-            return st;
-        }
+        if (host && (st = gb_host_section_read(top, &s->host, mesh, err))) return st;
+        return read_initial_state(top, s, err);
     }
+    gb_ymap g;
+    if ((st = gb_ymap_find(top, "host", 0, &host, err)) || (st = gb_ymap_find(top, "box", 0, &box, err))) return st;
+    if (host && box) return gb_yaml_fail(doc, host, err, "host: a scene has either a box of walls or a host, not both");
+    if ((st = gb_ymap_map(top, "grains", GB_Y_REQUIRED, &g, err)) || (st = gb_grains_section_read(&g, s, err)))
+        return st;
+    if (!host) return (st = gb_box_read(top, &s->box, err)) ? st : gb_grains_check(s, doc->path, err);
+    if ((st = gb_host_section_read(top, &s->host, mesh, err))) return st;
+    /* The box only bounds the grains for reports; the host's cavity holds them. */
+    s->box.left = s->box.bottom = HUGE_VAL;
+    s->box.right = s->box.top = -HUGE_VAL;
+    for (int i = 0; i < s->n_grains; i++) {
+        const gb_grain *q = &s->grains[i];
+        s->box.left = fmin(s->box.left, q->x - q->r), s->box.right = fmax(s->box.right, q->x + q->r);
+        s->box.bottom = fmin(s->box.bottom, q->y - q->r), s->box.top = fmax(s->box.top, q->y + q->r);
+    }
+    if (s->restart.n_contacts)
+        return gb_yaml_fail(doc, host, err, "host: initial contact forces are not supported with a host yet");
+    return GB_OK;
+}
+
+/* A scene with a host: the global solver, and stages that load the host, not walls. */
+static gb_status check_host_loading(const gb_yaml_doc *doc, gb_ymap *top, const gb_scene *s, gb_error *err)
+{
+    struct fy_node *sv;
+    gb_ymap_find(top, "solver", 0, &sv, err);
+    if (s->solver.method != GB_METHOD_GLOBAL)
+        return gb_yaml_fail(doc, sv, err, "solver.method: a scene with a host needs 'global' (one system for "
+                                          "grains and host)");
+    for (int k = 0; k < s->n_stages; k++)
+        if (s->stages[k].kind != GB_STAGE_RELAX && s->stages[k].kind != GB_STAGE_HOST_DISPLACEMENT &&
+            s->stages[k].kind != GB_STAGE_HOST_LOAD)
+            return gb_yaml_fail(doc, sv, err, "loading[%d]: a scene with a host has no walls; expected 'relax', "
+                                              "'host_displacement' or 'host_load'", k);
+    return GB_OK;
+}
+
+static gb_status load(const gb_yaml_doc *doc, gb_scene *s, gb_bem_mesh *mesh, gb_scene_section_fn read_pack,
+                      void *user, gb_error *err)
+{
+    gb_ymap top;
+    gb_status st;
+    double version = 0;
+    if ((st = gb_ymap_open(doc, fy_document_root(doc->fyd), "", &top, err)) ||
+        (st = gb_ymap_number(&top, "gembem", GB_Y_REQUIRED, &version, err)))
+        return st;
+    if (version != 1) return gb_yaml_fail(doc, top.node, err, "gembem: expected scene format version 1");
+    if ((st = gb_ymap_units(&top, s->length_unit, s->force_unit, sizeof s->length_unit, err)) ||
+        (st = read_materials(&top, s, err)))
+        return st;
+    if ((st = read_pack ? read_region(&top, s, mesh, err) : read_grains_and_walls(doc, &top, s, mesh, err))) return st;
     if ((st = read_body_force(&top, s, err)) || (st = gb_solver_section_read(&top, &s->solver, err))) return st;
     if (read_pack ? (st = read_pack(&top, s, s->host.present ? mesh : NULL, user, err))
                   : ((st = read_loading(&top, s, err)) || (st = read_output(&top, s, err))))
         return st;
-    if (s->host.present) {
-        struct fy_node *sv;
-        gb_ymap_find(&top, "solver", 0, &sv, err);
-        if (s->solver.method != GB_METHOD_GLOBAL)
-            return gb_yaml_fail(doc, sv, err, "solver.method: a scene with a host needs 'global' (one system for "
-                                              "grains and host)");
-        for (int k = 0; k < s->n_stages; k++)
-            if (s->stages[k].kind != GB_STAGE_RELAX && s->stages[k].kind != GB_STAGE_HOST_DISPLACEMENT &&
-                s->stages[k].kind != GB_STAGE_HOST_LOAD)
-                return gb_yaml_fail(doc, sv, err, "loading[%d]: a scene with a host has no walls; expected 'relax', "
-                                                  "'host_displacement' or 'host_load'", k);
-    }
+    if (s->host.present && (st = check_host_loading(doc, &top, s, err))) return st;
     if ((st = gb_ymap_close(&top, err))) return st;
     if (read_pack) return check_pack_accuracy(doc, &top, s, err);
     if ((st = gb_scene_admit(s, s->host.present ? mesh : NULL, err)) || (st = check_stiffness(doc, s, err)) ||
