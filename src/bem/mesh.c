@@ -196,6 +196,136 @@ static void fill_geometry(gb_bem_mesh *m, int e)
     m->normal[2 * e + 1] = -m->tangent[2 * e];
 }
 
+/* The mesh's arrays for n elements in n_loops loops and its groups' names (given, or group<k>). */
+static gb_status alloc_mesh(gb_bem_mesh *m, int n, int n_loops, int n_groups, const char *const *names,
+                            gb_error *err)
+{
+    m->n = n;
+    m->n_loops = n_loops;
+    m->n_groups = n_groups;
+    m->p0 = malloc(sizeof(double) * 2 * (size_t)n);
+    m->p1 = malloc(sizeof(double) * 2 * (size_t)n);
+    m->mid = malloc(sizeof(double) * 2 * (size_t)n);
+    m->tangent = malloc(sizeof(double) * 2 * (size_t)n);
+    m->normal = malloc(sizeof(double) * 2 * (size_t)n);
+    m->length = malloc(sizeof(double) * (size_t)n);
+    m->group = malloc(sizeof(int) * (size_t)n);
+    m->loop = malloc(sizeof(int) * (size_t)n);
+    m->loop_start = malloc(sizeof(int) * (size_t)(n_loops + 1));
+    m->loop_outer = calloc((size_t)n_loops, sizeof(int));
+    m->group_name = calloc((size_t)n_groups, sizeof *m->group_name);
+    if (!m->p0 || !m->p1 || !m->mid || !m->tangent || !m->normal || !m->length || !m->group || !m->loop ||
+        !m->loop_start || !m->loop_outer || !m->group_name)
+        return gb_fail(err, GB_ENOMEM, "out of memory for %d boundary elements", n);
+    for (int g = 0; g < n_groups; g++) {
+        if (names)
+            snprintf(m->group_name[g], GB_BEM_NAME_MAX, "%s", names[g]);
+        else
+            snprintf(m->group_name[g], GB_BEM_NAME_MAX, "group%d", g);
+    }
+    return GB_OK;
+}
+
+/* The diagonal of the n vertices' bounding box (the size of the problem, for tolerances); an error
+ * for a vertex that is not finite. */
+static gb_status extent(const double *xy, int n, double *diag, gb_error *err)
+{
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    for (int v = 0; v < n; v++)
+        for (int c = 0; c < 2; c++) {
+            if (!isfinite(xy[2 * v + c])) return gb_fail(err, GB_EINPUT, "boundary vertex %d is not finite", v);
+            lo[c] = fmin(lo[c], xy[2 * v + c]);
+            hi[c] = fmax(hi[c], xy[2 * v + c]);
+        }
+    *diag = hypot(hi[0] - lo[0], hi[1] - lo[1]);
+    return GB_OK;
+}
+
+/* Each loop's signed area, and how many other loops hold its first vertex (loops do not cross,
+ * checked later). */
+static void loop_areas(const double *xy, int n_loops, const int *loop_n, const int *start, double *area,
+                       int *inside_count)
+{
+    for (int k = 0; k < n_loops; k++) {
+        double A = 0;
+        for (int i = 0; i < loop_n[k]; i++) {
+            const double *a = xy + 2 * (start[k] + i), *b = xy + 2 * (start[k] + (i + 1) % loop_n[k]);
+            A += a[0] * b[1] - a[1] * b[0];
+        }
+        area[k] = 0.5 * A;
+        for (int j = 0; j < n_loops; j++)
+            if (j != k && in_polygon(xy + 2 * start[j], loop_n[j], xy[2 * start[k]], xy[2 * start[k] + 1]))
+                inside_count[k]++;
+    }
+}
+
+/* The loops' nesting: every loop encloses an area; a bounded body has one outermost loop (*outer)
+ * around its cavities and no islands, an infinite plane only cavities. */
+static gb_status check_nesting(const gb_bem_mesh *m, const int *edge_group, const int *start, const double *area,
+                               const int *inside_count, double eps, double diag, int *outer, gb_error *err)
+{
+    int n_loops = m->n_loops, unbounded = m->unbounded;
+    *outer = -1;
+    for (int k = 0; k < n_loops; k++) {
+        const char *name = m->group_name[edge_group[start[k]]];
+        if (!(fabs(area[k]) > eps * diag))
+            return gb_fail(err, GB_EINPUT, "loop %d (group '%s') encloses no area (does it cross itself?)", k, name);
+        if (unbounded && inside_count[k] > 0)
+            return gb_fail(err, GB_EINPUT,
+                           "loop %d (group '%s') lies inside another loop: an infinite plane holds cavities only", k,
+                           name);
+        if (!unbounded && inside_count[k] == 0) {
+            if (*outer >= 0)
+                return gb_fail(err, GB_EINPUT,
+                               "loops %d and %d (groups '%s', '%s') are both outermost: a bounded body needs one "
+                               "outer boundary enclosing its cavities (or set the mesh unbounded)",
+                               *outer, k, m->group_name[edge_group[start[*outer]]], name);
+            *outer = k;
+        } else if (!unbounded && inside_count[k] > 1)
+            return gb_fail(err, GB_EINPUT, "loop %d (group '%s') lies inside a cavity: islands are not supported", k,
+                           name);
+    }
+    if (!unbounded && *outer < 0) return gb_fail(err, GB_EINPUT, "no outer boundary found");
+    if (!unbounded && n_loops > 1 && fabs(area[*outer]) <= 0)
+        return gb_fail(err, GB_EINPUT, "the outer boundary encloses no area");
+    return GB_OK;
+}
+
+/* Loop k's elements in body orientation (the outer loop counter-clockwise, cavities clockwise),
+ * from its vertices and their groups; an error for an element shorter than eps. */
+static gb_status orient_loop(gb_bem_mesh *m, int k, const double *xy, const int *edge_group, const int *start,
+                             int count, double area, int outer, double eps, gb_error *err)
+{
+    gb_status st = GB_OK;
+    int want_ccw = !m->unbounded && k == outer;
+    int reverse = want_ccw ? area < 0 : area > 0;
+    m->loop_start[k] = start[k];
+    m->loop_outer[k] = want_ccw;
+    for (int j = 0; j < count; j++) {
+        int e = start[k] + j, src, va, vb;
+        if (!reverse) {
+            src = j;
+            va = j;
+            vb = (j + 1) % count;
+        } else {
+            src = count - 1 - j;
+            va = (src + 1) % count;
+            vb = src;
+        }
+        m->p0[2 * e] = xy[2 * (start[k] + va)];
+        m->p0[2 * e + 1] = xy[2 * (start[k] + va) + 1];
+        m->p1[2 * e] = xy[2 * (start[k] + vb)];
+        m->p1[2 * e + 1] = xy[2 * (start[k] + vb) + 1];
+        m->group[e] = edge_group[start[k] + src];
+        m->loop[e] = k;
+        fill_geometry(m, e);
+        if (!(m->length[e] > eps) && !st)
+            st = gb_fail(err, GB_EINPUT, "zero-length element at (%.6g, %.6g) in group '%s'", m->p0[2 * e],
+                         m->p0[2 * e + 1], m->group_name[m->group[e]]);
+    }
+    return st;
+}
+
 gb_status gb_bem_mesh_from_polygons(int n_loops, const int *loop_n, const double *xy, const int *edge_group,
                                     int n_groups, const char *const *names, int unbounded, gb_bem_mesh *m,
                                     gb_error *err)
@@ -213,128 +343,25 @@ gb_status gb_bem_mesh_from_polygons(int n_loops, const int *loop_n, const double
     for (int e = 0; e < n; e++)
         if (edge_group[e] < 0 || edge_group[e] >= n_groups)
             return gb_fail(err, GB_EINPUT, "element %d: group %d out of range", e, edge_group[e]);
-
-    m->n = n;
-    m->n_loops = n_loops;
-    m->n_groups = n_groups;
     m->unbounded = unbounded ? 1 : 0;
-    m->p0 = malloc(sizeof(double) * 2 * (size_t)n);
-    m->p1 = malloc(sizeof(double) * 2 * (size_t)n);
-    m->mid = malloc(sizeof(double) * 2 * (size_t)n);
-    m->tangent = malloc(sizeof(double) * 2 * (size_t)n);
-    m->normal = malloc(sizeof(double) * 2 * (size_t)n);
-    m->length = malloc(sizeof(double) * (size_t)n);
-    m->group = malloc(sizeof(int) * (size_t)n);
-    m->loop = malloc(sizeof(int) * (size_t)n);
-    m->loop_start = malloc(sizeof(int) * (size_t)(n_loops + 1));
-    m->loop_outer = calloc((size_t)n_loops, sizeof(int));
-    m->group_name = calloc((size_t)n_groups, sizeof *m->group_name);
-    if (!m->p0 || !m->p1 || !m->mid || !m->tangent || !m->normal || !m->length || !m->group || !m->loop ||
-        !m->loop_start || !m->loop_outer || !m->group_name) {
-        gb_bem_mesh_free(m);
-        return gb_fail(err, GB_ENOMEM, "out of memory for %d boundary elements", n);
-    }
-    for (int g = 0; g < n_groups; g++) {
-        if (names)
-            snprintf(m->group_name[g], GB_BEM_NAME_MAX, "%s", names[g]);
-        else
-            snprintf(m->group_name[g], GB_BEM_NAME_MAX, "group%d", g);
-    }
-
-    /* size of the problem, for tolerances */
-    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
-    for (int v = 0; v < n; v++)
-        for (int c = 0; c < 2; c++) {
-            if (!isfinite(xy[2 * v + c])) {
-                gb_bem_mesh_free(m);
-                return gb_fail(err, GB_EINPUT, "boundary vertex %d is not finite", v);
-            }
-            lo[c] = fmin(lo[c], xy[2 * v + c]);
-            hi[c] = fmax(hi[c], xy[2 * v + c]);
-        }
-    double diag = hypot(hi[0] - lo[0], hi[1] - lo[1]);
+    double diag = 0;
+    gb_status st = alloc_mesh(m, n, n_loops, n_groups, names, err);
+    if (!st) st = extent(xy, n, &diag, err);
     double eps = 1e-10 * diag;
-
-    /* signed areas and nesting (a vertex of one loop inside another: loops do not cross, checked below) */
     double *area = malloc(sizeof(double) * (size_t)n_loops);
     int *inside_count = calloc((size_t)n_loops, sizeof(int));
     int *start = malloc(sizeof(int) * (size_t)(n_loops + 1));
-    if (!area || !inside_count || !start) {
-        free(area);
-        free(inside_count);
-        free(start);
-        gb_bem_mesh_free(m);
-        return gb_fail(err, GB_ENOMEM, "out of memory");
-    }
-    start[0] = 0;
-    for (int k = 0; k < n_loops; k++) start[k + 1] = start[k] + loop_n[k];
-    for (int k = 0; k < n_loops; k++) {
-        double A = 0;
-        for (int i = 0; i < loop_n[k]; i++) {
-            const double *a = xy + 2 * (start[k] + i), *b = xy + 2 * (start[k] + (i + 1) % loop_n[k]);
-            A += a[0] * b[1] - a[1] * b[0];
-        }
-        area[k] = 0.5 * A;
-        for (int j = 0; j < n_loops; j++)
-            if (j != k && in_polygon(xy + 2 * start[j], loop_n[j], xy[2 * start[k]], xy[2 * start[k] + 1]))
-                inside_count[k]++;
-    }
-    gb_status st = GB_OK;
+    if (!st && (!area || !inside_count || !start)) st = gb_fail(err, GB_ENOMEM, "out of memory");
     int outer = -1;
-    for (int k = 0; k < n_loops && !st; k++) {
-        if (!(fabs(area[k]) > eps * diag))
-            st = gb_fail(err, GB_EINPUT, "loop %d (group '%s') encloses no area (does it cross itself?)", k,
-                         m->group_name[edge_group[start[k]]]);
-        else if (unbounded && inside_count[k] > 0)
-            st = gb_fail(err, GB_EINPUT,
-                         "loop %d (group '%s') lies inside another loop: an infinite plane holds cavities only", k,
-                         m->group_name[edge_group[start[k]]]);
-        else if (!unbounded && inside_count[k] == 0) {
-            if (outer >= 0)
-                st = gb_fail(err, GB_EINPUT,
-                             "loops %d and %d (groups '%s', '%s') are both outermost: a bounded body needs one outer "
-                             "boundary enclosing its cavities (or set the mesh unbounded)",
-                             outer, k, m->group_name[edge_group[start[outer]]], m->group_name[edge_group[start[k]]]);
-            outer = k;
-        } else if (!unbounded && inside_count[k] > 1)
-            st = gb_fail(err, GB_EINPUT, "loop %d (group '%s') lies inside a cavity: islands are not supported", k,
-                         m->group_name[edge_group[start[k]]]);
+    if (!st) {
+        start[0] = 0;
+        for (int k = 0; k < n_loops; k++) start[k + 1] = start[k] + loop_n[k];
+        loop_areas(xy, n_loops, loop_n, start, area, inside_count);
+        st = check_nesting(m, edge_group, start, area, inside_count, eps, diag, &outer, err);
     }
-    if (!st && !unbounded && outer < 0) st = gb_fail(err, GB_EINPUT, "no outer boundary found");
-    if (!st && !unbounded && n_loops > 1 && fabs(area[outer]) <= 0)
-        st = gb_fail(err, GB_EINPUT, "the outer boundary encloses no area");
-
-    /* elements in body orientation: outer loop counter-clockwise, cavities clockwise */
-    for (int k = 0; k < n_loops && !st; k++) {
-        int want_ccw = !unbounded && k == outer;
-        int reverse = want_ccw ? area[k] < 0 : area[k] > 0;
-        int c = loop_n[k];
-        m->loop_start[k] = start[k];
-        m->loop_outer[k] = want_ccw;
-        for (int j = 0; j < c; j++) {
-            int e = start[k] + j, src, va, vb;
-            if (!reverse) {
-                src = j;
-                va = j;
-                vb = (j + 1) % c;
-            } else {
-                src = c - 1 - j;
-                va = (src + 1) % c;
-                vb = src;
-            }
-            m->p0[2 * e] = xy[2 * (start[k] + va)];
-            m->p0[2 * e + 1] = xy[2 * (start[k] + va) + 1];
-            m->p1[2 * e] = xy[2 * (start[k] + vb)];
-            m->p1[2 * e + 1] = xy[2 * (start[k] + vb) + 1];
-            m->group[e] = edge_group[start[k] + src];
-            m->loop[e] = k;
-            fill_geometry(m, e);
-            if (!(m->length[e] > eps) && !st)
-                st = gb_fail(err, GB_EINPUT, "zero-length element at (%.6g, %.6g) in group '%s'", m->p0[2 * e],
-                             m->p0[2 * e + 1], m->group_name[m->group[e]]);
-        }
-    }
-    m->loop_start[n_loops] = n;
+    for (int k = 0; k < n_loops && !st; k++)
+        st = orient_loop(m, k, xy, edge_group, start, loop_n[k], area[k], outer, eps, err);
+    if (!st) m->loop_start[n_loops] = n;
     free(area);
     free(inside_count);
     free(start);
