@@ -1,7 +1,8 @@
 /* Running a scene's loading program (src/run): a simulation made from a scene, and the loop that
  * takes it through its load steps, each in four phases (docs/architecture.md): control (the
  * step's loads, cut-backs), solve (relaxation to equilibrium, src/solver), measure (the step's
- * report and measures, src/measure) and output (the run directory's files, src/io). */
+ * report and measures, src/measure) and output (the run directory's files, src/io); and `gembem
+ * bem`'s solve of an elastic body alone (gb_bem_run). */
 #ifndef GEMBEM_RUN_H
 #define GEMBEM_RUN_H
 
@@ -65,6 +66,21 @@ int gb_run_stop_requested(void);
 void gb_run_stop_clear(void);
 /* A signal's name for messages ("SIGTERM"), or "signal N" (buf: at least 16 bytes). */
 const char *gb_run_signal_name(int signo, char *buf, size_t cap);
+
+/* Calls fn after every iteration that did not converge (for solver.history); NULL: none. gb_sim_run
+ * with an output sets its own. */
+void gb_sim_on_iteration(gb_sim *sim, gb_iteration_fn fn, void *user);
+/* Calls fn between the iterations of every relaxation; NULL: none. gb_sim_run with an output sets
+ * its own (checkpoints within a step). */
+void gb_sim_on_within_step(gb_sim *sim, gb_within_step_fn fn, void *user);
+
+/* `gembem bem`: the elastic body of a BEM scene solved alone, its files written to dir (new or
+ * empty, or any with overwrite; refused before any solve otherwise): scene.yaml, boundary and
+ * interior fields as the scene asks, the condensed stiffness, run_info.yaml (how it was made, with
+ * `command` as given, and the solve's numbers). A few lines of those numbers go into summary (cap
+ * bytes; NULL: not). */
+gb_status gb_bem_run(const char *scene, const char *dir, int overwrite, const char *command, char *summary, size_t cap,
+                     gb_error *err);
 
 /* The time split of the runs of sim so far (zero before one). */
 gb_run_profile gb_sim_profile(const gb_sim *sim);
