@@ -21,7 +21,7 @@ import os
 import re
 import sys
 
-# The layers, each including only folders before it: core, contact, scene, bem, hybrid, gem,
+# The layers, each including only folders before it: core, bem, contact, scene, hybrid, gem,
 # solver, measure, io, run, pack, cli (docs/architecture.md, docs/developers.md). A new cycle
 # means a file, a declaration or a type is in the wrong folder.
 
