@@ -54,19 +54,6 @@ typedef struct {
 } gb_run_place;
 gb_run_place gb_sim_place(const gb_sim *sim);
 
-/* A stop asked for from outside the run, e.g. by a signal handler (the library installs none;
- * the gembem command does, for SIGTERM, SIGINT and SIGHUP): async-signal-safe, it only records
- * `reason` (a signal number, > 0) in a volatile sig_atomic_t. A gb_sim_run with an output notices
- * it between two iterations of a relaxation or at the end of a step, writes a checkpoint there and
- * returns GB_EINTERRUPTED (gb_run_output_close then records status `interrupted`); without an
- * output, at the end of a step. The request stays until gb_run_stop_clear. */
-void gb_run_request_stop(int reason);
-/* The reason of the stop asked for, 0 if none. */
-int gb_run_stop_requested(void);
-void gb_run_stop_clear(void);
-/* A signal's name for messages ("SIGTERM"), or "signal N" (buf: at least 16 bytes). */
-const char *gb_run_signal_name(int signo, char *buf, size_t cap);
-
 /* Calls fn after every iteration that did not converge (for solver.history); NULL: none. gb_sim_run
  * with an output sets its own. */
 void gb_sim_on_iteration(gb_sim *sim, gb_iteration_fn fn, void *user);
