@@ -1,7 +1,7 @@
 /* The `gembem bem` scene reader (gb_bem_scene_load): the input is the scene; its mesh is a
  * fixture (the project's meshes). */
 #include "fuzz.h"
-#include "gembem/bem.h"
+#include "gembem/scene.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {

@@ -253,30 +253,6 @@ gb_status gb_bem_condense_loads(const gb_bem_mesh *mesh, const gb_bem_system *sy
                                 double *f0_more, gb_bem_outputs *outs, gb_error *err);
 void gb_bem_stiffness_free(gb_bem_stiffness *k);
 
-/* ---------------------------------------------------------------- scenes */
-
-/* An elastostatic scene (YAML; see the scenes in validation/bem for the commented format). */
-typedef struct {
-    char path[512];
-    char length_unit[32], force_unit[32];
-    gb_bem_material material;
-    char mesh_path[512];
-    gb_bem_mesh_opts mesh_opts;
-    gb_bem_mesh mesh;
-    gb_bem_problem problem;
-    int npts;
-    double *pts;          /* interior points, 2 per point */
-    int grid_nx, grid_ny; /* >0: pts[0 .. nx*ny) is a grid, row by row (x fastest); may hold outside points */
-    int *pt_inside;       /* 1 if pts[i] is inside the body */
-    char stiffness_group[GB_BEM_NAME_MAX]; /* "" : no condensation */
-    int stiffness_write;
-    int write_boundary_csv, write_boundary_vtp, write_interior_vtu, write_interior_csv; /* output: default 1 */
-} gb_bem_scene;
-
-/* Reads and checks the scene, then meshes it; every error names file:line:column (GB_EINPUT). */
-gb_status gb_bem_scene_load(const char *path, gb_bem_scene *scene, gb_error *err);
-void gb_bem_scene_free(gb_bem_scene *scene);
-
 /* Kelvin's fundamental solution for plane elasticity (H 1-2) and its stress kernels, at a point
  * (src/bem/kernel.c). Convention: x is the source (collocation or interior) point, y the field
  * point on the boundary, r = |y - x|, r_,i = (y_i - x_i)/r, n the outward normal at y. Plane

@@ -26,6 +26,19 @@ typedef struct {
                              whole step did not lower the merit tenfold */
 } gb_solver_work;
 
+/* How the walls move during one relaxation. */
+typedef enum {
+    GB_WALLS_FIXED = 0,  /* strain control: the step's displacement was imposed, walls stay */
+    GB_WALLS_STRESS,     /* each axis moves to reach target stresses s1 (vertical), s2 (horizontal) */
+    GB_WALLS_MEAN        /* an isotropic strain moves the walls to reach the mean stress */
+} gb_wall_mode;
+
+typedef struct gb_wall_control_s {
+    gb_wall_mode mode;
+    double s1, s2;  /* GB_WALLS_STRESS targets */
+    double mean;    /* GB_WALLS_MEAN target */
+} gb_wall_control;
+
 /* Why a load step's relaxation stopped (steps.csv's stop, a failed step's message). */
 typedef enum {
     GB_STOP_CONVERGED = 0, /* every fixing force and the walls' residual within the accuracy (K 14) */
@@ -67,6 +80,15 @@ typedef struct {
     double coordination;      /* contacts per grain over the grains with two or more (rattlers excluded) */
     int rattlers;             /* grains with fewer than two contacts */
 } gb_step_report;
+
+/* Where a run's time went, by phase (seconds of this process, summed over its steps, step 0
+ * included), as Box2D's b2Profile or LAMMPS's timers. */
+typedef struct {
+    double control;  /* the steps' set-up: accuracy, loads, states saved and restored, work accounts */
+    double solve;    /* relaxations (gb_solver_relax); a checkpoint taken within a step is here too */
+    double measure;  /* the steps' reports and, with an output, their measures (docs/measures.md) */
+    double output;   /* the steps' files and checkpoints, and the on_step callback */
+} gb_run_profile;
 
 /* Called after the initial state (step 0) and after every converged step, after its output
  * (gb_sim_run, gembem/run.h). A non-OK status stops the run with that error. */
@@ -117,13 +139,6 @@ typedef void (*gb_progress_fn)(void *user, const gb_step_progress *p);
  * run's earlier steps (and at least ten seconds); NULL: none. The CLI prints it. */
 void gb_sim_on_progress(gb_sim *sim, gb_progress_fn fn, void *user);
 
-/* Calls fn after every iteration that did not converge (for solver.history); NULL: none. gb_sim_run
- * with an output sets its own. */
-void gb_sim_on_iteration(gb_sim *sim, gb_iteration_fn fn, void *user);
-/* Calls fn between the iterations of every relaxation; NULL: none. gb_sim_run with an output sets
- * its own (checkpoints within a step). */
-void gb_sim_on_within_step(gb_sim *sim, gb_within_step_fn fn, void *user);
-
 const gb_scene *gb_sim_scene(const gb_sim *sim);
 int gb_sim_n_grains(const gb_sim *sim);
 /* Grain i, numbered as in the scene (the simulation keeps its grains in another order). */
@@ -148,6 +163,8 @@ void gb_sim_fixing_force(const gb_sim *sim, int i, double F[3]);
 /* The boundary stresses s1 (vertical) and s2 (horizontal) of the walls (K section 4.1), from the
  * forces of the current contacts (recomputed: F, S and the walls' forces). */
 void gb_sim_stress(gb_sim *sim, double *s1, double *s2);
+/* Seconds spent on contact detection (the pair list's staleness tests and rebuilds) so far. */
+double gb_sim_detect_seconds(const gb_sim *sim);
 /* The whole state mapped onto box `to`, of the box's shape, by one uniform scaling of positions,
  * radii, overlaps and contact forces: a balanced state stays balanced, at the same stress (a
  * packing's walls that moved to its target stress put back; src/gem/fit_box.c). Refused with a

@@ -5,7 +5,8 @@
 #define GEMBEM_GEMBEM_H
 
 #include "gembem/status.h"       /* gb_status, gb_error: every function's outcome and message */
-#include "gembem/scene.h"        /* scenes: reading, defaults, stages */
+#include "gembem/grain.h"        /* grains, walls, contact materials: the types every layer shares */
+#include "gembem/scene.h"        /* scenes: reading, defaults, stages, BEM scenes */
 #include "gembem/bem.h"          /* the boundary element module: meshes, solves, condensation */
 #include "gembem/gem.h"          /* a simulation: grains, contacts, reports */
 #include "gembem/solver.h"       /* relaxations, solver statistics */

@@ -1,6 +1,7 @@
-/* The elastic host of a hybrid simulation (src/hybrid: docs/method.md sections 9-10), as a run
- * leaves it: the cavity's displacements, the host's forces on it, the boundary particles' balance,
- * the resultants of its boundary groups. Every function is for a simulation with a host. */
+/* The elastic host of a hybrid simulation (docs/method.md sections 9-10), as a run leaves it: the
+ * cavity's displacements, the host's forces on it, the boundary particles' balance, the resultants
+ * of its boundary groups. Every function is for a simulation with a host. Functions of the
+ * simulation (src/gem/sim.c), which holds the host (src/hybrid) and its state. */
 #ifndef GEMBEM_HYBRID_H
 #define GEMBEM_HYBRID_H
 

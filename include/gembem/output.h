@@ -27,14 +27,6 @@ gb_status gb_run_output_resume_scene(const char *dir, char *path, size_t cap, gb
 gb_status gb_run_output_close(gb_run_output *o, const gb_sim *sim, gb_status run_status, const char *message,
                               gb_error *err);
 
-/* `gembem bem`: the elastic body of a BEM scene solved alone, its files written to dir (new or
- * empty, or any with overwrite; refused before any solve otherwise): scene.yaml, boundary and
- * interior fields as the scene asks, the condensed stiffness, run_info.yaml (how it was made, with
- * `command` as given, and the solve's numbers). A few lines of those numbers go into summary (cap
- * bytes; NULL: not). */
-gb_status gb_bem_run(const char *scene, const char *dir, int overwrite, const char *command, char *summary, size_t cap,
-                     gb_error *err);
-
 /* The state files alone: a scene can start from dir/state.yaml with `initial_state:`. */
 gb_status gb_state_write(const char *dir, const gb_sim *sim, gb_error *err);
 /* The force-carrying contacts as CSV (i, j, pn, pt, nx, ny, overlap, elastic energy (K 22), the

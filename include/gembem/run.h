@@ -1,7 +1,8 @@
 /* Running a scene's loading program (src/run): a simulation made from a scene, and the loop that
  * takes it through its load steps, each in four phases (docs/architecture.md): control (the
  * step's loads, cut-backs), solve (relaxation to equilibrium, src/solver), measure (the step's
- * report and measures, src/measure) and output (the run directory's files, src/io). */
+ * report and measures, src/measure) and output (the run directory's files, src/io); and `gembem
+ * bem`'s solve of an elastic body alone (gb_bem_run). */
 #ifndef GEMBEM_RUN_H
 #define GEMBEM_RUN_H
 
@@ -10,14 +11,6 @@
 #include "gembem/gem.h"
 #include "gembem/output.h"
 
-/* Where a run's time went, by phase (seconds of this process, summed over its steps, step 0
- * included), as Box2D's b2Profile or LAMMPS's timers. */
-typedef struct {
-    double control;  /* the steps' set-up: accuracy, loads, states saved and restored, work accounts */
-    double solve;    /* relaxations (gb_solver_relax); a checkpoint taken within a step is here too */
-    double measure;  /* the steps' reports and, with an output, their measures (docs/measures.md) */
-    double output;   /* the steps' files and checkpoints, and the on_step callback */
-} gb_run_profile;
 
 /* The scene must outlive the simulation. */
 gb_status gb_sim_create(const gb_scene *scene, gb_sim **out, gb_error *err);
@@ -53,18 +46,20 @@ typedef struct {
 } gb_run_place;
 gb_run_place gb_sim_place(const gb_sim *sim);
 
-/* A stop asked for from outside the run, e.g. by a signal handler (the library installs none;
- * the gembem command does, for SIGTERM, SIGINT and SIGHUP): async-signal-safe, it only records
- * `reason` (a signal number, > 0) in a volatile sig_atomic_t. A gb_sim_run with an output notices
- * it between two iterations of a relaxation or at the end of a step, writes a checkpoint there and
- * returns GB_EINTERRUPTED (gb_run_output_close then records status `interrupted`); without an
- * output, at the end of a step. The request stays until gb_run_stop_clear. */
-void gb_run_request_stop(int reason);
-/* The reason of the stop asked for, 0 if none. */
-int gb_run_stop_requested(void);
-void gb_run_stop_clear(void);
-/* A signal's name for messages ("SIGTERM"), or "signal N" (buf: at least 16 bytes). */
-const char *gb_run_signal_name(int signo, char *buf, size_t cap);
+/* Calls fn after every iteration that did not converge (for solver.history); NULL: none. gb_sim_run
+ * with an output sets its own. */
+void gb_sim_on_iteration(gb_sim *sim, gb_iteration_fn fn, void *user);
+/* Calls fn between the iterations of every relaxation; NULL: none. gb_sim_run with an output sets
+ * its own (checkpoints within a step). */
+void gb_sim_on_within_step(gb_sim *sim, gb_within_step_fn fn, void *user);
+
+/* `gembem bem`: the elastic body of a BEM scene solved alone, its files written to dir (new or
+ * empty, or any with overwrite; refused before any solve otherwise): scene.yaml, boundary and
+ * interior fields as the scene asks, the condensed stiffness, run_info.yaml (how it was made, with
+ * `command` as given, and the solve's numbers). A few lines of those numbers go into summary (cap
+ * bytes; NULL: not). */
+gb_status gb_bem_run(const char *scene, const char *dir, int overwrite, const char *command, char *summary, size_t cap,
+                     gb_error *err);
 
 /* The time split of the runs of sim so far (zero before one). */
 gb_run_profile gb_sim_profile(const gb_sim *sim);

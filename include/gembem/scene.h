@@ -6,33 +6,8 @@
 #include <stddef.h>
 
 #include "gembem/bem.h"
+#include "gembem/grain.h"
 #include "gembem/status.h"
-
-/* Contact springs and strength of one contact type (K 3, 4, 13), and the optional rolling
- * resistance (docs/method.md section 3.1): kr = 0 leaves it out. */
-typedef struct {
-    double kn, kt;        /* normal and tangential spring stiffness [force/length] */
-    double friction_deg;  /* Coulomb friction angle phi [degrees] */
-    double cohesion;      /* c [force] */
-    double kr;            /* rolling spring [force length / radian]; 0: no rolling resistance */
-    double eta;           /* rolling limit |mr| <= eta R* pn [1] */
-} gb_material;
-
-enum { GB_WALL_LEFT = 0, GB_WALL_RIGHT = 1, GB_WALL_BOTTOM = 2, GB_WALL_TOP = 3, GB_N_WALLS = 4 };
-/* The other side j of a contact (gb_contact, contacts files): a grain (j >= 0), a wall (j = -1 -
- * GB_WALL_xxx) or a host's boundary particle on cavity element e, j = GB_PARTICLE_J(e). */
-#define GB_PARTICLE_J(e) (-1 - GB_N_WALLS - (e))
-#define GB_IS_PARTICLE(j) ((j) < -GB_N_WALLS)
-#define GB_PARTICLE_OF(j) (-1 - GB_N_WALLS - (j))
-
-typedef struct {
-    double left, right, bottom, top;
-} gb_box;
-
-typedef struct {
-    double x, y, r;  /* centre and radius */
-    double rot;      /* rotation [rad], counter-clockwise */
-} gb_grain;
 
 /* An initial tangential contact force (and rolling moment); the normal force follows from the
  * overlap (pn = kn d). */
@@ -281,5 +256,28 @@ const char *gb_stage_name(gb_stage_kind k);
 
 /* Total number of load steps of the loading program. */
 int gb_scene_total_steps(const gb_scene *s);
+
+/* The scene of `gembem bem`: an elastic body alone (YAML; see the scenes in validation/bem for the
+ * commented format). */
+typedef struct {
+    char path[512];
+    char length_unit[32], force_unit[32];
+    gb_bem_material material;
+    char mesh_path[512];
+    gb_bem_mesh_opts mesh_opts;
+    gb_bem_mesh mesh;
+    gb_bem_problem problem;
+    int npts;
+    double *pts;          /* interior points, 2 per point */
+    int grid_nx, grid_ny; /* >0: pts[0 .. nx*ny) is a grid, row by row (x fastest); may hold outside points */
+    int *pt_inside;       /* 1 if pts[i] is inside the body */
+    char stiffness_group[GB_BEM_NAME_MAX]; /* "" : no condensation */
+    int stiffness_write;
+    int write_boundary_csv, write_boundary_vtp, write_interior_vtu, write_interior_csv; /* output: default 1 */
+} gb_bem_scene;
+
+/* Reads and checks the scene, then meshes it; every error names file:line:column (GB_EINPUT). */
+gb_status gb_bem_scene_load(const char *path, gb_bem_scene *scene, gb_error *err);
+void gb_bem_scene_free(gb_bem_scene *scene);
 
 #endif

@@ -6,19 +6,6 @@
 
 #include "gembem/gem.h"
 
-/* How the walls move during one relaxation. */
-typedef enum {
-    GB_WALLS_FIXED = 0,  /* strain control: the step's displacement was imposed, walls stay */
-    GB_WALLS_STRESS,     /* each axis moves to reach target stresses s1 (vertical), s2 (horizontal) */
-    GB_WALLS_MEAN        /* an isotropic strain moves the walls to reach the mean stress */
-} gb_wall_mode;
-
-typedef struct gb_wall_control_s {
-    gb_wall_mode mode;
-    double s1, s2;  /* GB_WALLS_STRESS targets */
-    double mean;    /* GB_WALLS_MEAN target */
-} gb_wall_control;
-
 /* The global solver's time and counts (seconds, cumulative over the process). */
 typedef struct {
     double assemble, analyse, factorise, solve;
@@ -60,7 +47,5 @@ gb_status gb_solver_relax(gb_sim *sim, const gb_wall_control *wc, long cap, gb_s
 gb_solver_work gb_solver_work_done(const gb_sim *sim);
 /* The global system's statistics, or NULL for the reference iteration. */
 const gb_global_stats *gb_solver_statistics(const gb_sim *sim);
-/* Seconds spent on contact detection (the pair list's staleness tests and rebuilds) so far. */
-double gb_sim_detect_seconds(const gb_sim *sim);
 
 #endif

@@ -3,6 +3,8 @@
 #ifndef GEMBEM_STATUS_H
 #define GEMBEM_STATUS_H
 
+#include <stddef.h>
+
 typedef enum {
     GB_OK = 0,
     GB_EINTERNAL = 1, /* a bug or an unexpected library failure */
@@ -30,5 +32,19 @@ gb_status gb_fail(gb_error *err, gb_status code, const char *fmt, ...)
 
 const char *gb_status_name(gb_status s);
 const char *gb_version(void);
+
+/* A stop asked for from outside a run (one flag for the process, which the run's loop and its
+ * output both look at), e.g. by a signal handler (the library installs none; the gembem command
+ * does, for SIGTERM, SIGINT and SIGHUP): async-signal-safe, it only records
+ * `reason` (a signal number, > 0) in a volatile sig_atomic_t. A gb_sim_run with an output notices
+ * it between two iterations of a relaxation or at the end of a step, writes a checkpoint there and
+ * returns GB_EINTERRUPTED (gb_run_output_close then records status `interrupted`); without an
+ * output, at the end of a step. The request stays until gb_run_stop_clear. */
+void gb_run_request_stop(int reason);
+/* The reason of the stop asked for, 0 if none. */
+int gb_run_stop_requested(void);
+void gb_run_stop_clear(void);
+/* A signal's name for messages ("SIGTERM"), or "signal N" (buf: at least 16 bytes). */
+const char *gb_run_signal_name(int signo, char *buf, size_t cap);
 
 #endif

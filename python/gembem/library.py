@@ -35,7 +35,7 @@ try:  # written by cmake --install: the installed library relative to this insta
 except ImportError:  # this package in a checkout
     _INSTALLED = None
 
-# The walls in gembem's order (GB_WALL_LEFT... of gembem/scene.h): a contact's j = -1 - wall.
+# The walls in gembem's order (GB_WALL_LEFT... of gembem/grain.h): a contact's j = -1 - wall.
 WALLS = ("left", "right", "bottom", "top")
 
 

@@ -6,7 +6,7 @@
 #include <string.h>
 
 #include "cli/cli.h"
-#include "gembem/output.h"
+#include "gembem/run.h"
 
 static void usage(FILE *to)
 {

@@ -7,12 +7,13 @@
 #include <math.h>
 #include <string.h>
 
-#include "gembem/scene.h"
+#include "gembem/bem.h"
+#include "gembem/grain.h"
 
 /* Boundary particles (the hybrid method, docs/method.md section 10): one half-disc on each element of
  * a host's cavity, of diameter the element's length, centred on its midpoint and bulging into the
  * cavity; it moves with its element (2 DOFs, no rotation). In a pair it is j = GB_PARTICLE_J(e)
- * (gembem/scene.h). */
+ * (gembem/grain.h). */
 
 typedef struct {
     int n;

@@ -5,8 +5,6 @@
 
 #include "contact/pairs.h"
 #include "gembem/gem.h"
-#include "gembem/run.h"
-#include "gembem/solver.h"
 #include "hybrid/host.h"
 
 /* The energy accounts that iterations change (absolute since the run's start, force x length);

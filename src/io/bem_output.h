@@ -3,7 +3,7 @@
 #ifndef GB_IO_BEM_OUTPUT_H
 #define GB_IO_BEM_OUTPUT_H
 
-#include "gembem/bem.h"
+#include "gembem/scene.h"
 
 gb_status gb_bem_write_boundary_csv(const char *path, const gb_bem_mesh *m, const gb_bem_solution *sol,
                                     const double *bstress, gb_error *err);

@@ -11,7 +11,6 @@
 #include "core/clock.h"
 #include "gem/sim.h"
 #include "gembem/measure.h"
-#include "gembem/run.h"
 #include "io/host_output.h"
 #include "io/checkpoint.h"
 #include "io/dir_lock.h"

@@ -11,7 +11,6 @@
 #include "core/clock.h"
 #include "core/memory.h"
 #include "gembem/petsc.h"
-#include "gembem/run.h"
 #include "io/scene_report.h"
 #include "solver/solver.h"
 
@@ -120,7 +119,7 @@ void gb_run_record_machine(FILE *f)
 void gb_run_record_times(FILE *f, const gb_sim *sim, double total, double close)
 {
     gb_run_profile p = {0, 0, 0, 0};
-    if (sim) p = gb_sim_profile(sim);
+    if (sim) p = sim->profile;
     fprintf(f, "time:   # seconds of this process (after a resume: since it), by phase\n  total: %.3f\n", total);
     fprintf(f, "  control: %.3f   # the steps' loads, saved states, cut-backs\n", p.control);
     fprintf(f, "  solve: %.3f   # relaxations (checkpoints within a step included)\n", p.solve);

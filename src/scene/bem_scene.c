@@ -5,7 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "gembem/bem.h"
+#include "gembem/scene.h"
 #include "scene/bem_scene_read.h"
 #include "scene/yaml_read.h"
 

@@ -7,7 +7,7 @@
 #ifndef GB_BEM_SCENE_READ_H
 #define GB_BEM_SCENE_READ_H
 
-#include "gembem/bem.h"
+#include "gembem/scene.h"
 #include "scene/yaml_read.h"
 
 /* One group's boundary condition at `val`: fixed | free | {displacement: [ux, uy]} |

@@ -8,7 +8,7 @@
 
 #include "scene/bem_scene_read.h"
 #include "check.h"
-#include "gembem/bem.h"
+#include "gembem/scene.h"
 
 int main(void)
 {

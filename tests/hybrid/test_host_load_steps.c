@@ -29,6 +29,7 @@
 
 #include "check.h"
 #include "gem/sim.h"
+#include "gembem/run.h"
 
 typedef struct {
     int n_steps, cap;

@@ -9,6 +9,7 @@
 
 #include "check.h"
 #include "gem/sim.h"
+#include "gembem/run.h"
 
 static double first_force;
 

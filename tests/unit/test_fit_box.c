@@ -14,6 +14,7 @@
 #include "check.h"
 #include "scene_fixture.h"
 #include "gem/sim.h"
+#include "gembem/run.h"
 
 static const double KN = 1e8, KT = 7e7, S = 1.003;
 

@@ -3,6 +3,7 @@
  * contact normals fixed, so the springs are exactly linear and the expected moves are exact. */
 #include "check.h"
 #include "gem/sim.h"
+#include "gembem/run.h"
 #include "scene_fixture.h"
 
 static const double KN = 1e8, KT = 7e7;

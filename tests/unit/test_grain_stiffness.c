@@ -5,6 +5,7 @@
 
 #include "check.h"
 #include "gem/sim.h"
+#include "gembem/run.h"
 #include "scene_fixture.h"
 
 int main(void)

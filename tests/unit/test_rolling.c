@@ -18,6 +18,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "gembem/run.h"
 #include "solver/global_impl.h"
 #include "scene_fixture.h"
 

@@ -19,6 +19,7 @@
 
 #include "check.h"
 #include "scene_fixture.h"
+#include "gembem/run.h"
 #include "solver/global_impl.h"
 
 static const double KN = 1e8, KT = 7e7, KR = 2e6, ETA = 0.2, D = 1e-3, R = 1;

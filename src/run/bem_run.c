@@ -5,7 +5,7 @@
 #include <string.h>
 
 #include "core/clock.h"
-#include "gembem/output.h"
+#include "gembem/run.h"
 #include "io/bem_output.h"
 #include "io/dir_lock.h"
 #include "io/file_util.h"

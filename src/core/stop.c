@@ -1,10 +1,10 @@
-/* A stop asked for from outside a run (gembem/run.h): one flag for the process, since a signal is
+/* A stop asked for from outside a run (gembem/status.h): one flag for the process, since a signal is
  * the process's; a handler may only store into a volatile sig_atomic_t. */
 #define _POSIX_C_SOURCE 200809L
 #include <signal.h>
 #include <stdio.h>
 
-#include "gembem/run.h"
+#include "gembem/status.h"
 
 static volatile sig_atomic_t stop_reason = 0;
 
