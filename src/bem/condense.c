@@ -116,6 +116,72 @@ gb_status gb_bem_condense(const gb_bem_mesh *m, const gb_bem_system *sys, const 
     return gb_bem_condense_loads(m, sys, prob, 1, group, guard, out, NULL, NULL, err);
 }
 
+/* Each load case's halves with the group's condition replaced by "displacement given" (the other
+ * groups keep theirs): the known half per DOF into tu, the given values into given (nd per case);
+ * every case must give the same halves, so that one factorisation serves them all. */
+static gb_status case_dofs(const gb_bem_mesh *m, const gb_bem_system *sys, const gb_bem_problem *probs, int n_probs,
+                           int group, unsigned char *tu, unsigned char *tu_j, double *given, gb_error *err)
+{
+    size_t nd = 2 * (size_t)m->n;
+    gb_status st = GB_OK;
+    for (int j = 0; !st && j < n_probs; j++) {
+        gb_bem_problem p = probs[j];
+        p.bc[group].kind = GB_BEM_BC_FIXED;
+        st = gb_bem_bc_dofs(m, &sys->material, &p, j ? tu_j : tu, given + (size_t)j * nd, err);
+        if (!st && j && memcmp(tu, tu_j, nd))
+            st = gb_fail(err, GB_EINPUT, "load case %d does not give the same halves (displacement or traction) as "
+                                         "the first", j);
+    }
+    return st;
+}
+
+/* The right-hand sides, nd each: minus H's column of each of the group's mm DOFs, then each load
+ * case's loads (the other groups, a remote field). */
+static void condensed_rhs(const gb_bem_mesh *m, const gb_bem_system *sys, const gb_bem_mixed *mx, double lambda,
+                          int group, const unsigned char *tu, const double *given, int n_probs,
+                          const gb_bem_stiffness *out, double *B)
+{
+    int nd = 2 * m->n, mm = out->m;
+    for (int j = 0; j < mm; j++) {
+        int d = 2 * out->elem[j / 2] + j % 2;
+        const double *h = sys->H + (size_t)d * (size_t)nd;
+        double *b = B + (size_t)j * (size_t)nd;
+        for (int i = 0; i < nd; i++) b[i] = -h[i];
+    }
+    for (int j = 0; j < n_probs; j++)
+        load_rhs(m, sys, mx, lambda, group, tu, given + (size_t)j * (size_t)nd, B + (size_t)(mm + j) * (size_t)nd);
+}
+
+/* The solutions' tractions on the group as forces (F = L t): K's columns, f0, and the further
+ * cases' f0 into f0_more. */
+static void solutions_to_forces(const gb_bem_mesh *m, const double *B, int n_probs, gb_bem_stiffness *out,
+                                double *f0_more)
+{
+    int nd = 2 * m->n, mm = out->m;
+    for (int j = 0; j < mm + n_probs; j++) {
+        const double *z = B + (size_t)j * (size_t)nd;
+        double *col = j < mm ? out->K + (size_t)j * (size_t)mm
+                             : j == mm ? out->f0 : f0_more + (size_t)(j - mm - 1) * (size_t)mm;
+        for (int q = 0; q < mm; q++) {
+            int e = out->elem[q / 2];
+            col[q] = m->length[e] * z[2 * e + q % 2];
+        }
+    }
+}
+
+/* ||K - K^T|| / ||K|| (Frobenius) of an mm x mm K. */
+static double asymmetry(const double *K, int mm)
+{
+    double num = 0, den = 0;
+    for (int i = 0; i < mm; i++)
+        for (int j = 0; j < mm; j++) {
+            double a = K[(size_t)j * (size_t)mm + (size_t)i], b = K[(size_t)i * (size_t)mm + (size_t)j];
+            num += (a - b) * (a - b);
+            den += a * a;
+        }
+    return den > 0 ? sqrt(num / den) : 0;
+}
+
 gb_status gb_bem_condense_loads(const gb_bem_mesh *m, const gb_bem_system *sys, const gb_bem_problem *probs,
                                 int n_probs, int group, const gb_bem_guard *guard, gb_bem_stiffness *out,
                                 double *f0_more, gb_bem_outputs *outs, gb_error *err)
@@ -132,16 +198,7 @@ gb_status gb_bem_condense_loads(const gb_bem_mesh *m, const gb_bem_system *sys, 
     gb_bem_lu lu;
     memset(&lu, 0, sizeof lu);
     gb_status st = (!tu || !tu_j || !given) ? gb_fail(err, GB_ENOMEM, "out of memory") : GB_OK;
-    /* the group's condition is replaced by "displacement given"; the others keep theirs, and every
-     * load case must give the same halves (one factorisation serves them all) */
-    for (int j = 0; !st && j < n_probs; j++) {
-        gb_bem_problem p = probs[j];
-        p.bc[group].kind = GB_BEM_BC_FIXED;
-        st = gb_bem_bc_dofs(m, &sys->material, &p, j ? tu_j : tu, given + (size_t)j * (size_t)nd, err);
-        if (!st && j && memcmp(tu, tu_j, (size_t)nd))
-            st = gb_fail(err, GB_EINPUT, "load case %d does not give the same halves (displacement or traction) as "
-                                         "the first", j);
-    }
+    if (!st) st = case_dofs(m, sys, probs, n_probs, group, tu, tu_j, given, err);
     gb_bem_mixed mx;
     double lambda = 0;
     if (!st) st = gb_bem_mixed_init(&mx, m, sys, tu, 0, err);
@@ -157,40 +214,15 @@ gb_status gb_bem_condense_loads(const gb_bem_mesh *m, const gb_bem_system *sys, 
     if (!st) {
         for (int e = 0, q = 0; e < m->n; e++)
             if (m->group[e] == group) out->elem[q++] = e;
-        /* right-hand sides: -H column of each group DOF; the loads (other groups, remote field) */
-        for (int j = 0; j < mm; j++) {
-            int d = 2 * out->elem[j / 2] + j % 2;
-            const double *h = sys->H + (size_t)d * (size_t)nd;
-            double *b = B + (size_t)j * (size_t)nd;
-            for (int i = 0; i < nd; i++) b[i] = -h[i];
-        }
-        for (int j = 0; j < n_probs; j++)
-            load_rhs(m, sys, &mx, lambda, group, tu, given + (size_t)j * (size_t)nd, B + (size_t)(mm + j) * (size_t)nd);
+        condensed_rhs(m, sys, &mx, lambda, group, tu, given, n_probs, out, B);
         st = gb_bem_lu_solve(&lu, mm + n_probs, B, err);
     }
-    if (!st) {
-        for (int j = 0; j < mm + n_probs; j++) {
-            const double *z = B + (size_t)j * (size_t)nd;
-            double *col = j < mm ? out->K + (size_t)j * (size_t)mm
-                                 : j == mm ? out->f0 : f0_more + (size_t)(j - mm - 1) * (size_t)mm;
-            for (int q = 0; q < mm; q++) {
-                int e = out->elem[q / 2];
-                col[q] = m->length[e] * z[2 * e + q % 2]; /* F = L t */
-            }
-        }
-        for (int j = 0; !st && j < n_probs; j++)
-            st = add_remote(m, sys, &probs[j], out, j ? f0_more + (size_t)(j - 1) * (size_t)mm : out->f0, err);
-    }
+    if (!st) solutions_to_forces(m, B, n_probs, out, f0_more);
+    for (int j = 0; !st && j < n_probs; j++)
+        st = add_remote(m, sys, &probs[j], out, j ? f0_more + (size_t)(j - 1) * (size_t)mm : out->f0, err);
     if (!st && outs) st = case_outputs(m, sys, probs, n_probs, group, tu, given, B, out, outs, err);
     if (!st) {
-        double num = 0, den = 0;
-        for (int i = 0; i < mm; i++)
-            for (int j = 0; j < mm; j++) {
-                double a = out->K[(size_t)j * (size_t)mm + (size_t)i], b = out->K[(size_t)i * (size_t)mm + (size_t)j];
-                num += (a - b) * (a - b);
-                den += a * a;
-            }
-        out->asymmetry = den > 0 ? sqrt(num / den) : 0;
+        out->asymmetry = asymmetry(out->K, mm);
         out->rcond = lu.rcond;
         out->scale = exp(lambda);
     }

@@ -37,6 +37,60 @@ static gb_status check_equilibrium(const gb_bem_mesh *m, const double *t, gb_err
     return GB_OK;
 }
 
+/* The known half of each DOF (tu) and its value (given): the problem's conditions, or with a group
+ * (>= 0) that group's displacements u_group instead of its own condition (less the remote field's,
+ * which is added back at the end). */
+static gb_status known_halves(const gb_bem_mesh *m, const gb_bem_system *sys, const gb_bem_problem *prob, int group,
+                              const double *u_group, unsigned char *tu, double *given, gb_error *err)
+{
+    if (group < 0) return gb_bem_bc_dofs(m, &sys->material, prob, tu, given, err);
+    gb_bem_problem p = *prob; /* the group's own condition is replaced: any valid kind will do */
+    p.bc[group].kind = GB_BEM_BC_FIXED;
+    gb_status st = gb_bem_bc_dofs(m, &sys->material, &p, tu, given, err);
+    for (int e = 0, q = 0; !st && e < m->n; e++) {
+        if (m->group[e] != group) continue;
+        double ru[2] = {0, 0};
+        if (gb_bem_remote_active(m, prob)) gb_bem_remote_u(&sys->material, prob, m->mid + 2 * e, ru);
+        for (int c = 0; c < 2; c++) {
+            tu[2 * e + c] = 1;
+            given[2 * e + c] = u_group[2 * q + c] - ru[c];
+        }
+        q++;
+    }
+    return st;
+}
+
+/* The solution from the mixed system's b (the unknown halves) and the given ones, with the remote
+ * field's displacements and tractions added; an error if it is not finite. */
+static gb_status assemble_solution(const gb_bem_mesh *m, const gb_bem_system *sys, const gb_bem_problem *prob,
+                                   const unsigned char *tu, const double *given, const double *b,
+                                   gb_bem_solution *sol, gb_error *err)
+{
+    int nd = 2 * m->n;
+    sol->ndof = nd;
+    sol->u = malloc(sizeof(double) * (size_t)nd);
+    sol->t = malloc(sizeof(double) * (size_t)nd);
+    if (!sol->u || !sol->t) return gb_fail(err, GB_ENOMEM, "out of memory");
+    for (int d = 0; d < nd; d++) {
+        sol->u[d] = tu[d] ? given[d] : b[d];
+        sol->t[d] = tu[d] ? b[d] : given[d];
+    }
+    if (gb_bem_remote_active(m, prob))
+        for (int e = 0; e < m->n; e++) {
+            double ru[2], rt[2];
+            gb_bem_remote_u(&sys->material, prob, m->mid + 2 * e, ru);
+            gb_bem_remote_t(prob, m->normal + 2 * e, rt);
+            for (int c = 0; c < 2; c++) {
+                sol->u[2 * e + c] += ru[c];
+                sol->t[2 * e + c] += rt[c];
+            }
+        }
+    for (int d = 0; d < nd; d++)
+        if (!isfinite(sol->u[d]) || !isfinite(sol->t[d]))
+            return gb_fail(err, GB_ENUMERIC, "the boundary solution is not finite");
+    return GB_OK;
+}
+
 static gb_status solve(const gb_bem_mesh *m, const gb_bem_system *sys, const gb_bem_problem *prob, int group,
                        const double *u_group, const gb_bem_guard *guard, gb_bem_solution *sol, gb_error *err)
 {
@@ -47,23 +101,7 @@ static gb_status solve(const gb_bem_mesh *m, const gb_bem_system *sys, const gb_
     gb_bem_lu lu;
     memset(&lu, 0, sizeof lu);
     gb_status st = (!tu || !given) ? gb_fail(err, GB_ENOMEM, "out of memory") : GB_OK;
-    if (!st && group >= 0) { /* the group's own condition is replaced: any valid kind will do */
-        gb_bem_problem p = *prob;
-        p.bc[group].kind = GB_BEM_BC_FIXED;
-        st = gb_bem_bc_dofs(m, &sys->material, &p, tu, given, err);
-        for (int e = 0, q = 0; !st && e < m->n; e++) {
-            if (m->group[e] != group) continue;
-            double ru[2] = {0, 0};
-            if (gb_bem_remote_active(m, prob)) gb_bem_remote_u(&sys->material, prob, m->mid + 2 * e, ru);
-            for (int c = 0; c < 2; c++) {
-                tu[2 * e + c] = 1;
-                given[2 * e + c] = u_group[2 * q + c] - ru[c];
-            }
-            q++;
-        }
-    } else if (!st) {
-        st = gb_bem_bc_dofs(m, &sys->material, prob, tu, given, err);
-    }
+    if (!st) st = known_halves(m, sys, prob, group, u_group, tu, given, err);
     int any_u = 0;
     for (int d = 0; !st && d < nd; d++) any_u |= tu[d];
     int border = !st && !m->unbounded && !any_u;
@@ -85,34 +123,10 @@ static gb_status solve(const gb_bem_mesh *m, const gb_bem_system *sys, const gb_
     }
     if (!st) st = gb_bem_lu_solve(&lu, 1, b, err);
     if (!st) {
-        sol->ndof = nd;
-        sol->u = malloc(sizeof(double) * (size_t)nd);
-        sol->t = malloc(sizeof(double) * (size_t)nd);
-        if (!sol->u || !sol->t) st = gb_fail(err, GB_ENOMEM, "out of memory");
-    }
-    if (!st) {
-        for (int d = 0; d < nd; d++) {
-            sol->u[d] = tu[d] ? given[d] : b[d];
-            sol->t[d] = tu[d] ? b[d] : given[d];
-        }
-        if (gb_bem_remote_active(m, prob))
-            for (int e = 0; e < m->n; e++) {
-                double ru[2], rt[2];
-                gb_bem_remote_u(&sys->material, prob, m->mid + 2 * e, ru);
-                gb_bem_remote_t(prob, m->normal + 2 * e, rt);
-                for (int c = 0; c < 2; c++) {
-                    sol->u[2 * e + c] += ru[c];
-                    sol->t[2 * e + c] += rt[c];
-                }
-            }
         sol->rcond = lu.rcond;
         sol->scale = exp(lambda);
         sol->rigid_constrained = border;
-        for (int d = 0; d < nd; d++)
-            if (!isfinite(sol->u[d]) || !isfinite(sol->t[d])) {
-                st = gb_fail(err, GB_ENUMERIC, "the boundary solution is not finite");
-                break;
-            }
+        st = assemble_solution(m, sys, prob, tu, given, b, sol, err);
     }
     if (st) gb_bem_solution_free(sol);
     gb_bem_lu_free(&lu);
