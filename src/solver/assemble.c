@@ -140,15 +140,13 @@ static void add_exact_diagonal(gb_global *gl, const gb_sim *sim, const gb_pair *
 /* K = sum over contacts of [T T']^t S_c [T T'] (K 1-8, 25) over grains, boundary particles (the
  * translational part of T') and walls, plus the host's condensed stiffness on the particles (its
  * symmetric part for a symmetric system: CHOLMOD, PETSc with newton: damped), held DOFs as identity
- * rows. A wall DOF that moves walls inward by lever x its value changes a wall contact's overlap by as much: its coupling with grain i is
- * kn lever (c, s, 0). */
-void gb_global_assemble(gb_global *gl, const gb_sim *sim, double shift)
+ * rows. A wall DOF that moves walls inward by lever x its value changes a wall contact's overlap by
+ * as much: its coupling with grain i is kn lever (c, s, 0). */
+/* The grains' diagonal blocks: each grain's contact stiffness S (K 8), its diagonal times 1 + shift. */
+static void add_grain_blocks(gb_global *gl, double shift)
 {
-    int exact = gl->set->newton == GB_NEWTON_LINE_SEARCH;
-    memset(gl->Ax, 0, (size_t)gl->nnz * sizeof(double));
     const unsigned char *held = gl->held;
-    int n = gl->n, np = gl->np;
-    for (int i = 0; i < n; i++) {
+    for (int i = 0; i < gl->n; i++) {
         const double *S = &gl->S[6 * i];
         double blk[3][3] = {{S[0], S[1], S[2]}, {S[1], S[3], S[4]}, {S[2], S[4], S[5]}};
         int q = entry_of(gl, i, i);
@@ -158,71 +156,98 @@ void gb_global_assemble(gb_global *gl, const gb_sim *sim, double shift)
                 add(gl, i, b, q, a, h ? (a == b ? 1.0 : 0.0) : blk[a][b] * (a == b ? 1 + shift : 1));
             }
     }
-    if (np > 0) {
-        const gb_host *host = sim->host;
-        const double *K = gl->symmetric ? host->Ksym : host->K.K;
-        int m = host->m;
-        for (int e = 0; e < np; e++) {
-            int first = entry_of(gl, n + e, n); /* the particles are contiguous in every particle's list */
-            for (int f = 0; f < np; f++)
-                for (int a = 0; a < 2; a++)
-                    for (int b = 0; b < 2; b++) {
-                        double v = K[(2 * f + a) + (size_t)(2 * e + b) * m];
-                        if (held[gl->dof0[n + e] + b] || held[gl->dof0[n + f] + a]) {
-                            add(gl, n + e, b, first + f, a, f == e && a == b ? 1.0 : 0.0);
-                            continue;
-                        }
-                        if (f == e) {
-                            const double *Sp = &gl->Sp[3 * e];
-                            double c[2][2] = {{Sp[0], Sp[1]}, {Sp[1], Sp[2]}};
-                            v += c[a][b];
-                            if (a == b) v *= 1 + shift;
-                        }
-                        add(gl, n + e, b, first + f, a, v);
+}
+
+/* The host's condensed stiffness between the boundary particles (its symmetric part for a
+ * symmetric system), each particle's contact stiffness on its diagonal block. */
+static void add_host(gb_global *gl, const gb_sim *sim, double shift)
+{
+    const unsigned char *held = gl->held;
+    const gb_host *host = sim->host;
+    const double *K = gl->symmetric ? host->Ksym : host->K.K;
+    int m = host->m, n = gl->n, np = gl->np;
+    for (int e = 0; e < np; e++) {
+        int first = entry_of(gl, n + e, n); /* the particles are contiguous in every particle's list */
+        for (int f = 0; f < np; f++)
+            for (int a = 0; a < 2; a++)
+                for (int b = 0; b < 2; b++) {
+                    double v = K[(2 * f + a) + (size_t)(2 * e + b) * m];
+                    if (held[gl->dof0[n + e] + b] || held[gl->dof0[n + f] + a]) {
+                        add(gl, n + e, b, first + f, a, f == e && a == b ? 1.0 : 0.0);
+                        continue;
                     }
+                    if (f == e) {
+                        const double *Sp = &gl->Sp[3 * e];
+                        double c[2][2] = {{Sp[0], Sp[1]}, {Sp[1], Sp[2]}};
+                        v += c[a][b];
+                        if (a == b) v *= 1 + shift;
+                    }
+                    add(gl, n + e, b, first + f, a, v);
+                }
+    }
+}
+
+/* A grain's contact with a wall: its coupling with each wall DOF that moves the wall (kn lever
+ * (c, s, 0)), the wall DOF's own stiffness into kww. */
+static void add_wall_contact(gb_global *gl, const gb_sim *sim, const gb_pair *p, double kn, double *kww)
+{
+    const unsigned char *held = gl->held;
+    int i = p->i, n = gl->n;
+    double g[2] = {kn * p->nx, kn * p->ny};
+    for (int w = 0; w < NW; w++) {
+        double lever = gb_global_wall_lever(sim, w, -1 - p->j);
+        int nw = wall_node(gl, w);
+        if (lever == 0 || held[gl->dof0[nw]]) continue;
+        kww[w] += kn * lever * lever;
+        int qi = gl->wall_in_grain[w * (n + 1) + i], qw = gl->grain_in_wall[w * (n + 1) + i];
+        for (int a = 0; a < 2; a++) {
+            if (held[3 * i + a]) continue;
+            add(gl, i, a, qi, 0, g[a] * lever);  /* (wall, grain a) */
+            add(gl, nw, 0, qw, a, g[a] * lever); /* (grain a, wall) */
         }
     }
+}
+
+/* A contact k between grain i and a grain or boundary particle: the off-diagonal blocks
+ * T^t S_c T' (K 1-8, 25), a sliding contact's pt following the overlap, the rolling spring, and
+ * with the line search the exact tangent's diagonal terms. */
+static void add_pair(gb_global *gl, const gb_sim *sim, const gb_pair *p, int k, const gb_material *mat)
+{
+    const unsigned char *held = gl->held;
+    int i = p->i, n = gl->n;
+    double c = p->nx, s = p->ny, kn = mat->kn, kt = gl->kt[k];
+    double r1[3] = {c, s, 0}, r2[3] = {-s, c, 1}, q1[3] = {-c, -s, 0}, q2[3] = {s, -c, 1};
+    int j = p->j >= 0 ? p->j : n + GB_PARTICLE_OF(p->j), nb = p->j >= 0 ? 3 : 2;
+    for (int a = 0; a < 3; a++)
+        for (int b = 0; b < nb; b++) {
+            if (held[3 * i + a] || held[gl->dof0[j] + b]) continue;
+            double v = kn * r1[a] * q1[b] + kt * r2[a] * q2[b]; /* T^t S_c T' */
+            double sl = gl->slide[k]; /* a sliding contact's pt follows the overlap (rows r2, q2) */
+            add(gl, j, b, gl->pos_ij[k], a, v + sl * r2[a] * q1[b]); /* (i, a) row, (j, b) column */
+            add(gl, i, a, gl->pos_ji[k], b, v + sl * q2[b] * r1[a]); /* (j, b) row, (i, a) column */
+        }
+    double kr = p->j >= 0 ? rolling_k(gl, sim, p, k, mat) : 0;
+    if (kr > 0 && !held[3 * i + 2] && !held[gl->dof0[j] + 2]) {
+        /* Rolling: F_i's third row holds -mr / r_i, F_j's +mr / r_j, mr -= kr (dw_i - dw_j). */
+        double v = -kr / (sim->state.g[i].r * sim->state.g[p->j].r);
+        add(gl, j, 2, gl->pos_ij[k], 2, v);
+        add(gl, i, 2, gl->pos_ji[k], 2, v);
+    }
+    if (gl->set->newton == GB_NEWTON_LINE_SEARCH) add_exact_diagonal(gl, sim, p, k, i, j, nb);
+}
+
+void gb_global_assemble(gb_global *gl, const gb_sim *sim, double shift)
+{
+    memset(gl->Ax, 0, (size_t)gl->nnz * sizeof(double));
+    add_grain_blocks(gl, shift);
+    if (gl->np > 0) add_host(gl, sim, shift);
     double kww[NW] = {0, 0, 0};
     for (int k = 0; k < sim->state.pairs.n; k++) {
         const gb_pair *p = &sim->state.pairs.p[k];
         if (!(p->d > 0)) continue;
-        int i = p->i;
         const gb_material *mat = gb_sim_material(sim, p->j);
-        double c = p->nx, s = p->ny, kn = mat->kn, kt = gl->kt[k];
-        if (p->j < 0 && !GB_IS_PARTICLE(p->j)) {
-            double g[2] = {kn * c, kn * s};
-            for (int w = 0; w < NW; w++) {
-                double lever = gb_global_wall_lever(sim, w, -1 - p->j);
-                int nw = wall_node(gl, w);
-                if (lever == 0 || held[gl->dof0[nw]]) continue;
-                kww[w] += kn * lever * lever;
-                int qi = gl->wall_in_grain[w * (n + 1) + i], qw = gl->grain_in_wall[w * (n + 1) + i];
-                for (int a = 0; a < 2; a++) {
-                    if (held[3 * i + a]) continue;
-                    add(gl, i, a, qi, 0, g[a] * lever);  /* (wall, grain a) */
-                    add(gl, nw, 0, qw, a, g[a] * lever); /* (grain a, wall) */
-                }
-            }
-            continue;
-        }
-        double r1[3] = {c, s, 0}, r2[3] = {-s, c, 1}, q1[3] = {-c, -s, 0}, q2[3] = {s, -c, 1};
-        int j = p->j >= 0 ? p->j : n + GB_PARTICLE_OF(p->j), nb = p->j >= 0 ? 3 : 2;
-        for (int a = 0; a < 3; a++)
-            for (int b = 0; b < nb; b++) {
-                if (held[3 * i + a] || held[gl->dof0[j] + b]) continue;
-                double v = kn * r1[a] * q1[b] + kt * r2[a] * q2[b]; /* T^t S_c T' */
-                double sl = gl->slide[k]; /* a sliding contact's pt follows the overlap (rows r2, q2) */
-                add(gl, j, b, gl->pos_ij[k], a, v + sl * r2[a] * q1[b]); /* (i, a) row, (j, b) column */
-                add(gl, i, a, gl->pos_ji[k], b, v + sl * q2[b] * r1[a]); /* (j, b) row, (i, a) column */
-            }
-        double kr = p->j >= 0 ? rolling_k(gl, sim, p, k, mat) : 0;
-        if (kr > 0 && !held[3 * i + 2] && !held[gl->dof0[j] + 2]) {
-            /* Rolling: F_i's third row holds -mr / r_i, F_j's +mr / r_j, mr -= kr (dw_i - dw_j). */
-            double v = -kr / (sim->state.g[i].r * sim->state.g[p->j].r);
-            add(gl, j, 2, gl->pos_ij[k], 2, v);
-            add(gl, i, 2, gl->pos_ji[k], 2, v);
-        }
-        if (exact) add_exact_diagonal(gl, sim, p, k, i, j, nb);
+        if (p->j < 0 && !GB_IS_PARTICLE(p->j)) add_wall_contact(gl, sim, p, mat->kn, kww);
+        else add_pair(gl, sim, p, k, mat);
     }
     /* A wall DOF whose walls touch nothing gets the stiffness of one grain-wall contact, as in the
      * reference iteration. */
@@ -230,7 +255,7 @@ void gb_global_assemble(gb_global *gl, const gb_sim *sim, double shift)
         int nw = wall_node(gl, w);
         double lever = w == W_MEAN ? 0.5 * fmax(sim->ref_width, sim->ref_height) : 1;
         double kmin = sim->scene->grain_wall.kn * lever * lever;
-        add(gl, nw, 0, entry_of(gl, nw, nw), 0, held[gl->dof0[nw]] ? 1.0 : fmax(kww[w], kmin) * (1 + shift));
+        add(gl, nw, 0, entry_of(gl, nw, nw), 0, gl->held[gl->dof0[nw]] ? 1.0 : fmax(kww[w], kmin) * (1 + shift));
     }
 }
 
