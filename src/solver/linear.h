@@ -30,7 +30,7 @@ typedef struct {
     long iterations;                     /* the last solve's Krylov iterations (0: a direct solve) */
 } gb_linear_stats;
 
-/* A backend's state for one system (each backend defines its own struct). */
+/* A backend's state for one system: opaque, each backend's own struct behind the pointer. */
 typedef struct gb_linear gb_linear;
 
 /* A correction's system solved on the previous factorisation converges within this many Krylov
