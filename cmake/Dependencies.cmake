@@ -13,7 +13,7 @@ find_library(UMFPACK_LIBRARY umfpack REQUIRED)
 add_library(gb_suitesparse INTERFACE)
 target_include_directories(gb_suitesparse INTERFACE ${SUITESPARSE_INCLUDE_DIR})
 target_link_libraries(gb_suitesparse INTERFACE ${UMFPACK_LIBRARY} ${CHOLMOD_LIBRARY})
-# CHOLMOD runs OpenMP loops (libgomp); src/solver/global.c serialises them (see cholmod_serial).
+# CHOLMOD runs OpenMP loops (libgomp); src/solver/linear_cholmod.c serialises them (factorise).
 find_package(OpenMP REQUIRED COMPONENTS C)
 target_link_libraries(gb_suitesparse INTERFACE OpenMP::OpenMP_C)
 

@@ -22,7 +22,7 @@ endfunction()
 function(gb_add_module_test name source)
   gb_add_test(${name} ${source} ${ARGN})
   get_filename_component(exe ${source} NAME_WE)
-  target_include_directories(${exe} PRIVATE ${PROJECT_SOURCE_DIR}/src)
+  target_include_directories(${exe} PRIVATE ${PROJECT_SOURCE_DIR}/src ${PROJECT_BINARY_DIR}/src) # core/config.h: generated
 endfunction()
 
 # Called at the end of every CMakeLists.txt that adds tests: checks the names of this directory's

@@ -81,7 +81,7 @@ typedef struct {
 
 enum { GB_METHOD_REFERENCE = 0, GB_METHOD_GLOBAL = 1 };
 /* The global solver's linear solver. PETSC: the matrix distributed over the MPI ranks
- * (src/solver/linear_petsc.h); symmetric with newton: damped. */
+ * (src/solver/linear_petsc.c); symmetric with newton: damped. */
 typedef enum { GB_LINEAR_CHOLMOD = 0, GB_LINEAR_UMFPACK = 1, GB_LINEAR_PETSC = 2 } gb_linear_kind;
 /* The global solver's iteration. DAMPED: Levenberg-Marquardt damping with non-monotone acceptance
  * (src/solver/damped.c). LINE_SEARCH: the exact tangent (sliding contacts and the contacts' rotation

@@ -3,7 +3,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "gembem/petsc.h"
+#include "core/config.h"
 #include "scene/petsc_read.h"
 
 static const char *const KSPS[] = {"preonly", "cg", "gmres", "fgmres", "bcgs", "minres"};
@@ -37,7 +37,7 @@ gb_status gb_read_petsc(gb_ymap *solver, struct fy_node *linear_node, gb_solver_
         if (!section) return GB_OK;
         return gb_yaml_fail(solver->doc, section, err, "solver.petsc: applies to linear: petsc only");
     }
-    if (!gb_petsc_available())
+    if (!GB_HAVE_PETSC)
         return gb_yaml_fail(solver->doc, linear_node, err, "solver.linear: this gembem was built without PETSc; "
                                                            "install libpetsc-real-dev and rebuild");
     gb_ymap m;

@@ -1,6 +1,8 @@
 /* The `solver:` section of a scene: its defaults (gb_solver_defaults) and its reading. */
+#include <stdio.h>
 #include <string.h>
 
+#include "core/config.h"
 #include "gembem/scene.h"
 #include "scene/petsc_read.h"
 #include "scene/solver_read.h"
@@ -41,6 +43,32 @@ static gb_status read_accuracy(gb_ymap *m, gb_solver_settings *sv, gb_error *err
     return gb_ymap_close(&r, err);
 }
 
+/* The linear solvers that this gembem has, by name, in the order of their kinds (core/config.h). */
+#define GB_LINEAR_NAME(name) #name,
+static const char *const LINEAR[] = {GB_LINEAR_SOLVERS(GB_LINEAR_NAME)};
+#undef GB_LINEAR_NAME
+enum { N_LINEAR = (int)(sizeof LINEAR / sizeof LINEAR[0]) };
+
+/* solver.linear's kind (gb_linear_kind), or -1 if it names none. */
+static int linear_kind(const char *name)
+{
+    for (int k = 0; k < N_LINEAR; k++)
+        if (!strcmp(name, LINEAR[k])) return k;
+    return -1;
+}
+
+/* The refusal of an unknown solver.linear at node v, with every name it could have been. */
+static gb_status unknown_linear(gb_ymap *m, struct fy_node *v, const char *linear, gb_error *err)
+{
+    char names[256] = "";
+    for (int k = 0; k < N_LINEAR; k++) {
+        size_t used = strlen(names);
+        snprintf(names + used, sizeof names - used, "%s'%s'", k == 0 ? "" : k == N_LINEAR - 1 ? " or " : ", ",
+                 LINEAR[k]);
+    }
+    return gb_yaml_fail(m->doc, v, err, "solver.linear: expected %s, found '%s'", names, linear);
+}
+
 gb_status gb_solver_section_read(gb_ymap *top, gb_solver_settings *sv, gb_error *err)
 {
     gb_ymap m;
@@ -62,21 +90,20 @@ gb_status gb_solver_section_read(gb_ymap *top, gb_solver_settings *sv, gb_error 
     /* The defaults (docs/solvers.md): the line search on UMFPACK, which converged where the damped
      * iteration did not (docs/solver-design.md); the damped iteration with CHOLMOD (symmetric:
      * it cannot factor the line search's exact tangent) and PETSc (whose CG needs symmetry). */
+    int kind = linear[0] ? linear_kind(linear) : -1;
     if (!strcmp(newton, "line_search")) sv->newton = GB_NEWTON_LINE_SEARCH;
-    else if (!newton[0] && sv->method == GB_METHOD_GLOBAL && (!linear[0] || !strcmp(linear, "umfpack")))
+    else if (!newton[0] && sv->method == GB_METHOD_GLOBAL && (!linear[0] || kind == GB_LINEAR_UMFPACK))
         sv->newton = GB_NEWTON_LINE_SEARCH;
     else if (newton[0] && strcmp(newton, "damped")) {
         gb_ymap_find(&m, "newton", 0, &v, err);
         return gb_yaml_fail(m.doc, v, err, "solver.newton: expected 'damped' or 'line_search', found '%s'", newton);
     }
     gb_ymap_find(&m, "linear", 0, &v, err);
-    if (!strcmp(linear, "umfpack") || (!linear[0] && sv->newton == GB_NEWTON_LINE_SEARCH)) sv->linear = 1;
-    else if (!strcmp(linear, "petsc")) sv->linear = 2;
-    else if (linear[0] && strcmp(linear, "cholmod"))
-        return gb_yaml_fail(m.doc, v, err, "solver.linear: expected 'cholmod', 'umfpack' or 'petsc', found '%s'",
-                            linear);
-    if ((st = gb_read_petsc(&m, sv->linear == 2 ? v : NULL, sv, err))) return st;
-    if (sv->newton == GB_NEWTON_LINE_SEARCH && (sv->method != GB_METHOD_GLOBAL || sv->linear == 0)) {
+    if (linear[0] && kind < 0) return unknown_linear(&m, v, linear, err);
+    sv->linear = linear[0] ? kind : sv->newton == GB_NEWTON_LINE_SEARCH ? GB_LINEAR_UMFPACK : GB_LINEAR_CHOLMOD;
+    if ((st = gb_read_petsc(&m, sv->linear == GB_LINEAR_PETSC ? v : NULL, sv, err))) return st;
+    /* (a linear solver that factors only the symmetric part, as CHOLMOD, is refused here too) */
+    if (sv->newton == GB_NEWTON_LINE_SEARCH && (sv->method != GB_METHOD_GLOBAL || sv->linear == GB_LINEAR_CHOLMOD)) {
         gb_ymap_find(&m, "newton", 0, &v, err);
         return gb_yaml_fail(m.doc, v, err, "solver.newton: line_search is an iteration of method: global with "
                                            "linear: umfpack or petsc (its exact tangent is not symmetric)");

@@ -1,12 +1,11 @@
-/* The global system's solution: its sparse pattern, factorisation (CHOLMOD, UMFPACK or PETSc), the
- * corrections of sliding contacts it unloads, and the moves it gives (assembly: assemble.c). */
+/* The global system's solution: its sparse pattern, its factorisation and solves by the linear
+ * solver the settings name (a backend of linear.h), the corrections of sliding contacts it unloads,
+ * and the moves it gives (assembly: assemble.c). */
 #include <math.h>
-#include <omp.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/blas.h"
 #include "core/clock.h"
 #include "solver/global_impl.h"
 
@@ -25,8 +24,11 @@ gb_status gb_global_create(const gb_solver_settings *set, int n_grains, int n_pa
     gb_global *gl = calloc(1, sizeof *gl);
     if (!gl) return gb_fail(err, GB_ENOMEM, "out of memory");
     gl->set = set;
-    gl->kind = (gb_linear_kind)set->linear;
-    gl->symmetric = gl->kind != GB_LINEAR_UMFPACK;
+    gl->linear = gb_linear_backend_of(set->linear);
+    if (!gl->linear) {
+        free(gl);
+        return gb_fail(err, GB_EINPUT, "solver.linear: no linear solver of kind %d in this gembem", set->linear);
+    }
     gl->n = n_grains;
     gl->np = n_particles;
     gl->nodes = n_grains + n_particles + NW;
@@ -55,33 +57,19 @@ gb_status gb_global_create(const gb_solver_settings *set, int n_grains, int n_pa
         gl->dof0[v] = d;
         d += node_dofs(gl, v);
     }
-    cholmod_start(&gl->cc);
-    gl->cc.print = 0;
-    gl->cc.error_handler = NULL;
-    umfpack_dl_defaults(gl->control);
     *out = gl;
     return GB_OK;
-}
-
-static void free_factors(gb_global *gl)
-{
-    if (gl->L) cholmod_free_factor(&gl->L, &gl->cc);
-    if (gl->A) cholmod_free_sparse(&gl->A, &gl->cc);
-    if (gl->symbolic) umfpack_dl_free_symbolic(&gl->symbolic);
-    if (gl->numeric) umfpack_dl_free_numeric(&gl->numeric);
 }
 
 void gb_global_free(gb_global *gl)
 {
     if (!gl) return;
-    free_factors(gl);
-    gb_petsc_free(gl->petsc);
-    cholmod_finish(&gl->cc);
+    if (gl->ls) gl->linear->free(gl->ls);
     free(gl->dof0), free(gl->adj_start), free(gl->adj), free(gl->adj_off), free(gl->collen), free(gl->colstart);
     free(gl->pos_ij), free(gl->pos_ji), free(gl->wall_in_grain), free(gl->grain_in_wall), free(gl->touch);
     free(gl->Ap), free(gl->Ai), free(gl->Ax), free(gl->rhs), free(gl->x), free(gl->held);
     free(gl->S), free(gl->Sp), free(gl->kt), free(gl->slide), free(gl->stick), free(gl->unloading);
-    free(gl->resumed), free(gl->lp), free(gl->li);
+    free(gl->resumed);
     free(gl);
 }
 
@@ -198,121 +186,56 @@ static gb_status build_pattern(gb_global *gl, const gb_pair_set *P, gb_error *er
     return GB_OK;
 }
 
+static gb_linear_matrix matrix_of(const gb_global *gl)
+{
+    return (gb_linear_matrix){.n = gl->ndof, .nnz = gl->nnz, .Ap = gl->Ap, .Ai = gl->Ai, .Ax = gl->Ax};
+}
+
 static gb_status analyse(gb_global *gl, gb_error *err)
 {
     double t0 = gb_clock_seconds();
-    free_factors(gl);
-    int n3 = gl->ndof;
-    if (gl->kind == GB_LINEAR_CHOLMOD) {
-        gl->A = cholmod_allocate_sparse((size_t)n3, (size_t)n3, (size_t)gl->nnz, 1, 1, 1, CHOLMOD_REAL, &gl->cc);
-        if (!gl->A) return gb_fail(err, GB_ENOMEM, "CHOLMOD: cannot allocate the matrix");
-        memcpy(gl->A->p, gl->Ap, ((size_t)n3 + 1) * sizeof(int));
-        memcpy(gl->A->i, gl->Ai, (size_t)gl->nnz * sizeof(int));
-        memcpy(gl->A->x, gl->Ax, (size_t)gl->nnz * sizeof(double));
-        gl->L = cholmod_analyze(gl->A, &gl->cc);
-        if (!gl->L) return gb_fail(err, GB_ENUMERIC, "CHOLMOD analysis failed (status %d)", gl->cc.status);
-    } else if (gl->kind == GB_LINEAR_PETSC) {
-        gb_status st = gb_petsc_pattern(gl->petsc, n3, gl->Ap, gl->Ai, err);
-        if (st) return st;
-    } else {
-        SuiteSparse_long *lp = realloc(gl->lp, ((size_t)n3 + 1) * sizeof *lp);
-        if (lp) gl->lp = lp;
-        SuiteSparse_long *li = lp ? realloc(gl->li, ((size_t)gl->nnz + 1) * sizeof *li) : NULL;
-        if (!li) return gb_fail(err, GB_ENOMEM, "UMFPACK: out of memory for the pattern of %d unknowns", n3);
-        gl->li = li;
-        for (int k = 0; k <= n3; k++) lp[k] = gl->Ap[k];
-        for (int k = 0; k < gl->nnz; k++) li[k] = gl->Ai[k];
-        SuiteSparse_long st = umfpack_dl_symbolic(n3, n3, lp, li, gl->Ax, &gl->symbolic, gl->control, gl->info);
-        if (st != UMFPACK_OK)
-            return gb_fail(err, GB_ENUMERIC, "UMFPACK symbolic analysis failed (status %ld)", (long)st);
-    }
+    gb_linear_matrix A = matrix_of(gl);
+    gb_status st = gl->linear->analyse(gl->ls, &A, err);
+    if (st) return st;
     gl->stats.analyses++;
     gl->stats.analyse += gb_clock_seconds() - t0;
     return GB_OK;
 }
 
-/* CHOLMOD 3 (SuiteSparse 5.12, Debian 12) runs the assembly loops of its supernodal factorisation
- * in OpenMP regions of a compiled-in 4 threads (CHOLMOD_OMP_NUM_THREADS), whatever the cores and
- * OMP_NUM_THREADS: on this 2-core machine its threads spent most of a factorisation in futex
- * waits (94 factorisations of the 1e4-disc benchmark: 9.3 s, 3.0 s serialised). The dense work is
- * BLAS, threaded by OPENBLAS_NUM_THREADS; the regions are made inactive (max-active-levels 0) for
- * the factorisation and the caller's setting restored. */
-static void cholmod_serial_factorize(gb_global *gl)
+/* Factorises and solves K x = rhs; *singular if K was not positive definite (Cholesky) or was
+ * singular, so that the caller can regularise further. */
+static gb_status factor_solve(gb_global *gl, int *singular, gb_error *err)
 {
-    int levels = omp_get_max_active_levels();
-    omp_set_max_active_levels(0);
-    cholmod_factorize(gl->A, gl->L, &gl->cc);
-    omp_set_max_active_levels(levels);
-}
-
-/* Factorises and solves K x = rhs; returns 1 if K was not positive definite (CHOLMOD) or
- * singular (UMFPACK), so that the caller can regularise further. */
-static int factor_solve_blas(gb_global *gl, gb_error *err, gb_status *st)
-{
-    int n3 = gl->ndof;
-    *st = GB_OK;
+    const gb_linear_backend *b = gl->linear;
+    gb_linear_matrix A = matrix_of(gl);
     double t0 = gb_clock_seconds();
-    if (gl->kind == GB_LINEAR_CHOLMOD) {
-        memcpy(gl->A->x, gl->Ax, (size_t)gl->nnz * sizeof(double));
-        cholmod_serial_factorize(gl);
-        gl->stats.factorisations++;
-        gl->stats.factor_entries = gl->cc.lnz, gl->stats.factor_flops = gl->cc.fl;
-        gl->stats.factorise += gb_clock_seconds() - t0;
-        if (gl->cc.status == CHOLMOD_NOT_POSDEF) return 1;
-        if (gl->cc.status != CHOLMOD_OK) {
-            *st = gb_fail(err, GB_ENUMERIC, "CHOLMOD factorisation failed (status %d)", gl->cc.status);
-            return 0;
-        }
-        t0 = gb_clock_seconds();
-        cholmod_dense B = {(size_t)n3, 1, (size_t)n3, (size_t)n3, gl->rhs, NULL, CHOLMOD_REAL, CHOLMOD_DOUBLE};
-        cholmod_dense *X = cholmod_solve(CHOLMOD_A, gl->L, &B, &gl->cc);
-        if (!X) {
-            *st = gb_fail(err, GB_ENUMERIC, "CHOLMOD solve failed (status %d)", gl->cc.status);
-            return 0;
-        }
-        memcpy(gl->x, X->x, (size_t)n3 * sizeof(double));
-        cholmod_free_dense(&X, &gl->cc);
-    } else if (gl->kind == GB_LINEAR_PETSC) {
-        /* set-up (distribution and factorisation) and solve are timed inside */
-        int singular = gb_petsc_solve(gl->petsc, gl->Ax, gl->rhs, gl->x, &gl->stats.factorise, &gl->stats.solve,
-                                      &gl->stats.ksp_iterations, err, st);
-        gl->stats.factorisations++;
-        return singular;
-    } else {
-        if (gl->numeric) umfpack_dl_free_numeric(&gl->numeric);
-        SuiteSparse_long s =
-            umfpack_dl_numeric(gl->lp, gl->li, gl->Ax, gl->symbolic, &gl->numeric, gl->control, gl->info);
-        gl->stats.factorisations++;
-        gl->stats.factor_entries = gl->info[UMFPACK_LNZ] + gl->info[UMFPACK_UNZ];
-        gl->stats.factor_flops = gl->info[UMFPACK_FLOPS];
-        gl->stats.factorise += gb_clock_seconds() - t0;
-        if (s == UMFPACK_WARNING_singular_matrix) return 1;
-        if (s != UMFPACK_OK) {
-            *st = gb_fail(err, GB_ENUMERIC, "UMFPACK factorisation failed (status %ld%s)", (long)s,
-                          s == UMFPACK_ERROR_out_of_memory ? ": out of memory" : "");
-            return 0;
-        }
-        t0 = gb_clock_seconds();
-        s = umfpack_dl_solve(UMFPACK_A, gl->lp, gl->li, gl->Ax, gl->x, gl->rhs, gl->numeric, gl->control, gl->info);
-        if (s != UMFPACK_OK) {
-            *st = gb_fail(err, GB_ENUMERIC, "UMFPACK solve failed (status %ld)", (long)s);
-            return 0;
-        }
-    }
+    gb_status st = b->factorise(gl->ls, &A, singular, err);
+    gb_linear_stats last = b->statistics(gl->ls);
+    gl->stats.factorisations++;
+    gl->stats.factor_entries = last.factor_entries, gl->stats.factor_flops = last.factor_flops;
+    gl->stats.factorise += gb_clock_seconds() - t0;
+    if (st || *singular) return st;
+    t0 = gb_clock_seconds();
+    st = b->solve(gl->ls, &A, gl->rhs, gl->x, singular, err);
+    gl->stats.ksp_iterations += b->statistics(gl->ls).iterations;
     gl->stats.solve += gb_clock_seconds() - t0;
-    return 0;
+    return st;
 }
 
-/* CHOLMOD's supernodal factorisation and solve and UMFPACK's frontal ones call OpenBLAS (dpotrf,
- * dgemv, ...), which splits them by its thread count and adds the parts in another order: a
- * 1000-grain relaxation took 212 iterations with OPENBLAS_NUM_THREADS=1 and 202 with 2, its grains
- * ending up to 0.8 radius apart. They run on one BLAS thread (core/blas.h); PETSc's ranks keep theirs. */
-static int factor_solve(gb_global *gl, gb_error *err, gb_status *st)
+/* The system solved on the previous factorisation, where the backend can (a correction's: it
+ * differs by a few contacts' kt); 1 if that converged. */
+static int solve_on_factor(gb_global *gl, gb_error *err, gb_status *st)
 {
-    int pin = gl->kind != GB_LINEAR_PETSC, threads = pin ? gb_blas_single() : 1;
-    int singular = factor_solve_blas(gl, err, st);
-    if (pin) gb_blas_restore(threads);
-    return singular;
+    const gb_linear_backend *b = gl->linear;
+    int converged = 0;
+    *st = GB_OK;
+    if (!b->solve_on_factor) return 0;
+    gb_linear_matrix A = matrix_of(gl);
+    double t0 = gb_clock_seconds();
+    *st = b->solve_on_factor(gl->ls, &A, gl->rhs, gl->x, &converged, err);
+    gl->stats.pcg_steps += b->statistics(gl->ls).iterations;
+    gl->stats.solve += gb_clock_seconds() - t0;
+    return !*st && converged;
 }
 
 /* The wall DOFs' residuals (force conjugate to each DOF minus its target, docs/method.md section 5):
@@ -335,75 +258,6 @@ static void wall_residuals(gb_global *gl, const gb_sim *sim, const gb_wall_contr
         gl->held[d + W_MEAN] = 0;
         gl->rhs[d + W_MEAN] = gb_gem_mean_stress_error(sim, wc) * (W * sim->ref_height + H * sim->ref_width);
     }
-}
-
-/* M^-1 v with the current CHOLMOD factor, into out; 0 on failure. */
-static int factor_apply(gb_global *gl, const double *v, double *out)
-{
-    size_t n3 = (size_t)gl->ndof;
-    cholmod_dense B = {n3, 1, n3, n3, (void *)v, NULL, CHOLMOD_REAL, CHOLMOD_DOUBLE};
-    int threads = gb_blas_single(); /* as factor_solve */
-    cholmod_dense *X = cholmod_solve(CHOLMOD_A, gl->L, &B, &gl->cc);
-    gb_blas_restore(threads);
-    if (!X) return 0;
-    memcpy(out, X->x, n3 * sizeof(double));
-    cholmod_free_dense(&X, &gl->cc);
-    return 1;
-}
-
-/* y = A v with the assembled matrix (both triangles are stored). */
-static void matvec(const gb_global *gl, const double *v, double *y)
-{
-    memset(y, 0, (size_t)gl->ndof * sizeof(double));
-    for (int c = 0; c < gl->ndof; c++)
-        for (int q = gl->Ap[c]; q < gl->Ap[c + 1]; q++) y[gl->Ai[q]] += gl->Ax[q] * v[c];
-}
-
-/* Solves the assembled system with conjugate gradients preconditioned by the factor of the
- * previous matrix (CHOLMOD only): after a correction that gives kt back to a few contacts the two
- * differ by a matrix of low rank, and CG converges in about that many steps, each a pair of
- * triangular solves, far cheaper than a new factorisation. Returns 1 if it converged to 1e-6 of
- * |rhs| (an inexact Newton step: the next iteration corrects what it leaves) within PCG_MAX steps
- * (gl->x holds the solution), 0 if a factorisation is needed. */
-enum { PCG_MAX = 20 };
-static int pcg_previous_factor(gb_global *gl)
-{
-    size_t n3 = (size_t)gl->ndof;
-    double *r = malloc(n3 * sizeof(double)), *z = malloc(n3 * sizeof(double)), *p = malloc(n3 * sizeof(double)),
-           *Ap = malloc(n3 * sizeof(double));
-    int ok = 0;
-    double t0 = gb_clock_seconds();
-    if (!r || !z || !p || !Ap || !factor_apply(gl, gl->rhs, gl->x)) goto done;
-    double bb = 0, rz = 0;
-    matvec(gl, gl->x, Ap);
-    for (size_t k = 0; k < n3; k++) r[k] = gl->rhs[k] - Ap[k], bb += gl->rhs[k] * gl->rhs[k];
-    double tol2 = 1e-12 * bb;
-    for (int it = 0; it <= PCG_MAX; it++) {
-        double rr = 0;
-        for (size_t k = 0; k < n3; k++) rr += r[k] * r[k];
-        if (!(rr > tol2)) {
-            ok = rr == rr;
-            break;
-        }
-        if (it == PCG_MAX || !factor_apply(gl, r, z)) break;
-        double rz1 = 0;
-        for (size_t k = 0; k < n3; k++) rz1 += r[k] * z[k];
-        double beta = it ? rz1 / rz : 0;
-        rz = rz1;
-        /* (the first direction is z itself: p holds no value yet, and 0 times garbage may be NaN) */
-        for (size_t k = 0; k < n3; k++) p[k] = it ? z[k] + beta * p[k] : z[k];
-        matvec(gl, p, Ap);
-        double pAp = 0;
-        for (size_t k = 0; k < n3; k++) pAp += p[k] * Ap[k];
-        if (!(pAp > 0)) break; /* not positive definite: factorise */
-        double alpha = rz / pAp;
-        for (size_t k = 0; k < n3; k++) gl->x[k] += alpha * p[k], r[k] -= alpha * Ap[k];
-        gl->stats.pcg_steps++;
-    }
-done:
-    free(r), free(z), free(p), free(Ap);
-    gl->stats.solve += gb_clock_seconds() - t0;
-    return ok;
 }
 
 /* A test hook: with GB_DUMP_FIRST_SOLVE=FILE, the first solution of the process (one value a line)
@@ -447,13 +301,8 @@ static gb_status solve_system(gb_global *gl, const gb_sim *sim, const unsigned c
     gl->stats.assemble += gb_clock_seconds() - t0;
     /* UMFPACK's symbolic analysis reads the values too: analyse the assembled matrix. */
     if (new_pattern && (st = analyse(gl, err))) return st;
-    if (reuse_factor && gl->kind == GB_LINEAR_CHOLMOD && gl->L && pcg_previous_factor(gl)) {
-        gl->stats.pcg_solves++;
-        return GB_OK;
-    }
-    if (reuse_factor && gl->kind == GB_LINEAR_PETSC) {
-        int done = gb_petsc_solve_on_factor(gl->petsc, gl->Ax, gl->rhs, gl->x, &gl->stats.solve, &gl->stats.pcg_steps,
-                                            err, &st);
+    if (reuse_factor) {
+        int done = solve_on_factor(gl, err, &st);
         if (st) return st;
         if (done) {
             gl->stats.pcg_solves++;
@@ -461,8 +310,8 @@ static gb_status solve_system(gb_global *gl, const gb_sim *sim, const unsigned c
         }
     }
     for (;;) {
-        int singular = factor_solve(gl, err, &st);
-        if (st) return st;
+        int singular;
+        if ((st = factor_solve(gl, &singular, err))) return st;
         if (!singular) break;
         if (shift >= cap)
             return gb_fail(err, GB_ENUMERIC, "the contact stiffness stays singular after a relative diagonal shift "
@@ -482,7 +331,7 @@ static gb_status solve_system(gb_global *gl, const gb_sim *sim, const unsigned c
 static void resume_unloading(gb_global *gl, const gb_pair_set *P)
 {
     if (gl->resumed_of == P->generation && P->n) memcpy(gl->unloading, gl->resumed, (size_t)P->n);
-    free(gl->resumed), free(gl->lp), free(gl->li);
+    free(gl->resumed);
     gl->resumed = NULL;
 }
 
@@ -493,7 +342,7 @@ const unsigned char *gb_global_unloading(const gb_global *gl, const gb_pair_set 
 
 gb_status gb_global_resume(gb_global *gl, const gb_pair_set *P, const unsigned char *unloading, gb_error *err)
 {
-    free(gl->resumed), free(gl->lp), free(gl->li);
+    free(gl->resumed);
     gl->resumed = NULL;
     gl->pattern_of = -1;
     if (!unloading || !P->n) return GB_OK;
@@ -507,10 +356,11 @@ gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const unsigned char *in_sy
                           double mu, gb_error *err)
 {
     gb_status st;
-    /* PETSc's solver, made at the first move: the scene's settings and its symmetry are known then. */
-    if (gl->kind == GB_LINEAR_PETSC && !gl->petsc) {
-        gl->symmetric = gl->set->newton != GB_NEWTON_LINE_SEARCH;
-        if ((st = gb_petsc_create(&gl->set->petsc, gl->symmetric, &gl->petsc, err))) return st;
+    /* The linear solver, made at the first move (PETSc's starts MPI): the scene's settings and the
+     * matrix's symmetry are known then. */
+    if (!gl->ls) {
+        gl->symmetric = gb_linear_symmetric(gl->linear, gl->set);
+        if ((st = gl->linear->create(gl->set, gl->symmetric, &gl->ls, err))) return st;
     }
     double t0 = gb_clock_seconds();
     gl->stats.moves++;
@@ -537,8 +387,8 @@ gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const unsigned char *in_sy
      * it back, it sticks again with its spring kt: Newton's step, blind to that, overshoots, and the
      * contact flips between sliding and sticking from one iteration to the next. Such contacts get
      * kt (an active set): if they are few, at once, the system solved once more by conjugate
-     * gradients on the first factor (CHOLMOD, see pcg_previous_factor: CG needs about one step per
-     * contact changed); if they are many (dozens at 1e5 grains), from the next iteration on, which
+     * gradients on the first factor where the linear solver can (solve_on_factor: CG needs about
+     * one step per contact changed); if they are many (dozens at 1e5 grains), from the next iteration on, which
      * costs fewer factorisations than a second one now (1e5 jammed discs: 67 instead of 97 for a
      * load step, 43 s instead of 61 s; 1e4: even). They keep kt until a solution loads them again
      * in their sliding direction. */
@@ -558,7 +408,7 @@ gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const unsigned char *in_sy
         }
         if (load < 0) gl->stick[k] = 1, gl->unloading[k] = 1, unloaded++;
     }
-    if (unloaded && unloaded <= PCG_MAX / 2) {
+    if (unloaded && unloaded <= GB_LINEAR_ON_FACTOR_MAX / 2) {
         t0 = gb_clock_seconds();
         gb_global_tangents(gl, sim);
         gl->stats.assemble += gb_clock_seconds() - t0;

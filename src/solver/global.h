@@ -1,6 +1,6 @@
 /* The global solver for granular scenes: every grain's move from one sparse system, the contact
  * stiffness assembled over all contacts (3 DOFs per grain, docs/method.md section 3), K dX = -F, solved
- * with CHOLMOD (symmetric), UMFPACK or PETSc (distributed, linear_petsc.h); the symbolic analysis is reused while the candidate-pair
+ * with CHOLMOD (symmetric), UMFPACK or PETSc (distributed) through linear.h; the symbolic analysis is reused while the candidate-pair
  * list (the sparsity pattern) stays the same. */
 #ifndef GB_GLOBAL_H
 #define GB_GLOBAL_H

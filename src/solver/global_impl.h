@@ -3,12 +3,9 @@
 #ifndef GB_GLOBAL_IMPL_H
 #define GB_GLOBAL_IMPL_H
 
-#include <cholmod.h>
-#include <umfpack.h>
-
 #include "solver/global.h"
+#include "solver/linear.h"
 #include "solver/solver_impl.h"
-#include "solver/linear_petsc.h"
 
 /* Wall DOFs: x axis (left and right walls inward), y axis (bottom and top inward), and the
  * isotropic strain of constant mean stress control. */
@@ -20,8 +17,9 @@ enum { NW = 3, W_X = 0, W_Y = 1, W_MEAN = 2 };
  * same rows. */
 struct gb_global {
     const gb_solver_settings *set;
-    gb_linear_kind kind;
-    int symmetric;            /* the host's symmetric part and CHOLMOD's matrix (else the exact tangent) */
+    const gb_linear_backend *linear; /* solver.linear's */
+    gb_linear *ls;            /* its state, made at the first move */
+    int symmetric;            /* the tangent's symmetric part (else the exact tangent): gb_linear_symmetric */
     int n, np;                /* grains, boundary particles */
     int nodes, ndof;
     long pattern_of;          /* pairs.generation the pattern was built for (-1: none) */
@@ -49,16 +47,6 @@ struct gb_global {
     int kt_cap;
     unsigned char *resumed;   /* unloading flags from a checkpoint, for the pattern of pairs.generation resumed_of */
     long resumed_of;
-    cholmod_common cc;
-    cholmod_sparse *A;
-    cholmod_factor *L;
-    void *symbolic, *numeric;
-    /* UMFPACK's copy of the pattern in 64-bit indices: its int version (umfpack_di) failed "out of
-     * memory" on the 1e6-disc system with 4 GB in use and 11 GB free (its workspace is indexed
-     * by int), the long version (umfpack_dl) does not have that limit */
-    SuiteSparse_long *lp, *li;
-    double control[UMFPACK_CONTROL], info[UMFPACK_INFO];
-    gb_petsc *petsc;
     int dumped;               /* the first solution was written (GB_DUMP_FIRST_SOLVE, a test hook) */
     gb_global_stats stats;
 };

@@ -1,7 +1,9 @@
-/* The PETSc linear solver (solver.linear: petsc): rank 0 assembles, every rank holds a block of
- * rows and takes part in the KSP solve (docs/scaling.md). Each operation is one function run by
- * every rank (system_*): rank 0 calls it after broadcasting a command, the workers when they
- * receive it, so that both sides make the same collective calls in the same order. */
+/* The PETSc linear solver (solver.linear: petsc): the matrix that global.c assembles on rank 0
+ * (compressed columns), its rows distributed over the MPI ranks, solved by a KSP (MUMPS's Cholesky
+ * or LU by default; CG with GAMG or hypre, GMRES, ...), the solution gathered back to rank 0
+ * (docs/scaling.md). Each operation is one function run by every rank (system_*): rank 0 calls it
+ * after broadcasting a command, the workers (gb_petsc_serve) when they receive it, so that both
+ * sides make the same collective calls in the same order. Without PETSc: linear_none.c. */
 #define _POSIX_C_SOURCE 199309L
 #include <petscksp.h>
 #include <stdio.h>
@@ -9,11 +11,12 @@
 #include <string.h>
 #include <time.h>
 
-#include "core/clock.h"
 #include "gembem/petsc.h"
-#include "solver/linear_petsc.h"
+#include "solver/linear.h"
 
-enum { CMD_STOP = 0, CMD_CREATE = 1, CMD_PATTERN = 2, CMD_SOLVE = 3, CMD_FREE = 4, CMD_ON_FACTOR = 5 };
+enum { CMD_STOP = 0, CMD_CREATE = 1, CMD_PATTERN = 2, CMD_SOLVE = 3, CMD_FREE = 4, CMD_ON_FACTOR = 5, CMD_FACTOR = 6 };
+
+typedef struct gb_petsc gb_petsc;
 
 /* MPI and PETSc are started once per process, and the workers keep their systems by id: this
  * process-wide state mirrors theirs. */
@@ -41,6 +44,7 @@ struct gb_petsc {
     int *perm;                /* per CSC entry: its CSR entry */
     PetscScalar *csr;
     int *cnt, *dsp, *rcnt, *rdsp; /* per rank: entries and first entry, rows and first row */
+    gb_linear_stats last;     /* rank 0 */
 };
 
 /* What a worker needs of a new system. */
@@ -113,8 +117,8 @@ static PetscErrorCode system_setup(gb_petsc *ps)
 }
 
 /* A correction's system (a few contacts given kt back) by CG (GMRES if unsymmetric) preconditioned
- * by the previous factorisation, kept (PCSetReusePreconditioner): as CHOLMOD's
- * pcg_previous_factor in global.c, converged to 1e-6 of |rhs| within max_it steps or not at all.
+ * by the previous factorisation, kept (PCSetReusePreconditioner): as CHOLMOD's (linear_pcg.c),
+ * converged to 1e-6 of |rhs| within max_it steps or not at all.
  * `on` switches the KSP to it, then back to the scene's solver. */
 typedef struct {
     char type[64];
@@ -228,21 +232,14 @@ static PetscErrorCode system_pattern(gb_petsc *ps, PetscInt n, const int *Ap, co
     return 0;
 }
 
-/* New values and right-hand side, sent from rank 0 by rows; the solve; the solution gathered to
- * rank 0. The pattern is unchanged, so that a direct solver keeps its symbolic analysis. */
-static PetscErrorCode system_solve(gb_petsc *ps, const double *Ax, const double *rhs, double *x, int on_factor,
-                                   int *failed, PetscInt *its, double *t_setup, double *t_solve)
+/* New values, sent from rank 0 by rows. The pattern is unchanged, so that a direct solver keeps
+ * its symbolic analysis. */
+static PetscErrorCode system_values(gb_petsc *ps, const double *Ax)
 {
-    MPI_Comm comm = PETSC_COMM_WORLD;
-    double t0 = gb_clock_seconds();
     int nnz = (int)ps->ri[ps->m];
     if (proc.rank == 0)
         for (int q = 0; q < ps->cnt[proc.size - 1] + ps->dsp[proc.size - 1]; q++) ps->csr[ps->perm[q]] = Ax[q];
-    PetscCallMPI(MPI_Scatterv(ps->csr, ps->cnt, ps->dsp, MPIU_SCALAR, ps->v, nnz, MPIU_SCALAR, 0, comm));
-    PetscScalar *b;
-    PetscCall(VecGetArray(ps->b, &b));
-    PetscCallMPI(MPI_Scatterv(rhs, ps->rcnt, ps->rdsp, MPIU_SCALAR, b, (int)ps->m, MPIU_SCALAR, 0, comm));
-    PetscCall(VecRestoreArray(ps->b, &b));
+    PetscCallMPI(MPI_Scatterv(ps->csr, ps->cnt, ps->dsp, MPIU_SCALAR, ps->v, nnz, MPIU_SCALAR, 0, PETSC_COMM_WORLD));
     for (PetscInt r = 0; r < ps->m; r++) {
         PetscInt row = ps->rstart + r;
         PetscCall(MatSetValues(ps->A, 1, &row, ps->ri[r + 1] - ps->ri[r], ps->cj + ps->ri[r], ps->v + ps->ri[r],
@@ -250,19 +247,32 @@ static PetscErrorCode system_solve(gb_petsc *ps, const double *Ax, const double 
     }
     PetscCall(MatAssemblyBegin(ps->A, MAT_FINAL_ASSEMBLY));
     PetscCall(MatAssemblyEnd(ps->A, MAT_FINAL_ASSEMBLY));
-    /* New values: the set-up (a direct solver's numerical factorisation, on the symbolic one of
-     * the same pattern) is done here, not inside KSPSolve, so that it is timed as such. */
-    saved_ksp sv;
-    if (on_factor) PetscCall(krylov_on_factor(ps, 1, on_factor, &sv));
+    return 0;
+}
+
+/* New values and the set-up (a direct solver's numerical factorisation), done here rather than
+ * inside KSPSolve so that it is timed as the factorisation. A factorisation that fails leaves its
+ * preconditioner failed: the solve says so (KSP_DIVERGED_PC_FAILED). */
+static PetscErrorCode system_factor(gb_petsc *ps, const double *Ax)
+{
+    PetscCall(system_values(ps, Ax));
     PetscCall(KSPSetOperators(ps->ksp, ps->A, ps->A));
     PetscCall(KSPSetUp(ps->ksp));
-    double t1 = gb_clock_seconds();
+    return 0;
+}
+
+/* The right-hand side, sent from rank 0 by rows; the solve; the solution gathered to rank 0. */
+static PetscErrorCode system_solve(gb_petsc *ps, const double *rhs, double *x, int *failed, PetscInt *its)
+{
+    PetscScalar *b;
+    PetscCall(VecGetArray(ps->b, &b));
+    PetscCallMPI(MPI_Scatterv(rhs, ps->rcnt, ps->rdsp, MPIU_SCALAR, b, (int)ps->m, MPIU_SCALAR, 0, PETSC_COMM_WORLD));
+    PetscCall(VecRestoreArray(ps->b, &b));
     PetscCall(KSPSolve(ps->ksp, ps->b, ps->x));
     KSPConvergedReason reason;
     PetscCall(KSPGetConvergedReason(ps->ksp, &reason));
     PetscCall(KSPGetIterationNumber(ps->ksp, its));
     *failed = reason < 0 ? (int)reason : 0;
-    if (on_factor) PetscCall(krylov_on_factor(ps, 0, 0, &sv));
     PetscCall(VecScatterBegin(ps->to0, ps->x, ps->x0, INSERT_VALUES, SCATTER_FORWARD));
     PetscCall(VecScatterEnd(ps->to0, ps->x, ps->x0, INSERT_VALUES, SCATTER_FORWARD));
     if (proc.rank == 0) {
@@ -271,8 +281,20 @@ static PetscErrorCode system_solve(gb_petsc *ps, const double *Ax, const double 
         memcpy(x, xa, (size_t)ps->n * sizeof(double));
         PetscCall(VecRestoreArrayRead(ps->x0, &xa));
     }
-    *t_setup += t1 - t0;
-    *t_solve += gb_clock_seconds() - t1;
+    return 0;
+}
+
+/* New values solved by the Krylov method on the previous factorisation (krylov_on_factor). */
+static PetscErrorCode system_on_factor(gb_petsc *ps, const double *Ax, const double *rhs, double *x, int *failed,
+                                       PetscInt *its)
+{
+    saved_ksp sv;
+    PetscCall(system_values(ps, Ax));
+    PetscCall(krylov_on_factor(ps, 1, GB_LINEAR_ON_FACTOR_MAX, &sv));
+    PetscCall(KSPSetOperators(ps->ksp, ps->A, ps->A));
+    PetscCall(KSPSetUp(ps->ksp));
+    PetscCall(system_solve(ps, rhs, x, failed, its));
+    PetscCall(krylov_on_factor(ps, 0, 0, &sv));
     return 0;
 }
 
@@ -316,72 +338,108 @@ static gb_status petsc_failed(const char *what, PetscErrorCode e, gb_error *err)
     return gb_fail(err, GB_ENUMERIC, "PETSc: %s failed (error %d; PETSc's message above)", what, (int)e);
 }
 
-gb_status gb_petsc_create(const gb_petsc_settings *s, int symmetric, gb_petsc **out, gb_error *err)
+static gb_petsc *state_of(gb_linear *ls) { return (gb_petsc *)(void *)ls; }
+
+static gb_status create(const gb_solver_settings *set, int symmetric, gb_linear **out, gb_error *err)
 {
+    *out = NULL;
     if (!proc.started && start()) return gb_fail(err, GB_ENUMERIC, "PETSc: cannot start MPI and PETSc");
     gb_petsc *ps = calloc(1, sizeof *ps);
     if (!ps) return gb_fail(err, GB_ENOMEM, "out of memory");
     ps->id = proc.next_id++;
     ps->symmetric = symmetric;
-    ps->s = *s;
+    ps->s = set->petsc;
     command(CMD_CREATE, ps->id);
-    wire_settings w = {symmetric, *s};
+    wire_settings w = {symmetric, set->petsc};
     (void)MPI_Bcast(&w, (int)sizeof w, MPI_BYTE, 0, PETSC_COMM_WORLD);
     PetscErrorCode e = system_setup(ps);
-    *out = ps;
+    *out = (gb_linear *)(void *)ps;
     return e ? petsc_failed("the solver's set-up", e, err) : GB_OK;
 }
 
-void gb_petsc_free(gb_petsc *ps)
+static void free_state(gb_linear *ls)
 {
-    if (!ps) return;
+    gb_petsc *ps = state_of(ls);
     if (proc.broken) return; /* the workers are not listening any more */
     command(CMD_FREE, ps->id);
     if (system_free(ps)) proc.broken = 1;
 }
 
-gb_status gb_petsc_pattern(gb_petsc *ps, int n, const int *Ap, const int *Ai, gb_error *err)
+static gb_status analyse(gb_linear *ls, const gb_linear_matrix *M, gb_error *err)
 {
+    gb_petsc *ps = state_of(ls);
+    int n = M->n;
     command(CMD_PATTERN, ps->id);
     (void)MPI_Bcast(&n, 1, MPI_INT, 0, PETSC_COMM_WORLD);
-    PetscErrorCode e = system_pattern(ps, n, Ap, Ai);
+    PetscErrorCode e = system_pattern(ps, n, M->Ap, M->Ai);
     return e ? petsc_failed("the matrix's distribution", e, err) : GB_OK;
 }
 
-int gb_petsc_solve(gb_petsc *ps, const double *Ax, const double *rhs, double *x, double *t_setup, double *t_solve,
-                   long *iterations, gb_error *err, gb_status *st)
+static gb_status factorise(gb_linear *ls, const gb_linear_matrix *M, int *singular, gb_error *err)
 {
-    int failed;
-    PetscInt its = 0;
-    *st = GB_OK;
-    command(CMD_SOLVE, ps->id);
-    PetscErrorCode e = system_solve(ps, Ax, rhs, x, 0, &failed, &its, t_setup, t_solve);
-    if (e) return *st = petsc_failed("the solve", e, err), 0;
-    *iterations += its;
-    if (failed == KSP_DIVERGED_PC_FAILED || failed == KSP_DIVERGED_INDEFINITE_PC ||
-        failed == KSP_DIVERGED_INDEFINITE_MAT || failed == KSP_DIVERGED_BREAKDOWN)
-        return 1;
-    if (failed)
-        *st = gb_fail(err, GB_ENUMERIC, "PETSc: the %s solve did not converge (%s after %d iterations, rtol %g)",
-                      ps->s.ksp, KSPConvergedReasons[failed], (int)its, ps->s.rtol);
-    return 0;
+    gb_petsc *ps = state_of(ls);
+    *singular = 0;
+    command(CMD_FACTOR, ps->id);
+    PetscErrorCode e = system_factor(ps, M->Ax);
+    return e ? petsc_failed("the factorisation (the preconditioner's set-up)", e, err) : GB_OK;
 }
 
-int gb_petsc_solve_on_factor(gb_petsc *ps, const double *Ax, const double *rhs, double *x, double *t_solve,
-                             long *iterations, gb_error *err, gb_status *st)
+/* A factorisation or preconditioner that failed or met an indefinite matrix shows here: *singular,
+ * so that the caller regularises. */
+static gb_status solve(gb_linear *ls, const gb_linear_matrix *M, const double *rhs, double *x, int *singular,
+                       gb_error *err)
 {
+    (void)M;
+    gb_petsc *ps = state_of(ls);
     int failed;
     PetscInt its = 0;
-    double t_setup = 0;
-    *st = GB_OK;
-    if (!ps->direct) return 0;
-    command(CMD_ON_FACTOR, ps->id);
-    PetscErrorCode e = system_solve(ps, Ax, rhs, x, GB_PETSC_ON_FACTOR_MAX, &failed, &its, &t_setup, t_solve);
-    if (e) return *st = petsc_failed("the solve on the previous factor", e, err), 0;
-    *iterations += its;
-    *t_solve += t_setup;
-    return !failed;
+    *singular = 0;
+    ps->last.iterations = 0;
+    command(CMD_SOLVE, ps->id);
+    PetscErrorCode e = system_solve(ps, rhs, x, &failed, &its);
+    if (e) return petsc_failed("the solve", e, err);
+    ps->last.iterations = its;
+    if (failed == KSP_DIVERGED_PC_FAILED || failed == KSP_DIVERGED_INDEFINITE_PC ||
+        failed == KSP_DIVERGED_INDEFINITE_MAT || failed == KSP_DIVERGED_BREAKDOWN)
+        return *singular = 1, GB_OK;
+    if (failed)
+        return gb_fail(err, GB_ENUMERIC, "PETSc: the %s solve did not converge (%s after %d iterations, rtol %g)",
+                       ps->s.ksp, KSPConvergedReasons[failed], (int)its, ps->s.rtol);
+    return GB_OK;
 }
+
+/* With a direct solver only: an iterative KSP has no factorisation to reuse. */
+static gb_status solve_on_factor(gb_linear *ls, const gb_linear_matrix *M, const double *rhs, double *x,
+                                 int *converged, gb_error *err)
+{
+    gb_petsc *ps = state_of(ls);
+    int failed;
+    PetscInt its = 0;
+    *converged = 0;
+    ps->last.iterations = 0;
+    if (!ps->direct) return GB_OK;
+    command(CMD_ON_FACTOR, ps->id);
+    PetscErrorCode e = system_on_factor(ps, M->Ax, rhs, x, &failed, &its);
+    if (e) return petsc_failed("the solve on the previous factor", e, err);
+    ps->last.iterations = its;
+    *converged = !failed;
+    return GB_OK;
+}
+
+static gb_linear_stats statistics(const gb_linear *ls) { return ((const struct gb_petsc *)(const void *)ls)->last; }
+
+const gb_linear_backend gb_linear_petsc = {
+    .name = "petsc",
+    .kind = GB_LINEAR_PETSC,
+    .symmetry = GB_SYMMETRIC_IF_DAMPED,
+    .create = create,
+    .analyse = analyse,
+    .factorise = factorise,
+    .solve = solve,
+    .solve_on_factor = solve_on_factor,
+    .statistics = statistics,
+    .free = free_state,
+};
 
 /* ---- the workers ---- */
 
@@ -408,13 +466,11 @@ static PetscErrorCode serve_one(int cmd, int id)
         PetscCallMPI(MPI_Bcast(&n, 1, MPI_INT, 0, PETSC_COMM_WORLD));
         return system_pattern(ps, n, NULL, NULL);
     }
-    if (cmd == CMD_SOLVE || cmd == CMD_ON_FACTOR) {
-        int failed;
-        PetscInt its;
-        double t1 = 0, t2 = 0;
-        return system_solve(ps, NULL, NULL, NULL, cmd == CMD_ON_FACTOR ? GB_PETSC_ON_FACTOR_MAX : 0, &failed, &its,
-                            &t1, &t2);
-    }
+    int failed;
+    PetscInt its;
+    if (cmd == CMD_FACTOR) return system_factor(ps, NULL);
+    if (cmd == CMD_SOLVE) return system_solve(ps, NULL, NULL, &failed, &its);
+    if (cmd == CMD_ON_FACTOR) return system_on_factor(ps, NULL, NULL, NULL, &failed, &its);
     proc.table[id] = NULL;
     return system_free(ps);
 }
