@@ -12,6 +12,7 @@
 #include "core/memory.h"
 #include "gembem/petsc.h"
 #include "io/scene_report.h"
+#include "solver/linear.h"
 #include "solver/solver.h"
 
 void gb_run_record_origin(FILE *f, const char *command, const char *scene, const char *when_key, const char *when)
@@ -68,9 +69,9 @@ void gb_run_record_settings(FILE *f, const gb_scene *sc)
     fprintf(f, "  solver:\n    method: %s\n", sv->method == GB_METHOD_GLOBAL ? "global" : "reference");
     if (sv->method == GB_METHOD_GLOBAL)
         fprintf(f, "    linear: %s\n    newton: %s\n    global_alpha: %.17g\n    max_move: %.17g\n",
-                sv->linear == 2 ? "petsc" : sv->linear ? "umfpack" : "cholmod",
+                gb_linear_backend_of(sv->linear)->name,
                 sv->newton == GB_NEWTON_LINE_SEARCH ? "line_search" : "damped", sv->global_alpha, sv->max_move);
-    if (sv->method == GB_METHOD_GLOBAL && sv->linear == 2) {
+    if (sv->method == GB_METHOD_GLOBAL && sv->linear == GB_LINEAR_PETSC) {
         const gb_petsc_settings *p = &sv->petsc;
         fprintf(f, "    petsc:\n      ranks: %d   # MPI processes in the solves\n      ksp: %s\n      pc: %s\n"
                    "      factor: %s\n      rtol: %.17g\n      ", gb_petsc_ranks(), p->ksp,
