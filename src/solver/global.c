@@ -85,8 +85,10 @@ static int cmp_int(const void *a, const void *b)
 /* Which wall DOFs a grain touching these walls is coupled to. */
 static int couples(unsigned char touch, int w) { return w == W_X ? (touch & 1) : w == W_Y ? (touch & 2) >> 1 : touch != 0; }
 
-/* The pattern of the candidate pairs: it changes only when the pair list is rebuilt. */
-static gb_status build_pattern(gb_global *gl, const gb_pair_set *P, gb_error *err)
+/* The nodes' adjacency (gl->adj from gl->adj_start: each node, itself included, sorted): the
+ * pairs' grains and particles, every particle with every other (the host), every wall DOF with
+ * every other, and the grains touching walls with the wall DOFs that move them (gl->touch). */
+static gb_status node_adjacency(gb_global *gl, const gb_pair_set *P, gb_error *err)
 {
     int n = gl->n, np = gl->np, nodes = gl->nodes;
     memset(gl->touch, 0, (size_t)n);
@@ -141,7 +143,15 @@ static gb_status build_pattern(gb_global *gl, const gb_pair_set *P, gb_error *er
                 gl->adj[fill[wall_node(gl, w)]++] = i;
             }
     for (int v = 0; v < nodes; v++) qsort(gl->adj + deg[v], (size_t)(deg[v + 1] - deg[v]), sizeof(int), cmp_int);
-    /* Row offsets, column lengths and starts. */
+    return GB_OK;
+}
+
+/* The matrix's pattern from the adjacency: its column starts (Ap) and row indices (Ai), each node's
+ * column block as long as its neighbours' DOFs. */
+static gb_status matrix_pattern(gb_global *gl, gb_error *err)
+{
+    const int *deg = gl->adj_start;
+    int nodes = gl->nodes;
     int nnz = 0;
     for (int v = 0; v < nodes; v++) {
         int off = 0;
@@ -166,7 +176,13 @@ static gb_status build_pattern(gb_global *gl, const gb_pair_set *P, gb_error *er
             for (int e = deg[v]; e < deg[v + 1]; e++)
                 for (int a = 0; a < node_dofs(gl, gl->adj[e]); a++) gl->Ai[q++] = gl->dof0[gl->adj[e]] + a;
         }
-    /* Where each pair's blocks go. */
+    return GB_OK;
+}
+
+/* Where each pair's blocks (pos_ij, pos_ji) and each grain's coupling with a wall DOF go. */
+static gb_status pair_positions(gb_global *gl, const gb_pair_set *P, gb_error *err)
+{
+    int n = gl->n;
     if (P->n > gl->pos_cap) {
         int *a = realloc(gl->pos_ij, (size_t)P->n * sizeof(int)), *b = realloc(gl->pos_ji, (size_t)P->n * sizeof(int));
         if (!a || !b) return gb_fail(err, GB_ENOMEM, "out of memory for the sparsity pattern");
@@ -184,6 +200,15 @@ static gb_status build_pattern(gb_global *gl, const gb_pair_set *P, gb_error *er
             gl->grain_in_wall[w * (n + 1) + i] = couples(gl->touch[i], w) ? entry_of(gl, wall_node(gl, w), i) : -1;
         }
     return GB_OK;
+}
+
+/* The pattern of the candidate pairs: it changes only when the pair list is rebuilt. */
+static gb_status build_pattern(gb_global *gl, const gb_pair_set *P, gb_error *err)
+{
+    gb_status st = node_adjacency(gl, P, err);
+    if (!st) st = matrix_pattern(gl, err);
+    if (!st) st = pair_positions(gl, P, err);
+    return st;
 }
 
 static gb_linear_matrix matrix_of(const gb_global *gl)
@@ -352,47 +377,18 @@ gb_status gb_global_resume(gb_global *gl, const gb_pair_set *P, const unsigned c
     return GB_OK;
 }
 
-gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const unsigned char *in_system, const gb_wall_control *wc,
-                          double mu, gb_error *err)
+/* A sliding contact has no tangential stiffness in K (it slides on), but if the solution moves it
+ * back, it sticks again with its spring kt: Newton's step, blind to that, overshoots, and the
+ * contact flips between sliding and sticking from one iteration to the next. Such contacts get kt
+ * (an active set): if they are few, at once, the system solved once more by conjugate gradients on
+ * the first factor where the linear solver can (solve_on_factor: CG needs about one step per
+ * contact changed); if they are many (dozens at 1e5 grains), from the next iteration on, which
+ * costs fewer factorisations than a second one now (1e5 jammed discs: 67 instead of 97 for a load
+ * step, 43 s instead of 61 s; 1e4: even). They keep kt until a solution loads them again in their
+ * sliding direction. Returns how many the solution gl->x unloads now. */
+static int unload_sliding(gb_global *gl, const gb_sim *sim)
 {
-    gb_status st;
-    /* The linear solver, made at the first move (PETSc's starts MPI): the scene's settings and the
-     * matrix's symmetry are known then. */
-    if (!gl->ls) {
-        gl->symmetric = gb_linear_symmetric(gl->linear, gl->set);
-        if ((st = gl->linear->create(gl->set, gl->symmetric, &gl->ls, err))) return st;
-    }
-    double t0 = gb_clock_seconds();
-    gl->stats.moves++;
-    int new_pattern = gl->pattern_of != sim->state.pairs.generation;
-    if (new_pattern) {
-        if ((st = build_pattern(gl, &sim->state.pairs, err))) return st;
-        gl->pattern_of = sim->state.pairs.generation;
-    }
-    int n = gl->n, np = gl->np;
-    if ((st = gb_global_pair_buffers(gl, &sim->state.pairs, err))) return st;
-    if (new_pattern && sim->state.pairs.n) memset(gl->unloading, 0, (size_t)sim->state.pairs.n);
-    if (gl->resumed) resume_unloading(gl, &sim->state.pairs);
-    /* A grain with a single contact in the system keeps that contact's kt (see gb_solver_mark_system). */
-    for (int k = 0; k < sim->state.pairs.n; k++) {
-        const gb_pair *p = &sim->state.pairs.p[k];
-        int single_i = in_system[p->i] >= GB_IN_SYSTEM_NO_ROTATION; /* NO_ROTATION or SINGLE */
-        int single_j = p->j >= 0 && in_system[p->j] >= GB_IN_SYSTEM_NO_ROTATION;
-        gl->stick[k] = p->d > 0 && (gl->unloading[k] || single_i || single_j);
-    }
-    gb_global_tangents(gl, sim);
-    gl->stats.assemble += gb_clock_seconds() - t0;
-    if ((st = solve_system(gl, sim, in_system, wc, mu, new_pattern, 0, err))) return st;
-    /* A sliding contact has no tangential stiffness in K (it slides on), but if the solution moves
-     * it back, it sticks again with its spring kt: Newton's step, blind to that, overshoots, and the
-     * contact flips between sliding and sticking from one iteration to the next. Such contacts get
-     * kt (an active set): if they are few, at once, the system solved once more by conjugate
-     * gradients on the first factor where the linear solver can (solve_on_factor: CG needs about
-     * one step per contact changed); if they are many (dozens at 1e5 grains), from the next iteration on, which
-     * costs fewer factorisations than a second one now (1e5 jammed discs: 67 instead of 97 for a
-     * load step, 43 s instead of 61 s; 1e4: even). They keep kt until a solution loads them again
-     * in their sliding direction. */
-    int unloaded = 0;
+    int unloaded = 0, n = gl->n;
     for (int k = 0; k < sim->state.pairs.n; k++) {
         const gb_pair *p = &sim->state.pairs.p[k];
         if (!(p->d > 0) || !(gb_sim_material(sim, p->j)->kt > 0) || p->pt == 0) continue;
@@ -408,24 +404,23 @@ gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const unsigned char *in_sy
         }
         if (load < 0) gl->stick[k] = 1, gl->unloading[k] = 1, unloaded++;
     }
-    if (unloaded && unloaded <= GB_LINEAR_ON_FACTOR_MAX / 2) {
-        t0 = gb_clock_seconds();
-        gb_global_tangents(gl, sim);
-        gl->stats.assemble += gb_clock_seconds() - t0;
-        if ((st = solve_system(gl, sim, in_system, wc, mu, 0, 1, err))) return st;
-        gl->stats.corrections++;
-    }
-    /* The moves: the solution, scaled down as a whole if a grain or particle would move more than
-     * max_move (a share of its radius), and the reference cases for the held grains. With the
-     * line search, a grain that would then turn by more than TURN_MOVES max_move rad does not
-     * turn: two touching grains whose other contacts all slide roll on each other (r1 dw1 = -r2
-     * dw2 leaves their contact unstrained) at no stiffness, a mechanism that the solve answers
-     * with any turn (up to 3.8e5 rad in 30 runs of the localisation statistics, 1 606 moves; other
-     * moves turn a grain by at most 0.28 rad there, the mechanism's mildest by 0.31-0.78). Scaled
-     * to the bound, such a turn is still arbitrary (the smoother then starts from a pair rolled by
-     * 1 rad); held, it is left to the smoother, which sees the contacts' laws
-     * (tests/unit/test_rolling_mechanism.c). The damped solver has no smoother: held, the pair of
-     * tests/hybrid/load_grains.yaml stalls it (it converges after turning by 2.1e5 rad). */
+    return unloaded;
+}
+
+/* The moves from the solution gl->x, scaled down as a whole if a grain or particle would move more
+ * than max_move (a share of its radius), and the reference cases for the held grains. With the
+ * line search, a grain that would then turn by more than TURN_MOVES max_move rad does not
+ * turn: two touching grains whose other contacts all slide roll on each other (r1 dw1 = -r2
+ * dw2 leaves their contact unstrained) at no stiffness, a mechanism that the solve answers
+ * with any turn (up to 3.8e5 rad in 30 runs of the localisation statistics, 1 606 moves; other
+ * moves turn a grain by at most 0.28 rad there, the mechanism's mildest by 0.31-0.78). Scaled
+ * to the bound, such a turn is still arbitrary (the smoother then starts from a pair rolled by
+ * 1 rad); held, it is left to the smoother, which sees the contacts' laws
+ * (tests/unit/test_rolling_mechanism.c). The damped solver has no smoother: held, the pair of
+ * tests/hybrid/load_grains.yaml stalls it (it converges after turning by 2.1e5 rad). */
+static void set_moves(const gb_global *gl, gb_sim *sim, const unsigned char *in_system)
+{
+    int n = gl->n, np = gl->np;
     const gb_solver_settings *sv = gl->set;
     double worst = 0;
     for (int i = 0; i < n; i++) worst = fmax(worst, hypot(gl->x[3 * i], gl->x[3 * i + 1]) / sim->state.g[i].r);
@@ -459,5 +454,46 @@ gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const unsigned char *in_sy
             if (wall == GB_WALL_TOP) sim->scratch.wall_dx[wall][1] -= in;
         }
     }
+}
+
+gb_status gb_global_moves(gb_global *gl, gb_sim *sim, const unsigned char *in_system, const gb_wall_control *wc,
+                          double mu, gb_error *err)
+{
+    gb_status st;
+    /* The linear solver, made at the first move (PETSc's starts MPI): the scene's settings and the
+     * matrix's symmetry are known then. */
+    if (!gl->ls) {
+        gl->symmetric = gb_linear_symmetric(gl->linear, gl->set);
+        if ((st = gl->linear->create(gl->set, gl->symmetric, &gl->ls, err))) return st;
+    }
+    double t0 = gb_clock_seconds();
+    gl->stats.moves++;
+    int new_pattern = gl->pattern_of != sim->state.pairs.generation;
+    if (new_pattern) {
+        if ((st = build_pattern(gl, &sim->state.pairs, err))) return st;
+        gl->pattern_of = sim->state.pairs.generation;
+    }
+    if ((st = gb_global_pair_buffers(gl, &sim->state.pairs, err))) return st;
+    if (new_pattern && sim->state.pairs.n) memset(gl->unloading, 0, (size_t)sim->state.pairs.n);
+    if (gl->resumed) resume_unloading(gl, &sim->state.pairs);
+    /* A grain with a single contact in the system keeps that contact's kt (see gb_solver_mark_system). */
+    for (int k = 0; k < sim->state.pairs.n; k++) {
+        const gb_pair *p = &sim->state.pairs.p[k];
+        int single_i = in_system[p->i] >= GB_IN_SYSTEM_NO_ROTATION; /* NO_ROTATION or SINGLE */
+        int single_j = p->j >= 0 && in_system[p->j] >= GB_IN_SYSTEM_NO_ROTATION;
+        gl->stick[k] = p->d > 0 && (gl->unloading[k] || single_i || single_j);
+    }
+    gb_global_tangents(gl, sim);
+    gl->stats.assemble += gb_clock_seconds() - t0;
+    if ((st = solve_system(gl, sim, in_system, wc, mu, new_pattern, 0, err))) return st;
+    int unloaded = unload_sliding(gl, sim);
+    if (unloaded && unloaded <= GB_LINEAR_ON_FACTOR_MAX / 2) {
+        t0 = gb_clock_seconds();
+        gb_global_tangents(gl, sim);
+        gl->stats.assemble += gb_clock_seconds() - t0;
+        if ((st = solve_system(gl, sim, in_system, wc, mu, 0, 1, err))) return st;
+        gl->stats.corrections++;
+    }
+    set_moves(gl, sim, in_system);
     return GB_OK;
 }
