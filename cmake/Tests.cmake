@@ -1,4 +1,4 @@
-# Tests by module (issue 18, item 5): every ctest is named <module>_<what> and carries <module> as a
+# Tests by module: every ctest is named <module>_<what> and carries <module> as a
 # label, so `ctest -L bem` runs the boundary element module's tests. <module> is a folder of src/ or
 # one of the project's other parts below. A test may carry more labels (the modules it also runs,
 # set where it is added: set_property(TEST name APPEND PROPERTY LABELS cli)).
