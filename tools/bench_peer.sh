@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Peer benchmark against LAMMPS (issue 15, item 1; a benchmark, not a test): for each N, the
+# Peer benchmark against LAMMPS (a benchmark, not a test): for each N, the
 # packing of tools/bench_solver.sh (tools/solver_packing.sh: gb_packgen --method push, porosity
 # 0.18, overlaps <= 0.015 r_min, seed 1; cached in runs/bench_peer/nN), relaxed with 25 deg
 # between discs, walls fixed and frictionless, kn = 1e8, kt = 7e7 dyn/cm, to every disc's largest
@@ -40,7 +40,7 @@
 #   earlier invocation whose inputs are the same: another gembem solver on the same path)
 #   [RANKS=1] (LAMMPS on RANKS MPI processes: mpirun, Debian's openmpi-bin) [THREADS=1] (gembem's
 #   solver.threads) [KN_SCALE=1] (kn, kt and the static criterion times KN_SCALE: the same
-#   packing with stiffer springs, issue 15's cost in kn)
+#   packing with stiffer springs, the cost in kn)
 #   tools/bench_peer.sh [BUILD_DIR] [N ...]        (default: build, 1000 10000 100000)
 #
 # Set-up (this script's own; tools/setup.sh and the tests do not need LAMMPS): `lmp` and

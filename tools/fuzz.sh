@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Fuzzes the readers (issue 14) with libFuzzer: builds fuzz/'s targets with clang, ASan and UBSan
+# Fuzzes the readers with libFuzzer: builds fuzz/'s targets with clang, ASan and UBSan
 # in build-fuzz/, then runs each in turn (one core) for SECONDS (default 60), starting from its
 # seed corpus fuzz/corpus/<target> and what earlier runs kept in build-fuzz/corpus/<target>.
 #   tools/fuzz.sh [seconds] [target ...]     targets: scene grains contacts state bem mesh (the default)

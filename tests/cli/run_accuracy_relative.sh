@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# solver.accuracy {relative: r} against the absolute accuracy it resolves to (issue 22 item 1): a
+# solver.accuracy {relative: r} against the absolute accuracy it resolves to: a
 # one-step run with {relative: 1e-4}, then the same scene with the accuracy that steps.csv says the
 # step was solved to (%.17g: exact); the two run directories must be equal byte for byte (steps.csv's
 # seconds and run_info.yaml aside). The step's force scale is checked too: the stage's load force

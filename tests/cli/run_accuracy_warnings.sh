@@ -43,8 +43,8 @@ res=$(sed -n 's/^  largest_relative_residual: \([^ ]*\).*/\1/p' "$out/jammed/run
   ok "jammed: the verdict's largest relative residual $res <= 1e-4" || bad "jammed: largest relative residual '$res'"
 
 # The same grains 4 % apart, a loose accuracy: the trap. The loose grains are a file
-# (tests/cli/warn/loose_300.csv: the fixture's discs as tools/jammed_packing.sh made them up to
-# session 8, spread by 4 % about the box centre): whether a loose run jams within a step is chaotic,
+# (tests/cli/warn/loose_300.csv: the fixture's discs as an earlier tools/jammed_packing.sh
+# made them, spread by 4 % about the box centre): whether a loose run jams within a step is chaotic,
 # so that a packing made by other FIRE arithmetic gave other warnings.
 scene "$root/tests/cli/warn/loose_300.csv" "5.0e4" "{left: 0.26, right: 14.09, bottom: 0.26, top: 14.09}" \
   "isotropic: {stress: 1.5e4, steps: 3}" "isotropic: {stress: 1.5e5, steps: 1}" > "$out/loose.yaml"

@@ -83,7 +83,7 @@ grep -q "^warning: \"the host's longest cavity element" "$out/warn/run_info.yaml
   { echo "FAIL warn_coarse_host.yaml: no warning in run_info.yaml"; fail=$((fail + 1)); }
 grep -q "^  elements: {outer: 40, cavity: 16}" "$out/warn/run_info.yaml" 2>/dev/null ||
   { echo "FAIL warn_coarse_host.yaml: run_info.yaml lacks the .geo's own 40 + 16 elements"; fail=$((fail + 1)); }
-# With the cavity elements that the warning asks for, no warning of its elements (issue 22's warnings of the run may remain).
+# With the cavity elements that the warning asks for, no warning of its elements (the run's other warnings may remain).
 scene_edit "$dir/warn_coarse_host.yaml" -o "$out/fine_host.yaml" --add 'host.elements={outer: 40, cavity: 24}'
 msg=$("$gembem" run "$out/fine_host.yaml" -o "$out/fine" --quiet 2>&1) || { echo "FAIL fine_host.yaml did not run"; fail=$((fail + 1)); }
 case "$msg" in *"longest cavity element"*) echo "FAIL the cavity with the elements asked for still warns: $msg"; fail=$((fail + 1));; esac

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# steps.csv's error columns (issue 22 item 2) recomputed from the saved state by
+# steps.csv's error columns recomputed from the saved state by
 # tools/check_step_error.py (its own sums of the stored contact forces: force scale, relative
 # residual, walls' residual, Coulomb excess, mean normal force, coordination, rattlers; with a host
 # the grains-host balance against host_particles.csv's K u + f0), and the final state checked by

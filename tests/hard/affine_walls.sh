@@ -4,7 +4,7 @@
 # and two steps of shear at constant mean stress must each reach their stresses within few smoother
 # steps. Measured 2026-11-29 (AMD EPYC, one thread): 53 smoother steps for the stress step and 1 196
 # for the two shear steps; with the walls moved by their own stiffness, grains held (the smoother
-# before session 19/20), 537 and 2 001. The bounds, 150 and 1 700, leave room for another CPU's
+# as it was before), 537 and 2 001. The bounds, 150 and 1 700, leave room for another CPU's
 # rounding and fail on that smoother.
 #   affine_walls.sh GEMBEM SOURCE_DIR OUT_DIR
 set -euo pipefail

@@ -5,7 +5,7 @@
 # jammed fixture with each solver (reference, global, global with newton: line_search); and the
 # checker fails on a state that is not one (a grain moved by 1e-5 cm; a tangential force past its
 # Coulomb cap). The same runs check solver.history's history.csv against steps.csv, and steps.csv's
-# error columns of the last step against tools/check_step_error.py's recomputation (issue 22).
+# error columns of the last step against tools/check_step_error.py's recomputation.
 #   check_equilibrium.sh GEMBEM JAMMED_DIR OUT_DIR
 set -euo pipefail
 gembem=$1 jammed=$2 out=$3
@@ -17,7 +17,7 @@ for method in reference global line_search; do
   OPENBLAS_NUM_THREADS=1 "$gembem" run "$out/$method.yaml" -o "$out/$method" --quiet > /dev/null
   if /usr/bin/python3 "$check" "$out/$method"; then ok "$method: the final state is an equilibrium"
   else bad "$method: the final state is not an equilibrium"; fi
-  # issue 22: steps.csv's error columns of the last step, recomputed from the state
+  # steps.csv's error columns of the last step, recomputed from the state
   if /usr/bin/python3 "$steperr" "$out/$method"; then ok "$method: steps.csv's error columns recomputed"
   else bad "$method: steps.csv's error columns differ from the state's"; fi
   # solver.history: one row per iteration that did not converge, the iterations of steps.csv, each

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Rolling resistance (docs/method.md section 3.1), issue 20 item 1: the oedometric path of
+# Rolling resistance (docs/method.md section 3.1): the oedometric path of
 # check_equilibrium.sh from the jammed fixture with rolling springs on every contact
 # (kr = kt R*^2 of the mean R*, eta 0.1), with each solver (reference, global, global line search).
 #  - tools/check_equilibrium.py recomputes every grain's force and moment from the positions, the

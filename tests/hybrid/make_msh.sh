@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Writes the .msh files that gmsh makes of .geo files, as its users do (issue 23): MSH 2.2 and 4.1,
+# Writes the .msh files that gmsh makes of .geo files, as its users do: MSH 2.2 and 4.1,
 # ASCII and binary, into OUT_DIR as NAME_msh22.msh, NAME_msh22_bin.msh, NAME_msh41.msh and
 # NAME_msh41_bin.msh for each NAME.geo.   make_msh.sh GMSH OUT_DIR GEO...
 set -euo pipefail

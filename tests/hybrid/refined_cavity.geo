@@ -1,4 +1,4 @@
-// A body as gmsh users draw one (ctest hybrid_mesh_sources, issue 23): the 10 x 10 square with a
+// A body as gmsh users draw one (ctest hybrid_mesh_sources): the 10 x 10 square with a
 // cavity of radius 2.5 by OpenCASCADE booleans, its elements sized by a field that refines
 // towards the cavity (size 0.1 within 0.2 of it, growing to 1 at 3), no element counts anywhere.
 SetFactory("OpenCASCADE");

@@ -1,4 +1,4 @@
-/* Loading the host in steps (issue 7): a scene of tests/hybrid run through its loading program,
+/* Loading the host in steps: a scene of tests/hybrid run through its loading program,
  * checked at every step against references computed apart from the run:
  *  - the host's boundary values and remote stress equal the scene's initial values plus the
  *    increments of the steps done (1e-12 relative);

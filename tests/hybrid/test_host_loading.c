@@ -1,4 +1,4 @@
-/* Loading the host (issue 7, first step): a square host's top pushed down in 3 steps, bottom
+/* Loading the host: a square host's top pushed down in 3 steps, bottom
  * fixed, sides free, an empty granular zone (one grain in the cavity touching nothing). At every
  * step the coupled solution's cavity displacements equal the boundary element module's own
  * solution with a traction-free cavity (to 1e-9 of the largest), the forces on the top and the

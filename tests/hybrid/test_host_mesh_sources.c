@@ -1,4 +1,4 @@
-/* Hosts as gmsh users make them (issue 23): one body, the annulus 1 < r < 2 of meshes/annulus.geo
+/* Hosts as gmsh users make them: one body, the annulus 1 < r < 2 of meshes/annulus.geo
  * (its own size lc = 0.2), read by gb_scene_load three ways: the .geo with its own sizes (no
  * host.elements), the .msh files gmsh wrote from it (MSH 2.2 and 4.1, ASCII and binary, made at
  * test time by ctest hybrid_msh_fixtures), and the .geo with element counts. Checks:

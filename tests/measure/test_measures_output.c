@@ -99,7 +99,7 @@ static int has_column(const table *t, const char *name)
     return 0;
 }
 
-/* The ratios that are undefined (nan) where their reference is zero within its noise (issue 22). */
+/* The ratios that are undefined (nan) where their reference is zero within its noise. */
 static int may_be_undefined(const char *column)
 {
     return !strcmp(column, "localisation_index") || !strcmp(column, "max_concentration") ||

@@ -140,7 +140,7 @@ def main():
     # balance (K 5): a contact pushes grain i by -(pn n + pt t), n the unit normal from i to j and
     # t = (-ny, nx), and j by the opposite; its tangential force turns both by pt times their radius
     # (in force units: pt), and a rolling moment mr turns i by -mr and j by +mr (over their radius,
-    # in the same units). Plus the weight. Until session 11 this check added +pt t to i: right
+    # in the same units). Plus the weight. An earlier version of this check added +pt t to i: right
     # only while every pt was 0 (the frictionless settling), 260 dyn off once friction acted.
     # Love's mean stress, (1/2A) sum of f . l over the contacts, l from a grain's centre to the other's
     # (pn |l|: the tangential force is normal to l) or to the wall (the centre's distance to it)

@@ -1,4 +1,4 @@
-/* The geometric admission of scenes (src/scene/admit.c, issue 23): the overlaps it counts against a
+/* The geometric admission of scenes (src/scene/admit.c): the overlaps it counts against a
  * brute-force O(N^2) count, the tolerance on both sides of a refusal, a box and a cavity. */
 #include <math.h>
 #include <stdlib.h>

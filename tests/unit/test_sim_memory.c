@@ -1,4 +1,4 @@
-/* A granular scene too large for the machine is refused before allocation (issue 14, item 4): its
+/* A granular scene too large for the machine is refused before allocation: its
  * grain count is set past what the machine's available memory holds at the documented lower bound of the
  * simulation's need (a few hundred bytes a grain; 5 kB more with the global solver), and
  * gb_sim_create must fail with GB_EINPUT and the estimate, allocating nothing (the grains array

@@ -1,5 +1,5 @@
-/* The accuracy a of a benchmark run: a number in the scene's force unit, or "target" for issue 4's
- * 1e-6 kn r_mean (kn between grains, r_mean the grains' mean radius); NULL keeps the scene's. */
+/* The accuracy a of a benchmark run: a number in the scene's force unit, or "target" for the
+ * tight accuracy 1e-6 kn r_mean (kn between grains, r_mean the grains' mean radius); NULL keeps the scene's. */
 #ifndef GB_BENCH_ACCURACY_H
 #define GB_BENCH_ACCURACY_H
 

@@ -1,6 +1,6 @@
 /* Benchmark of load steps on jammed random packings (not a test).
  *   bench_jammed SCENE.yaml STEPS reference|cholmod|umfpack|line_search [PREP_CAP (5000)] [ACCURACY]
- * ACCURACY: a in force units, or "target" for issue 4's 1e-6 kn r_mean (default: the scene's).
+ * ACCURACY: a in force units, or "target" for the tight accuracy 1e-6 kn r_mean (default: the scene's).
  * The scene's packing is jammed (tools/bench_gem.sh makes it with gb_jam): the grains are first
  * relaxed with the walls fixed by the global solver (CHOLMOD; no iteration if gb_jam's packing is
  * already within a), which leaves it under some isotropic-ish stress s_r; then STEPS load steps

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The localisation study's statistics (issue 20): per run the band's measures, per case their
+"""The localisation study's statistics: per run the band's measures, per case their
 mean, standard deviation and count (statistics.md), and the figures statistics_*.png.
 
 Every run (study.py stat_cases: 8 cases x 20 packings, 1000 grains) is read only up to its last

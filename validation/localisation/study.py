@@ -244,7 +244,7 @@ def scene(name, mesh, refine=1):
     raise SystemExit(f"unknown case {name}")
 
 
-# The statistics (issue 20, item 2): 2 x 2 x 2 cases, STAT_SEEDS packings each. 1000 grains
+# The statistics: 2 x 2 x 2 cases, STAT_SEEDS packings each. 1000 grains
 # (the 250-grain cavity is ~18 grains across, narrower than an 8-10 d band), 128 cavity elements,
 # 30 deg, phi 0.82, nu 0.1; with and without rolling resistance, P 100 and 10 kgf/cm^2, kn/G 0.01
 # and 10 cm. The runs go past the host's small-strain range (STAT_STEPS); band_statistics.py reads

@@ -1,4 +1,4 @@
-/* The global solver against the reference iteration (issue: hybrid, item 3): the three-disc cases
+/* The global solver against the reference iteration: the three-disc cases
  * 1-4 run with the reference iteration, the global solver with CHOLMOD and with UMFPACK; the
  * stress ratios agree within 0.0005 at e1 - e2 = 1..5 %. Prints the iterations and seconds of each.
  *   test_three_discs_solvers CASE1.yaml CASE2.yaml ... */
