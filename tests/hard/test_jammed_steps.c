@@ -8,7 +8,9 @@
  *    at the same box (1e-5 relative: friction makes the answer depend
  *    slightly on the path, the sizes agree to the springs' deformation), CHOLMOD and UMFPACK to
  *    1e-8 cm (the corrections: conjugate gradients against a new factorisation);
- *    and the walls carry the target stress.
+ *    and the walls carry the target stress;
+ *  - each relaxation's result (gb_solve_result) says it converged, within the accuracy, and its
+ *    work sums to the solver's totals; a relaxation allowed one iteration stops at that cap.
  *   test_jammed_steps SCENE.yaml */
 #include <math.h>
 #include <stdio.h>
@@ -44,6 +46,7 @@ int main(int argc, char **argv)
         CHECK(worst <= 1.0 * 1.01); /* gb_jam --tol 1 (per disc |F|; components are smaller) */
         double s0 = 0.5 * (s1 + s2);
         long most = 0;
+        gb_solver_work sum = {0, 0, 0}; /* the results' work, each of its call alone */
         for (int k = 1; k <= 4; k++) {
             gb_wall_control wc = {GB_WALLS_STRESS, s0 * (1 + 0.05 * k), s0 * (1 + 0.05 * k), 0};
             gb_solve_result res;
@@ -51,13 +54,25 @@ int main(int argc, char **argv)
             CHECK(st == GB_OK);
             if (st) fprintf(stderr, "%s step %d: %s (largest force %g)\n", NAMES[solver], k, err.msg, res.max_force);
             most = res.iterations > most ? res.iterations : most;
+            CHECK(res.stop == GB_STOP_CONVERGED && res.max_force <= sc.solver.accuracy && res.seconds >= 0);
+            sum.trials += res.work.trials, sum.factorisations += res.work.factorisations, sum.sweeps += res.work.sweeps;
             gb_sim_stress(sim, &s1, &s2);
             gb_box box = gb_sim_box(sim);
             double W = box.right - box.left;
             CHECK_NEAR(s1, wc.s1, 2 * sc.solver.accuracy / W);
             CHECK_NEAR(s2, wc.s2, 2 * sc.solver.accuracy / W);
         }
+        /* the solver's own totals are the sum of its calls' results (none for the reference iteration) */
+        gb_solver_work done = gb_solver_work_done(sim);
+        CHECK(done.trials == sum.trials && done.factorisations == sum.factorisations && done.sweeps == sum.sweeps);
+        CHECK(solver ? sum.trials >= 4 && sum.factorisations >= 4 : sum.trials == 0);
         end[solver] = gb_sim_box(sim);
+        /* one more step of 5 %, one iteration allowed: stopped by the cap, which the result names */
+        gb_wall_control more = {GB_WALLS_STRESS, s0 * 1.25, s0 * 1.25, 0};
+        gb_solve_result capped;
+        gb_status st = gb_solver_relax(sim, &more, 1, &capped, &err);
+        CHECK(st == GB_ENOCONV && capped.stop == GB_STOP_ITERATIONS && capped.iterations == 1);
+        CHECK(capped.max_force > sc.solver.accuracy);
         printf("%-18s: at most %ld iterations per step, box %.9f x %.9f\n", NAMES[solver], most,
                end[solver].right - end[solver].left, end[solver].top - end[solver].bottom);
         if (solver) CHECK(most <= 60);
