@@ -215,10 +215,20 @@ static void output_hooks(gb_sim *sim, gb_run_output *out, int on)
     if (sim->scene->solver.history) gb_sim_on_iteration(sim, on ? gb_run_output_iteration : NULL, on ? out : NULL);
 }
 
-/* The program's start: a new run's initial state (step 0: its report in *rep, and its output and
- * on_step), or a resumed run's place (src/io/checkpoint.c: after the checkpoint's step, or within
- * the step in progress, sim->cur, whose start is in sim->saved), whose outputs, energy0 and stage's
- * start are those of the run it continues. */
+/* Where the program goes on from, the one place that reads a resume: a new run from its initial
+ * state (step 0); a run resumed from a checkpoint (src/io/checkpoint.c) within the step in progress
+ * (sim->cur, whose start is in sim->saved) until that step is done; otherwise the step after the
+ * last completed one (sim->pos: a resumed run's outputs, energy0 and stage's start are those of the
+ * run it continues). */
+typedef enum { START_NEW, START_WITHIN, START_AFTER } start_point;
+static start_point start_of(const gb_sim *sim)
+{
+    if (!sim->begun && !sim->pos.resume) return START_NEW;
+    return sim->pos.resume && sim->cur.active ? START_WITHIN : START_AFTER;
+}
+
+/* The program's start (start_of): a new run's initial state (step 0: its report in *rep, and its
+ * output and on_step), or a resumed run's place. */
 static gb_status begin(gb_sim *sim, gb_run_output *out, gb_step_fn on_step, void *user, gb_step_report *rep,
                        gb_error *err)
 {
@@ -229,13 +239,13 @@ static gb_status begin(gb_sim *sim, gb_run_output *out, gb_step_fn on_step, void
     rep->total_steps = gb_scene_total_steps(sim->scene);
     gb_sim_resolve_accuracy(sim, sim->state.pairs.p, sim->state.pairs.n, 0);
     fill_report(sim, rep, NAN);
-    int resume = sim->pos.resume;
-    if (!resume) {
+    start_point from = start_of(sim);
+    if (from == START_NEW) {
         memset(&sim->pos, 0, sizeof sim->pos);
         sim->energy0 = gb_sim_elastic_energy(sim);
     }
-    if (!(resume && sim->cur.active)) save_state(sim, err, &st);
-    if (!st && !resume) st = measure_and_output(sim, out, on_step, user, rep, err);
+    if (from != START_WITHIN) save_state(sim, err, &st);
+    if (!st && from == START_NEW) st = measure_and_output(sim, out, on_step, user, rep, err);
     sim->begun = !st;
     return st;
 }
@@ -253,7 +263,7 @@ static int finished(const gb_sim *sim)
 {
     int s, k;
     next_place(sim, &s, &k);
-    return !(sim->pos.resume && sim->cur.active) && s >= sim->scene->n_stages;
+    return start_of(sim) != START_WITHIN && s >= sim->scene->n_stages;
 }
 
 /* Where the next load step starts (there is one: !finished), into sim->cur: the step a checkpoint
@@ -263,7 +273,7 @@ static int finished(const gb_sim *sim)
 static const gb_stage *start_step(gb_sim *sim)
 {
     const gb_scene *sc = sim->scene;
-    if (sim->pos.resume && sim->cur.active) return &sc->stages[sim->cur.stage];
+    if (start_of(sim) == START_WITHIN) return &sc->stages[sim->cur.stage];
     int s, k;
     double start[2];
     next_place(sim, &s, &k);
@@ -366,7 +376,7 @@ gb_status gb_sim_advance(gb_sim *sim, gb_run_output *out, gb_step_report *rep, g
 {
     gb_status st = GB_OK;
     output_hooks(sim, out, 1);
-    int fresh = !sim->begun && !sim->pos.resume; /* a new run's first step is step 0; a resumed run's, the next */
+    int fresh = start_of(sim) == START_NEW; /* a new run's first step is step 0; a resumed run's, the next */
     if (!sim->begun) st = begin(sim, out, NULL, NULL, rep, err);
     if (!st && !fresh) {
         if (finished(sim))
