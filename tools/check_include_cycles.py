@@ -9,9 +9,10 @@ defined in src/ (types, static inline functions, the umbrella gembem.h) belongs 
 include of it stands for the includes it has. A public header's own includes of other public
 headers are edges of its module.
 
-Prints every elementary cycle of that graph with the files that make each edge, and every public
-header whose functions are defined in more than one folder (one public header per module), and
-exits 1 if there is either. Exit 2 on bad usage.
+Prints every elementary cycle of that graph with the files that make each edge, every public
+header whose functions are defined in more than one folder (one public header per module), and,
+in a tree of gembem's layers (LAYERS), every edge that points up the layers and every folder not
+placed in them; exits 1 if there is any. Exit 2 on bad usage.
 
 Usage: check_include_cycles.py [SRC_DIR [INCLUDE_DIR]]
   SRC_DIR       default: the src/ next to this tools/ folder
@@ -21,9 +22,10 @@ import os
 import re
 import sys
 
-# The layers, each including only folders before it: core, bem, contact, scene, hybrid, gem,
-# solver, measure, io, run, pack, cli (docs/architecture.md, docs/developers.md). A new cycle
-# means a file, a declaration or a type is in the wrong folder.
+# The layers, lowest first, each including only folders before it (docs/architecture.md,
+# docs/developers.md). A cycle or an edge upwards means a file, a declaration or a type is in the
+# wrong folder; a new folder takes its place in this list.
+LAYERS = ("core", "bem", "contact", "scene", "hybrid", "gem", "solver", "measure", "io", "run", "pack", "cli")
 
 INCLUDE = re.compile(r'^\s*#\s*include\s*"([^"/]+)/([^"]+)"')
 PUBLIC = "gembem"
@@ -184,6 +186,16 @@ def cycles(graph):
     return found
 
 
+def misplaced(graph):
+    """The edges that point up the layers, [(a, b)], and the folders not in LAYERS, for a tree of
+    gembem's layers (one of its folders is in LAYERS); nothing for another tree."""
+    if not any(f in LAYERS for f in graph):
+        return [], []
+    up = [(a, b) for a in sorted(graph) for b in sorted(graph[a])
+          if a in LAYERS and b in LAYERS and LAYERS.index(b) > LAYERS.index(a)]
+    return up, sorted(f for f in graph if f not in LAYERS)
+
+
 def show(cycle, graph):
     ring = list(cycle) + [cycle[0]]
     lines = [" -> ".join(ring)]
@@ -212,11 +224,16 @@ def main(argv):
     found = cycles(graph)
     for c in found:
         print("CYCLE " + show(c, graph))
+    up, unplaced = misplaced(graph)
+    for a, b in up:
+        print(f"UPWARD {a} -> {b}: {', '.join(graph[a][b])} ({b} is above {a} in the layers)")
+    for f in unplaced:
+        print(f"UNPLACED {f}: a folder of src/ not in the layers (LAYERS, docs/architecture.md)")
     for h, mods in sorted(where.items()):
         print(f"module of {PUBLIC}/{h}: {', '.join(sorted(mods)) or 'none (no functions of its own)'}")
     print(f"{len(found)} cycles between the folders of {os.path.normpath(src)}, "
           f"{len(split)} public headers implemented in several folders")
-    return 1 if found or split else 0
+    return 1 if found or split or up or unplaced else 0
 
 
 if __name__ == "__main__":

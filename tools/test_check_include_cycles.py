@@ -9,6 +9,8 @@
    defines, and a/x.c includes "b/y.h"; the same through a public header of types only
    (gembem/t.h) that includes gembem/a.h; and through gembem/b.h's own include of gembem/a.h;
  - a public header whose functions two folders define: reported (SPLIT), exit 1;
+ - a tree of gembem's layers without a cycle, whose lowest layer (core) includes gem and with a
+   folder the layers do not place: both reported (UPWARD, UNPLACED), exit 1;
  - bad usage: exit 2."""
 import os
 import subprocess
@@ -114,6 +116,17 @@ class IncludeCycles(unittest.TestCase):
         out = self.assert_cycles([], "1 public headers implemented in several folders")
         self.assertEqual(reported(out, "SPLIT"),
                          ["gembem/a.h: its functions are defined in 2 folders (a: a_f; b: a_g)"])
+
+    def test_layers(self):
+        # no cycle, but core (the lowest layer) includes gem, and a folder the layers do not place
+        tree(self.src, {"core/x.c": ["gem/y.h"], "gem/y.h": [], "newthing/z.c": ["core/w.h"], "core/w.h": []})
+        rc, out = run(self.src)
+        self.assertEqual(rc, 1, out)
+        self.assertEqual(reported(out, "CYCLE"), [])
+        self.assertIn("UPWARD core -> gem: core/x.c", out)
+        self.assertIn("UNPLACED newthing", out)
+        tree(self.src, {"gem/v.c": ["core/w.h"]})  # downwards: fine
+        self.assertNotIn("UPWARD gem", run(self.src)[1])
 
     def test_usage(self):
         self.assertEqual(run(self.src, "--bad")[0], 2)
