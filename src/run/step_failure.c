@@ -5,6 +5,7 @@
 
 #include "run/step_failure.h"
 #include "scene/admit.h"
+#include "solver/solver.h"
 
 /* What to change after a step that did not converge. Forces within the round-off of the
  * springs and coordinates (gb_scene_force_resolution) asks for a looser accuracy; otherwise the
@@ -53,7 +54,7 @@ gb_status gb_run_step_failed(const gb_sim *sim, const gb_stage *sg, gb_status st
         if (c->finest < 1) snprintf(cut, sizeof cut, ", nor in sub-steps down to 1/%.0f of the step", 1 / c->finest);
         failure_hint(sim, sg, res, hint, sizeof hint);
         gb_solve_stop stop = res->stop;
-        long work = gb_sim_step_iterations(c) + c->work.sweeps; /* the step's relaxations have ended */
+        long work = gb_solver_step_work(sim);
         if (stop == GB_STOP_TIME)
             snprintf(why, sizeof why, "reached solver.max_step_seconds (%g s) after %ld iterations and smoother "
                      "steps", sv->max_step_seconds, work);
