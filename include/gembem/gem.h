@@ -91,7 +91,7 @@ typedef struct {
 } gb_run_profile;
 
 /* Called after the initial state (step 0) and after every converged step, after its output
- * (gb_sim_run, gembem/run.h). A non-OK status stops the run with that error. */
+ * (gb_run_program, gembem/run.h). A non-OK status stops the run with that error. */
 typedef gb_status (*gb_step_fn)(void *user, const gb_sim *sim, const gb_step_report *rep, gb_error *err);
 
 /* One iteration of a load step (solver.history). */
@@ -116,12 +116,7 @@ enum { GB_HISTORY_SWEEPS = 1000 };
 
 typedef void (*gb_iteration_fn)(void *user, const gb_iteration_report *rep);
 
-/* Called between two iterations of a load step's relaxation (not after the last one allowed), where
- * the run can take a checkpoint within the step (docs/run-directory.md, "Checkpoints and resume"). A non-OK
- * status fails the step with that error. */
-typedef gb_status (*gb_within_step_fn)(void *user, const gb_sim *sim, gb_error *err);
-
-/* A load step that runs far longer than the run's others, as it goes (gb_sim_on_progress). */
+/* A load step that runs far longer than the run's others, as it goes (gb_run_on_progress). */
 typedef struct {
     int step, stage_step, stage_steps; /* the step, and its place in its stage (stage_steps steps) */
     int attempt;             /* its relaxations so far (cut-backs start new ones) */
@@ -134,10 +129,6 @@ typedef struct {
 } gb_step_progress;
 
 typedef void (*gb_progress_fn)(void *user, const gb_step_progress *p);
-
-/* Calls fn every few seconds while a load step runs for longer than ten times the median of the
- * run's earlier steps (and at least ten seconds); NULL: none. The CLI prints it. */
-void gb_sim_on_progress(gb_sim *sim, gb_progress_fn fn, void *user);
 
 const gb_scene *gb_sim_scene(const gb_sim *sim);
 int gb_sim_n_grains(const gb_sim *sim);

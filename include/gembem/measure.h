@@ -37,7 +37,17 @@ typedef struct {
     double balance_iter;
 } gb_micro;
 
-void gb_micro_measure(const gb_sim *sim, gb_micro *m);
+/* The external work a run has done on its simulation since its start (quasi-static: from converged
+ * steps' forces), and the elastic energy the simulation had then (gb_run, gembem/run.h). */
+typedef struct {
+    double walls;     /* by the walls */
+    double body;      /* by the body forces */
+    double energy0;   /* elastic energy of the initial state */
+} gb_work_accounts;
+
+/* The micromechanics of sim's state; the work and the balances from `work` (NULL: a state outside a
+ * run, whose work is not known: they are NaN). */
+void gb_micro_measure(const gb_sim *sim, const gb_work_accounts *work, gb_micro *m);
 
 /* Contact normals by direction, from the grains' side (K Figs. 11, 12): nbins sectors over
  * [0, 360) degrees; a grain-grain contact counts in the direction of n and of -n, a grain-wall

@@ -9,21 +9,16 @@
 
 typedef struct gb_run_output gb_run_output;
 
-/* Creates (or, with overwrite, reuses) the run directory for a simulation not yet run, for
- * gb_sim_run (gembem/run.h) to write its steps into (the scene's hash, for resuming, is taken from
- * its initial state). `command` is recorded in run_info.yaml. */
+/* Creates (or, with overwrite, reuses) the run directory for a simulation not yet run, for a run
+ * (gb_run_program, gembem/run.h) to write its steps into (the scene's hash, for resuming, is taken
+ * from its initial state). `command` is recorded in run_info.yaml. A run directory interrupted
+ * is reopened by gb_run_resume (gembem/run.h). */
 gb_status gb_run_output_open(const char *dir, const gb_sim *sim, int overwrite, const char *command,
                              gb_run_output **out, gb_error *err);
-/* Reopens the run directory of an interrupted run (docs/run-directory.md, "Checkpoints and resume"): its
- * checkpoint into sim (just created from the same scene: refused, GB_EINPUT, if the scene changed),
- * the appended files cut back to the checkpoint, run_info.yaml told of the resume. gb_sim_run then
- * continues after the checkpoint's step. Nothing is changed if the checkpoint cannot be used. */
-gb_status gb_run_output_resume(const char *dir, gb_sim *sim, const char *command, gb_run_output **out,
-                               gb_error *err);
 /* Reads the scene's path from dir's checkpoint, into path. */
 gb_status gb_run_output_resume_scene(const char *dir, char *path, size_t cap, gb_error *err);
 /* Writes the final state (state.yaml, state_grains.csv, state_contacts.csv), records the run's
- * status in run_info.yaml and frees o. */
+ * status and time split in run_info.yaml and frees o. */
 gb_status gb_run_output_close(gb_run_output *o, const gb_sim *sim, gb_status run_status, const char *message,
                               gb_error *err);
 

@@ -1,6 +1,6 @@
 /* Solving a simulation's problem outside a loading program (src/solver): relaxations to
  * equilibrium under a wall control, another solver for a simulation, and the solver's statistics
- * (benchmarks, tests). gb_sim_run (gembem/run.h) calls the same functions for each load step. */
+ * (benchmarks, tests). A run (gembem/run.h) calls the same functions for each load step. */
 #ifndef GEMBEM_SOLVER_H
 #define GEMBEM_SOLVER_H
 
@@ -38,9 +38,13 @@ typedef struct {
 } gb_solve_result;
 
 /* Relaxes sim to equilibrium under the wall control, at most `cap` iterations; what it did in
- * *res. The accuracy is the load step's (outside gb_sim_run: as for a first step). GB_ENOCONV when
+ * *res. The accuracy is the load step's (outside a run: as for a first step). GB_ENOCONV when
  * it stops unconverged (res->stop says why: the cap, a stall, the step's time limit). */
 gb_status gb_solver_relax(gb_sim *sim, const gb_wall_control *wc, long cap, gb_solve_result *res, gb_error *err);
+
+/* Calls fn after every iteration of gb_solver_relax that did not converge (a run's relaxations call
+ * the run's: gb_run_on_iteration); NULL: none. */
+void gb_solver_on_iteration(gb_sim *sim, gb_iteration_fn fn, void *user);
 
 /* The solver's work since it was created (all zero for the reference iteration): its relaxations'
  * work summed (a benchmark's totals). */

@@ -36,7 +36,7 @@ const char *gb_version(void);
 /* A stop asked for from outside a run (one flag for the process, which the run's loop and its
  * output both look at), e.g. by a signal handler (the library installs none; the gembem command
  * does, for SIGTERM, SIGINT and SIGHUP): async-signal-safe, it only records
- * `reason` (a signal number, > 0) in a volatile sig_atomic_t. A gb_sim_run with an output notices
+ * `reason` (a signal number, > 0) in a volatile sig_atomic_t. A run (gb_run_program) with an output notices
  * it between two iterations of a relaxation or at the end of a step, writes a checkpoint there and
  * returns GB_EINTERRUPTED (gb_run_output_close then records status `interrupted`); without an
  * output, at the end of a step. The request stays until gb_run_stop_clear. */

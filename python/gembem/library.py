@@ -10,9 +10,9 @@ steps, with no files in between.
     sim.run()                        # the rest of the loading program
     sim.write_state("runs/py")       # state.yaml and its CSV files, as `gembem run` writes them
 
-The simulation is the library's own (gb_sim_create, gb_sim_advance, gembem/run.h): a run by steps
-here gives the states `gembem run` gives. A failure of the library raises the exception of its
-status (gembem.errors: SceneError with gembem's file:line:column, ConvergenceError, ...).
+The simulation is the library's own (gb_sim_create, gb_run_create, gb_run_advance, gembem/run.h): a
+run by steps here gives the states `gembem run` gives. A failure of the library raises the exception
+of its status (gembem.errors: SceneError with gembem's file:line:column, ConvergenceError, ...).
 
 The library: the `library=` argument, else $GEMBEM_LIBRARY, else the one installed with this
 package (cmake --install, the .deb), else this checkout's build/src/libgembem.so.0.
@@ -90,9 +90,11 @@ _SIGNATURES = {
     "gb_scene_free": (None, [_P]),
     "gb_sim_create": (ctypes.c_int, [_P, ctypes.POINTER(_P), _ERR]),
     "gb_sim_free": (None, [_P]),
-    "gb_sim_advance": (ctypes.c_int, [_P, _P, ctypes.POINTER(_Report), _ERR]),
-    "gb_sim_finished": (ctypes.c_int, [_P]),
-    "gb_sim_place": (_Place, [_P]),
+    "gb_run_create": (ctypes.c_int, [_P, ctypes.POINTER(_P), _ERR]),
+    "gb_run_free": (None, [_P]),
+    "gb_run_advance": (ctypes.c_int, [_P, _P, ctypes.POINTER(_Report), _ERR]),
+    "gb_run_finished": (ctypes.c_int, [_P]),
+    "gb_run_where": (_Place, [_P]),
     "gb_sim_n_grains": (ctypes.c_int, [_P]),
     "gb_sim_grains": (None, [_P, _P]),
     "gb_sim_contacts": (ctypes.c_int, [_P, _P, ctypes.c_int]),
@@ -198,6 +200,7 @@ class Simulation:
         self._scene_room = ctypes.create_string_buffer(lib.gb_scene_sizeof())
         self._scene = ctypes.c_void_p(ctypes.addressof(self._scene_room))
         self._sim = ctypes.c_void_p()
+        self._run = ctypes.c_void_p()
         err = _Error()
         if isinstance(scene, (str, os.PathLike)):
             self.path = os.fspath(scene)
@@ -208,16 +211,22 @@ class Simulation:
             text = scene.to_yaml().encode()
             _check(lib, lib.gb_scene_load_text(text, len(text), self.path.encode(), self._scene, ctypes.byref(err)),
                    err, ["gb_scene_load_text", self.path])
+        made = "gb_sim_create"
         status = lib.gb_sim_create(self._scene, ctypes.byref(self._sim), ctypes.byref(err))
+        if not status:
+            made = "gb_run_create"
+            status = lib.gb_run_create(self._sim, ctypes.byref(self._run), ctypes.byref(err))
         if status:
-            lib.gb_scene_free(self._scene)
-            self._scene = None
-            _check(lib, status, err, ["gb_sim_create", self.path])
+            self.close()
+            _check(lib, status, err, [made, self.path])
         self.report = None  # the last step's StepReport
         self._reports = []
 
     def close(self):
         """Frees the simulation and its scene (then every other call is an error)."""
+        if self._run:
+            self._lib.gb_run_free(self._run)
+            self._run = ctypes.c_void_p()
         if self._sim:
             self._lib.gb_sim_free(self._sim)
             self._sim = ctypes.c_void_p()
@@ -246,8 +255,9 @@ class Simulation:
         StepReport. A step that fails raises (ConvergenceError, ...) and leaves the state of the
         last completed step; past the last step: SceneError."""
         rep, err = _Report(), _Error()
-        _check(self._lib, self._lib.gb_sim_advance(self._handle(), None, ctypes.byref(rep), ctypes.byref(err)),
-               err, ["gb_sim_advance", self.path])
+        self._handle()
+        _check(self._lib, self._lib.gb_run_advance(self._run, None, ctypes.byref(rep), ctypes.byref(err)),
+               err, ["gb_run_advance", self.path])
         fields = {n: getattr(rep, n) for n, _ in _Report._fields_ if n not in ("work", "cut_by")}
         fields.update(trials=rep.work.trials, factorisations=rep.work.factorisations, sweeps=rep.work.sweeps,
                       cut_by=self._lib.gb_solve_stop_name(rep.cut_by).decode())
@@ -272,14 +282,16 @@ class Simulation:
     @property
     def finished(self):
         """Whether every step of the loading program is taken."""
-        return bool(self._lib.gb_sim_finished(self._handle()))
+        self._handle()
+        return bool(self._lib.gb_run_finished(self._run))
 
     @property
     def place(self):
         """Where the program stands: a dict of the last step taken (-1: none yet; 0: the initial
         state), its stage (0-based, -1 for step 0) and stage_step (1-based) of stage_steps, and
         the program's total_steps and n_stages."""
-        p = self._lib.gb_sim_place(self._handle())
+        self._handle()
+        p = self._lib.gb_run_where(self._run)
         return {n: getattr(p, n) for n, _ in _Place._fields_}
 
     def run_stage(self):

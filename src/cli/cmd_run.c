@@ -26,7 +26,7 @@ static double elapsed(const struct timespec *t0)
     return (double)(t.tv_sec - t0->tv_sec) + 1e-9 * (double)(t.tv_nsec - t0->tv_nsec);
 }
 
-/* Progress on a terminal: the loop (gb_sim_run) has written the step's files. */
+/* Progress on a terminal: the loop (gb_run_program) has written the step's files. */
 static gb_status on_step(void *user, const gb_sim *sim, const gb_step_report *r, gb_error *err)
 {
     (void)err;
@@ -137,7 +137,9 @@ int gb_cli_run(int argc, char **argv)
     if (gb_scene_load(scene_path, &scene, &err)) return gb_cli_report(&err);
     if (scene.warning[0]) fprintf(stderr, "gembem: warning: %s\n", scene.warning);
     gb_sim *sim = NULL;
-    if (gb_sim_create(&scene, &sim, &err)) {
+    gb_run *run = NULL;
+    if (gb_sim_create(&scene, &sim, &err) || gb_run_create(sim, &run, &err)) {
+        gb_sim_free(sim);
         gb_scene_free(&scene);
         return gb_cli_report(&err);
     }
@@ -145,14 +147,15 @@ int gb_cli_run(int argc, char **argv)
     clock_gettime(CLOCK_MONOTONIC, &ctx.t0);
     gb_run_output *out = NULL;
     catch_stop_signals(); /* from here on the run directory records where a signal stopped it */
-    if (resume ? gb_run_output_resume(dir, sim, command, &out, &err)
+    if (resume ? gb_run_resume(run, dir, command, &out, &err)
                : gb_run_output_open(dir, sim, overwrite, command, &out, &err)) {
+        gb_run_free(run);
         gb_sim_free(sim);
         gb_scene_free(&scene);
         return gb_cli_report(&err);
     }
-    gb_sim_on_progress(sim, on_progress, &ctx);
-    gb_status st = gb_sim_run(sim, out, on_step, &ctx, &err);
+    gb_run_on_progress(run, on_progress, &ctx);
+    gb_status st = gb_run_program(run, out, on_step, &ctx, &err);
     if (ctx.progress && !quiet) fprintf(stderr, "\n");
     gb_error close_err = {0};
     gb_status cst = gb_run_output_close(out, sim, st, st ? err.msg : NULL, &close_err);
@@ -168,6 +171,7 @@ int gb_cli_run(int argc, char **argv)
         if (resume) snprintf(from, sizeof from, ", resumed after step %d of %d", total - ctx.ran, total);
         printf("gembem: %d steps done in %.2f s%s; results in %s\n", ctx.ran, elapsed(&ctx.t0), from, dir);
     }
+    gb_run_free(run);
     gb_sim_free(sim);
     gb_scene_free(&scene);
     return code;

@@ -11,6 +11,11 @@
 
 static const double PI = 3.14159265358979323846;
 
+const char *gb_solve_stop_name(gb_solve_stop stop)
+{
+    static const char *const names[] = {"converged", "iterations", "stalled", "time", "error"};
+    return stop >= GB_STOP_CONVERGED && stop <= GB_STOP_ERROR ? names[stop] : "unknown";
+}
 
 void gb_gem_problem_free(gb_sim *sim)
 {
@@ -24,9 +29,6 @@ void gb_gem_problem_free(gb_sim *sim)
     free(sim->scratch.dX);
     free(sim->scratch.nc);
     free(sim->scratch.one);
-    gb_state_free(&sim->saved);
-    gb_state_free(&sim->substep);
-    free(sim->watch.seconds);
     gb_pair_search_free(&sim->search);
     gb_host_free(sim->host);
     gb_particles_free(&sim->bp);
@@ -217,7 +219,7 @@ gb_status gb_gem_problem_create(const gb_scene *scene, gb_sim **out, gb_error *e
         gb_gem_problem_free(sim);
         return st;
     }
-    /* the accuracy of a relaxation run outside gb_sim_run (benchmarks, tests): as for a first step */
+    /* the accuracy of a relaxation run outside a run (benchmarks, tests): as for a first step */
     gb_sim_resolve_accuracy(sim, sim->state.pairs.p, sim->state.pairs.n, 0);
     *out = sim;
     return GB_OK;

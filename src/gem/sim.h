@@ -1,5 +1,6 @@
 /* The problem of a granular simulation: grains, contacts and their law, walls or an elastic host,
- * loads, accounts (private to the library; solved by src/solver, driven by src/run/program.c). */
+ * loads, the state and an iteration's scratch (private to the library; solved by src/solver, driven
+ * through a loading program by a run, src/run). */
 #ifndef GB_SIM_H
 #define GB_SIM_H
 
@@ -70,71 +71,6 @@ gb_status gb_state_alloc(gb_state *s, int n, int np, int m, int pairs, gb_error 
 gb_status gb_state_copy(gb_state *dst, const gb_state *src, gb_error *err);
 void gb_state_free(gb_state *s);
 
-/* Where gb_sim_run stands: the last completed load step (a checkpoint's place in the program; one
- * taken within a step holds that step in sim->cur too). */
-typedef struct {
-    int stage;        /* its stage (0 with step 0, the initial state) */
-    int stage_step;   /* its number in the stage, 1-based (0: none of the stage's steps yet) */
-    int step;         /* overall, 0 = the initial state */
-    double start[2];  /* the boundary stresses at the stage's start, where a stress ramp begins */
-    int resume;       /* set by a checkpoint: gb_sim_run continues after this step */
-} gb_sim_position;
-
-/* Where the load step in progress stands (src/run/program.c), all that a checkpoint within it must
- * hold beyond the states (src/io/checkpoint.c). A step's sub-step applies its loads (phase LOAD),
- * then relaxes (RELAX), and a shear_mean_stress step relaxes a second time under mean-stress control
- * (MEAN): a sub-step resumed past LOAD does not apply its loads again. */
-typedef enum { GB_PHASE_LOAD = 0, GB_PHASE_RELAX, GB_PHASE_MEAN } gb_step_phase;
-
-typedef struct {
-    int active;           /* a load step is in progress: the fields below are its */
-    int stage, stage_step, step; /* as in gb_sim_position */
-    double start[2];      /* the stage's start stresses */
-    double t, h;          /* the sub-step: from fraction t of the step's increment, h of it (powers of two) */
-    int cuts;             /* cut-backs left; > 0: sim->substep holds the sub-step's start */
-    int substeps;         /* sub-steps converged */
-    double finest;        /* the smallest sub-step tried */
-    long iters;           /* iterations of the step's attempts that ended */
-    gb_step_phase phase;
-    long phase_iters;     /* iterations of the sub-step's relaxations that ended (shear_mean_stress: the first) */
-    long relax_iters;     /* iterations done by the relaxation in progress (gb_solver_relax); 0 outside one */
-    gb_solve_stop cut_by; /* why the first attempt that was cut back stopped (GB_STOP_CONVERGED: none yet) */
-    gb_solver_work work;  /* the solver's work in the step's relaxations that ended (resumed within a
-                             relaxation: also its work before the checkpoint) */
-} gb_sim_step;
-
-/* The iterations a step has done so far. */
-static inline long gb_sim_step_iterations(const gb_sim_step *c) { return c->iters + c->phase_iters + c->relax_iters; }
-
-/* What one load step leaves for the next (the state, the accounts, the damping), and within a step
- * what an iteration leaves for the next and for the rest of the step (sim->cur, the last move, the
- * states a failure goes back to, the stall detection), is in a run's checkpoint
- * (src/io/checkpoint.c): a field added here that outlives an iteration belongs there too. */
-/* A load step's clock (src/gem/watch.c): its time limit and, where it runs far longer than the
- * run's other steps, its progress; set at each step's start by the run (src/run/program.c). */
-typedef struct {
-    double t0;              /* when the step started (gb_clock_seconds; 0: no step is watched) */
-    double limit;           /* solver.max_step_seconds, 0: none */
-    double report_after;    /* seconds after t0 from which progress is reported */
-    double next_report;     /* the clock's time of the next report */
-    double report_every;    /* seconds between two reports */
-    double median;          /* the median of the run's earlier steps, seconds */
-    double max_force;       /* the largest fixing force at the last iteration's start */
-    double *seconds;        /* the run's completed steps' seconds (this process): n of them */
-    int n, cap;
-    gb_progress_fn fn;
-    void *user;
-} gb_step_watch;
-
-/* The step's clock: GB_STOP_TIME past its limit, with a progress report if one is due;
- * GB_STOP_CONVERGED (go on) otherwise. sweeps: the smoother's steps in the step so far; max_force
- * NaN: the last one given. */
-gb_solve_stop gb_sim_poll(gb_sim *sim, long sweeps, double max_force);
-/* A load step starts now: its limit and when its progress is reported. */
-void gb_sim_watch_step(gb_sim *sim, double now);
-/* A step ended after `seconds`: one more for the median (GB_ENOMEM: not recorded). */
-gb_status gb_sim_watch_done(gb_sim *sim, double seconds);
-
 struct gb_sim {
     const gb_scene *scene;
     gb_state state;     /* what iterations and load steps change */
@@ -152,30 +88,9 @@ struct gb_sim {
     struct gb_solver *solver; /* how it is solved (src/solver: the only code that looks inside) */
     double ref_width, ref_height;  /* strain reference */
     double tan_phi_gg, tan_phi_gw, tan_phi_gb;
-    /* The last converged state (the start of the current step), restored when a step fails. */
-    gb_state saved;
-    /* The start of a sub-step of a load step being cut back (gb_sim_run). */
-    gb_state substep;
-    long iterations_total;    /* of the load steps completed */
-    gb_iteration_fn on_iteration; /* solver.history */
-    void *on_iteration_user;
-    int attempt;              /* relaxations in the current load step */
     double detect_seconds;    /* spent on contact detection: the pair list's staleness and rebuilds */
     double force_scale;       /* of the load step in progress, from its start (src/gem/accuracy.c) */
     double accuracy;          /* a of the load step in progress: every test against the accuracy uses it */
-    /* Energy accounts since the start of the run (absolute, force x length). */
-    double work_walls;        /* done by the walls: quasi-static, from converged steps' forces */
-    double work_body;         /* done by the body forces */
-    double energy0;           /* elastic energy of the initial state */
-    gb_sim_position pos;
-    int begun;                /* the program's start is taken (step 0, or a resume's place): gb_sim_advance goes on from pos */
-    gb_sim_step cur;          /* the load step in progress */
-    gb_run_profile profile;   /* the loop's phases (src/run/program.c) */
-    double *phase;            /* the profile's field the run's time goes to now (NULL: none) */
-    double phase_since;       /* since when */
-    gb_within_step_fn on_within_step; /* between two iterations of a relaxation (checkpoints) */
-    gb_step_watch watch;      /* the step's clock */
-    void *on_within_step_user;
 };
 
 /* solver.threads: below this many pairs (grains) a move's contact update (the grains' moves) stays

@@ -170,16 +170,16 @@ static void put_state(FILE *f, const char *name, const gb_sim *sim, const gb_sta
     for (int k = 0; k < hm; k++) fprintf(f, "%a %a\n", st->host.u[k], st->host.f0[k]);
 }
 
-/* The load step in progress (sim->cur), for a checkpoint within it: its place and cut-back
+/* The load step in progress (p->cur), for a checkpoint within it: its place and cut-back
  * bookkeeping, the solver's work and stall detection so far, the last move (its fixing forces'
  * work is half accounted: half_pending), and the states its failure would go back to. */
-static void put_step(FILE *f, const gb_sim *sim)
+static void put_step(FILE *f, const gb_sim *sim, const gb_run_progress *p)
 {
-    const gb_sim_step *c = &sim->cur;
+    const gb_run_step *c = &p->cur;
     fprintf(f, "step %d %d %d %a %a %a %a %a\n", c->stage, c->stage_step, c->step, c->start[0], c->start[1], c->t,
             c->h, c->finest);
     fprintf(f, "progress %d %d %ld %d %ld %ld %d\n", c->cuts, c->substeps, c->iters, (int)c->phase, c->phase_iters,
-            c->relax_iters, sim->attempt);
+            c->relax_iters, c->attempt);
     gb_solver_work w = gb_solver_work_plus(c->work, gb_solver_relaxation_work(sim));
     fprintf(f, "work %ld %ld %ld\n", w.trials, w.factorisations, w.sweeps);
     const gb_solver_damping *d = gb_solver_damping_of(sim);
@@ -188,11 +188,11 @@ static void put_step(FILE *f, const gb_sim *sim)
     fprintf(f, "moves\n");
     for (int i = 0; i < sim->state.n; i++)
         put_row(f, NULL, 0, &sim->scratch.dX[3 * i], 3, NULL, 0);
-    put_state(f, "step_start", sim, &sim->saved, NULL);
-    if (c->cuts > 0) put_state(f, "substep", sim, &sim->substep, NULL);
+    put_state(f, "step_start", sim, &p->saved, NULL);
+    if (c->cuts > 0) put_state(f, "substep", sim, &p->substep, NULL);
 }
 
-static void write_body(FILE *f, const gb_sim *sim, const gb_checkpoint_meta *m)
+static void write_body(FILE *f, const gb_sim *sim, const gb_run_progress *p, const gb_checkpoint_meta *m)
 {
     fprintf(f, "gembem_checkpoint %d\nversion %s\nscene %s\nscene_hash %016" PRIx64 "\nfiles %d\n", FORMAT,
             gb_version(), m->scene_path, m->scene_hash, m->n_files);
@@ -202,20 +202,20 @@ static void write_body(FILE *f, const gb_sim *sim, const gb_checkpoint_meta *m)
         for (int b = 0; b < cf->n_tail; b++) fprintf(f, "%02x", cf->tail[b]);
         fprintf(f, "%s\n", cf->n_tail ? "" : "-");
     }
-    const gb_sim_position *pos = &sim->pos;
+    const gb_run_position *pos = &p->pos;
     fprintf(f, "position %d %d %d %a %a\n", pos->stage, pos->stage_step, pos->step, pos->start[0], pos->start[1]);
     fprintf(f, "counts %d %d %d\n", sim->state.n, sim->bp.n, sim->host ? sim->host->m : 0);
-    double ref[2] = {sim->ref_width, sim->ref_height}, acc[3] = {sim->work_walls, sim->work_body, sim->energy0};
+    double ref[2] = {sim->ref_width, sim->ref_height}, acc[3] = {p->work.walls, p->work.body, p->work.energy0};
     put(f, "reference", ref, 2);
     put(f, "accounts", acc, 3);
     const gb_solver_damping *d = gb_solver_damping_of(sim);
-    fprintf(f, "counters %ld %d\n", sim->iterations_total, d->next);
+    fprintf(f, "counters %ld %d\n", p->iterations_total, d->next);
     put(f, "damping", &d->mu, 1);
     put(f, "damping_history", d->history, GB_SOLVER_HISTORY);
     fprintf(f, "line_search %a %d\n", d->smoother_first, d->newton_due);
     put_state(f, "current", sim, &sim->state, gb_solver_unloading(sim));
-    fprintf(f, "within_step %d\n", sim->cur.active);
-    if (sim->cur.active) put_step(f, sim);
+    fprintf(f, "within_step %d\n", p->cur.active);
+    if (p->cur.active) put_step(f, sim, p);
 }
 
 /* The line of the first non-finite number written (%a's "inf", "-inf", "nan", "-nan"), or 0. The
@@ -243,7 +243,8 @@ static int nonfinite_line(const char *buf, size_t len)
     return 0;
 }
 
-gb_status gb_checkpoint_write(const char *dir, const gb_sim *sim, const gb_checkpoint_meta *m, gb_error *err)
+gb_status gb_checkpoint_write(const char *dir, const gb_sim *sim, const gb_run_progress *p, const gb_checkpoint_meta *m,
+                              gb_error *err)
 {
     char path[1200];
     snprintf(path, sizeof path, "%s/%s", dir, GB_CHECKPOINT_NAME);
@@ -252,7 +253,7 @@ gb_status gb_checkpoint_write(const char *dir, const gb_sim *sim, const gb_check
     size_t len = 0;
     FILE *mem = open_memstream(&buf, &len);
     if (!mem) return gb_fail(err, GB_ENOMEM, "out of memory for a checkpoint");
-    write_body(mem, sim, m);
+    write_body(mem, sim, p, m);
     gb_status st = GB_OK;
     if (fclose(mem) != 0 || !buf) st = gb_fail(err, GB_ENOMEM, "out of memory for a checkpoint");
     int bad = st ? 0 : nonfinite_line(buf, len);
@@ -449,19 +450,15 @@ gb_status gb_checkpoint_read_meta(const char *dir, gb_checkpoint_meta *m, gb_err
 
 /* What a checkpoint holds beyond its header, read whole before any of it goes into the simulation. */
 typedef struct {
-    gb_sim_position pos;
-    double work_walls, work_body, energy0, ref[2];
-    long iterations_total;
+    gb_run_progress p;     /* the run's place, work and counters; within a step, the step and the states
+                              its failure would go back to (saved, substep) */
+    double ref[2];
     gb_solver_damping damping; /* since and best: within a step only */
     gb_state now;          /* the current state */
     unsigned char *unloading;  /* the global solver's flags of its pairs, or NULL */
-    /* a checkpoint within a step: the step (sim->cur), the solver's work in it, the last move, the
-     * step's and the sub-step's start (sim->saved, sim->substep) */
-    gb_sim_step cur;
-    int attempt;
+    /* a checkpoint within a step: the solver's work in it, the last move */
     gb_solver_work work;
     double *dX;
-    gb_state start, sub;
     long gen[3];               /* the lists' generations as written: now, start, sub */
 } extras;
 
@@ -528,7 +525,7 @@ static void get_state(cursor *c, const gb_sim *sim, const char *name, gb_state *
 static void get_step(cursor *c, const gb_sim *sim, extras *x)
 {
     const gb_scene *sc = sim->scene;
-    gb_sim_step *s = &x->cur;
+    gb_run_step *s = &x->p.cur;
     s->active = 1;
     expect(c, "step");
     s->stage = (int)integer(c, 0, sc->n_stages > 0 ? sc->n_stages - 1 : 0);
@@ -536,7 +533,7 @@ static void get_step(cursor *c, const gb_sim *sim, extras *x)
     s->stage_step = (int)integer(c, 1, sg ? sg->steps : 1);
     s->step = (int)integer(c, 1, gb_scene_total_steps(sc));
     s->start[0] = num(c), s->start[1] = num(c), s->t = num(c), s->h = num(c), s->finest = num(c);
-    if (!c->st && (!sg || s->step != x->pos.step + 1 || !(s->t >= 0 && s->t < 1) || !(s->h > 0 && s->t + s->h <= 1)))
+    if (!c->st && (!sg || s->step != x->p.pos.step + 1 || !(s->t >= 0 && s->t < 1) || !(s->h > 0 && s->t + s->h <= 1)))
         fail(c, "the step in progress does not follow the checkpoint's last step");
     expect(c, "progress");
     s->cuts = (int)integer(c, 0, sc->solver.cutbacks);
@@ -546,7 +543,7 @@ static void get_step(cursor *c, const gb_sim *sim, extras *x)
                                                                                                : GB_PHASE_RELAX);
     s->phase_iters = (long)integer(c, 0, s->phase == GB_PHASE_MEAN ? sc->solver.max_iterations : 0);
     s->relax_iters = (long)integer(c, 1, sc->solver.max_iterations - s->phase_iters);
-    x->attempt = (int)integer(c, 1, 2147483647LL);
+    s->attempt = (int)integer(c, 1, 2147483647LL);
     expect(c, "work");
     x->work.trials = (long)integer(c, 0, (long long)1 << 62);
     x->work.factorisations = (long)integer(c, 0, (long long)1 << 62);
@@ -567,20 +564,21 @@ static void get_step(cursor *c, const gb_sim *sim, extras *x)
     expect(c, "moves");
     x->dX = alloc(c, 3 * (size_t)sim->state.n, sizeof(double));
     for (int k = 0; k < 3 * sim->state.n && !c->st; k++) x->dX[k] = num(c);
-    get_state(c, sim, "step_start", &x->start, &x->gen[1], NULL);
-    if (s->cuts > 0) get_state(c, sim, "substep", &x->sub, &x->gen[2], NULL);
+    get_state(c, sim, "step_start", &x->p.saved, &x->gen[1], NULL);
+    if (s->cuts > 0) get_state(c, sim, "substep", &x->p.substep, &x->gen[2], NULL);
 }
 
 static void read_body(cursor *c, const gb_sim *sim, extras *x)
 {
     const gb_scene *sc = sim->scene;
+    gb_run_position *pos = &x->p.pos;
     expect(c, "position");
-    x->pos.stage = (int)integer(c, 0, sc->n_stages > 0 ? sc->n_stages - 1 : 0);
-    int steps = c->st || !sc->n_stages ? 0 : sc->stages[x->pos.stage].steps;
-    x->pos.stage_step = (int)integer(c, 0, steps);
-    x->pos.step = (int)integer(c, 0, gb_scene_total_steps(sc));
-    x->pos.start[0] = num(c), x->pos.start[1] = num(c);
-    x->pos.resume = 1;
+    pos->stage = (int)integer(c, 0, sc->n_stages > 0 ? sc->n_stages - 1 : 0);
+    int steps = c->st || !sc->n_stages ? 0 : sc->stages[pos->stage].steps;
+    pos->stage_step = (int)integer(c, 0, steps);
+    pos->step = (int)integer(c, 0, gb_scene_total_steps(sc));
+    pos->start[0] = num(c), pos->start[1] = num(c);
+    pos->resume = 1;
     expect(c, "counts");
     long long n_grains = integer(c, 0, 1 << 30), n_particles = integer(c, 0, 1 << 30), n_host = integer(c, 0, 1 << 30);
     if (n_grains != sim->state.n || n_particles != sim->bp.n || n_host != (sim->host ? sim->host->m : 0))
@@ -588,9 +586,9 @@ static void read_body(cursor *c, const gb_sim *sim, extras *x)
     double acc[3];
     nums(c, "reference", x->ref, 2);
     nums(c, "accounts", acc, 3);
-    x->work_walls = acc[0], x->work_body = acc[1], x->energy0 = acc[2];
+    x->p.work.walls = acc[0], x->p.work.body = acc[1], x->p.work.energy0 = acc[2];
     expect(c, "counters");
-    x->iterations_total = (long)integer(c, 0, (long long)1 << 62);
+    x->p.iterations_total = (long)integer(c, 0, (long long)1 << 62);
     x->damping.next = (int)integer(c, 0, 2147483647LL);
     nums(c, "damping", &x->damping.mu, 1);
     nums(c, "damping_history", x->damping.history, GB_SOLVER_HISTORY);
@@ -609,7 +607,7 @@ static void read_body(cursor *c, const gb_sim *sim, extras *x)
  * was built for decides whether the pattern and its flags are kept. */
 static void new_generations(gb_sim *sim, extras *x)
 {
-    gb_state *st[3] = {&x->now, &x->start, &x->sub};
+    gb_state *st[3] = {&x->now, &x->p.saved, &x->p.substep};
     for (int a = 0; a < 3; a++) {
         if (!st[a]->g) continue; /* not in the checkpoint */
         st[a]->pairs.generation = 0;
@@ -619,8 +617,8 @@ static void new_generations(gb_sim *sim, extras *x)
     }
 }
 
-gb_status gb_checkpoint_read(const char *dir, gb_sim *sim, uint64_t scene_hash, gb_checkpoint_meta *m,
-                             gb_error *err)
+gb_status gb_checkpoint_read(const char *dir, gb_sim *sim, gb_run_progress *p, uint64_t scene_hash,
+                             gb_checkpoint_meta *m, gb_error *err)
 {
     char path[1200], *text;
     gb_status st = load(dir, path, sizeof path, &text, err);
@@ -636,39 +634,36 @@ gb_status gb_checkpoint_read(const char *dir, gb_sim *sim, uint64_t scene_hash, 
     if (!c.st) read_body(&c, sim, &x);
     /* Everything read: now into the simulation (the pair list grown first to hold every state's
      * list, so that restoring any of them needs no memory). */
-    int need = x.now.pairs.n > x.start.pairs.n ? x.now.pairs.n : x.start.pairs.n;
-    if (x.sub.pairs.n > need) need = x.sub.pairs.n;
+    int need = x.now.pairs.n > x.p.saved.pairs.n ? x.now.pairs.n : x.p.saved.pairs.n;
+    if (x.p.substep.pairs.n > need) need = x.p.substep.pairs.n;
     if (!c.st && need > sim->state.pairs.cap) {
-        gb_pair *p = realloc(sim->state.pairs.p, (size_t)need * sizeof *p);
-        if (!p) c.st = gb_fail(err, GB_ENOMEM, "out of memory for %d pairs", need);
-        else sim->state.pairs.p = p, sim->state.pairs.cap = need;
+        gb_pair *grown = realloc(sim->state.pairs.p, (size_t)need * sizeof *grown);
+        if (!grown) c.st = gb_fail(err, GB_ENOMEM, "out of memory for %d pairs", need);
+        else sim->state.pairs.p = grown, sim->state.pairs.cap = need;
     }
     if (!c.st) {
         new_generations(sim, &x);
         gb_sim_state_restore(sim, &x.now);
-        sim->work_walls = x.work_walls, sim->work_body = x.work_body, sim->energy0 = x.energy0;
         sim->ref_width = x.ref[0], sim->ref_height = x.ref[1];
-        sim->iterations_total = x.iterations_total;
         gb_solver_damping *d = gb_solver_damping_of(sim);
         d->mu = x.damping.mu, d->next = x.damping.next;
         d->smoother_first = x.damping.smoother_first, d->newton_due = x.damping.newton_due;
         memcpy(d->history, x.damping.history, sizeof d->history);
-        sim->pos = x.pos;
-        if (x.cur.active) {
-            gb_state_free(&sim->saved), sim->saved = x.start, memset(&x.start, 0, sizeof x.start);
-            if (x.cur.cuts > 0) gb_state_free(&sim->substep), sim->substep = x.sub, memset(&x.sub, 0, sizeof x.sub);
+        if (x.p.cur.active) {
             memcpy(sim->scratch.dX, x.dX, 3 * (size_t)sim->state.n * sizeof(double));
-            x.cur.work = x.work; /* the resumed relaxation counts its work from here */
-            sim->cur = x.cur;
-            sim->attempt = x.attempt, d->since = x.damping.since, d->best = x.damping.best;
+            x.p.cur.work = x.work; /* the resumed relaxation counts its work from here */
+            d->since = x.damping.since, d->best = x.damping.best;
             d->newton_failures = x.damping.newton_failures;
             d->stall_ref = x.damping.stall_ref, d->stall_at = x.damping.stall_at;
             d->relax_work0 = x.damping.relax_work0;
         }
+        gb_state_free(&p->saved), gb_state_free(&p->substep);
+        *p = x.p; /* the states its own */
+        memset(&x.p, 0, sizeof x.p);
         /* for the restored pair list (its count and rebuilds) */
         c.st = gb_solver_resume(sim, x.unloading, err);
     }
-    gb_state_free(&x.now), gb_state_free(&x.start), gb_state_free(&x.sub);
+    gb_state_free(&x.now), gb_state_free(&x.p.saved), gb_state_free(&x.p.substep);
     free(x.unloading), free(x.dX);
     free(text);
     return c.st;

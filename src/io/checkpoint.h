@@ -9,7 +9,7 @@
 #include <limits.h>
 #include <stdint.h>
 
-#include "gembem/gem.h"
+#include "io/run_progress.h"
 
 /* realpath() writes up to PATH_MAX bytes into its buffer */
 #ifndef PATH_MAX
@@ -47,15 +47,16 @@ gb_status gb_checkpoint_file_mark(const char *dir, const char *name, gb_checkpoi
 gb_status gb_checkpoint_file_rewind(const char *dir, const gb_checkpoint_file *f, gb_error *err);
 
 /* dir/checkpoint.txt, replaced atomically (written, synced, renamed), for the simulation's current
- * state and place (sim->pos, and sim->cur within a step). */
-gb_status gb_checkpoint_write(const char *dir, const gb_sim *sim, const gb_checkpoint_meta *m, gb_error *err);
+ * state and the run's progress p (its place, and the step in progress within one). */
+gb_status gb_checkpoint_write(const char *dir, const gb_sim *sim, const gb_run_progress *p, const gb_checkpoint_meta *m,
+                              gb_error *err);
 /* Its header alone: the scene, its hash and the files. GB_EINPUT if there is none or it is not one. */
 gb_status gb_checkpoint_read_meta(const char *dir, gb_checkpoint_meta *m, gb_error *err);
 /* The whole checkpoint into a simulation just created from the same scene (scene_hash: its hash,
- * refused if the checkpoint's differs); gb_sim_run then continues after the checkpoint's step, or
- * within the step in progress.
- * The simulation is unchanged if the checkpoint is refused (only running out of memory fails later). */
-gb_status gb_checkpoint_read(const char *dir, gb_sim *sim, uint64_t scene_hash, gb_checkpoint_meta *m,
-                             gb_error *err);
+ * refused if the checkpoint's differs) and a new run's progress p; the run then continues after the
+ * checkpoint's step, or within the step in progress.
+ * Neither is changed if the checkpoint is refused (only running out of memory fails later). */
+gb_status gb_checkpoint_read(const char *dir, gb_sim *sim, gb_run_progress *p, uint64_t scene_hash,
+                             gb_checkpoint_meta *m, gb_error *err);
 
 #endif

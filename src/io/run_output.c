@@ -47,6 +47,7 @@ struct gb_run_output {
     char resumed[4096];       /* run_info.yaml's "resumed:" list items */
     double started_seconds;   /* gb_clock_seconds() when this process opened the directory */
     double close_seconds;     /* spent writing the final state */
+    gb_run_profile phases;    /* the time split of the run written into it (gb_run_output_phases) */
 };
 
 /* The files a run appends to (or rewrites in place at their end), cut back to their checkpoint's
@@ -83,7 +84,7 @@ static gb_status write_info(const gb_run_output *o, const gb_sim *sim, const cha
     gb_scene_report_write(a.f, sc);
     gb_run_record_settings(a.f, sc);
     gb_run_record_machine(a.f);
-    gb_run_record_times(a.f, sim, gb_clock_seconds() - o->started_seconds, o->close_seconds);
+    gb_run_record_times(a.f, sim, o->phases, gb_clock_seconds() - o->started_seconds, o->close_seconds);
     if (verdict) gb_run_verdict_write(a.f, verdict);
     fprintf(a.f, "status: %s\n", status);
     if (o->resumed[0])
@@ -270,8 +271,8 @@ static gb_status resumable(const char *dir, char *info, size_t cap, char *status
     return GB_OK;
 }
 
-gb_status gb_run_output_resume(const char *dir, gb_sim *sim, const char *command, gb_run_output **out,
-                               gb_error *err)
+gb_status gb_run_output_resume(const char *dir, gb_sim *sim, gb_run_progress *p, const char *command,
+                               gb_run_output **out, gb_error *err)
 {
     *out = NULL;
     struct stat sb;
@@ -285,7 +286,7 @@ gb_status gb_run_output_resume(const char *dir, gb_sim *sim, const char *command
     gb_checkpoint_meta ck;
     memset(&ck, 0, sizeof ck);
     st = gb_checkpoint_scene_hash(sim, &hash, err);
-    if (!st) st = gb_checkpoint_read(dir, sim, hash, &ck, err);
+    if (!st) st = gb_checkpoint_read(dir, sim, p, hash, &ck, err);
     for (int k = 0; k < ck.n_files && !st; k++) { /* all checked before any is cut */
         snprintf(path, sizeof path, "%s/%s", dir, ck.file[k].name);
         if (ck.file[k].length >= 0 && (stat(path, &sb) != 0 || (long long)sb.st_size < ck.file[k].length))
@@ -329,13 +330,13 @@ gb_status gb_run_output_resume(const char *dir, gb_sim *sim, const char *command
     strftime(at, sizeof at, "%Y-%m-%dT%H:%M:%SZ", gmtime(&now));
     const char *threads = getenv("OPENBLAS_NUM_THREADS");
     char within[96] = "";
-    if (sim->cur.active)
-        snprintf(within, sizeof within, " within_step: true, iterations_done: %ld,", gb_sim_step_iterations(&sim->cur));
+    if (p->cur.active)
+        snprintf(within, sizeof within, " within_step: true, iterations_done: %ld,", gb_run_step_iterations(&p->cur));
     snprintf(o->resumed + used, sizeof o->resumed - used,
              "  - {at: %s, after_step: %d,%s previous_status: %s, openblas_threads: \"%s\", command: \"%s\"}\n",
-             at, sim->pos.step, within, status[0] ? status : "unknown",
+             at, p->pos.step, within, status[0] ? status : "unknown",
              threads ? threads : "default", command);
-    for (int q = 0; q <= sim->pos.step && !st; q++)
+    for (int q = 0; q <= p->pos.step && !st; q++)
         if (snapshot_due(o->scene, q)) st = add_snapshot(o, q, err);
     if (!st) st = open_append(o, "steps.csv", &o->steps, err);
     if (!st) st = open_append(o, "micromechanics.csv", &o->micro, err);
@@ -404,13 +405,13 @@ static gb_status write_snapshot(gb_run_output *o, const gb_sim *sim, int step, g
 
 /* checkpoint.txt for the step just written, or within the step in progress: the appended files'
  * marks (within a step only history.csv has grown since the last step's rows), then the state. */
-static gb_status checkpoint(gb_run_output *o, const gb_sim *sim, gb_error *err)
+static gb_status checkpoint(gb_run_output *o, const gb_sim *sim, const gb_run_progress *p, gb_error *err)
 {
     gb_status st = GB_OK;
     o->ck.n_files = o->n_appended;
     for (int k = 0; k < o->n_appended && !st; k++)
         st = gb_checkpoint_file_mark(o->dir, o->appended[k], &o->ck.file[k], err);
-    if (!st) st = gb_checkpoint_write(o->dir, sim, &o->ck, err);
+    if (!st) st = gb_checkpoint_write(o->dir, sim, p, &o->ck, err);
     o->last_checkpoint = gb_clock_seconds();
     return st;
 }
@@ -430,41 +431,42 @@ static gb_status write_failed(const gb_run_output *o, const char *name, gb_error
 
 /* A stop asked for (gembem/run.h): a checkpoint where the run is, unless one was just written for
  * it, then GB_EINTERRUPTED saying where (`where`: "after step 3", "in step 4, after iteration 120"). */
-static gb_status stop_here(gb_run_output *o, const gb_sim *sim, int reason, int written, const char *where,
-                           gb_error *err)
+static gb_status stop_here(gb_run_output *o, const gb_sim *sim, const gb_run_progress *p, int reason, int written,
+                           const char *where, gb_error *err)
 {
-    gb_status st = written ? GB_OK : checkpoint(o, sim, err);
+    gb_status st = written ? GB_OK : checkpoint(o, sim, p, err);
     if (st) return st;
     char name[32];
     return gb_fail(err, GB_EINTERRUPTED, "interrupted by %s %s; its checkpoint is written: continue with gembem run "
                    "--resume %s", gb_run_signal_name(reason, name, sizeof name), where, o->dir);
 }
 
-gb_status gb_run_output_within_step(void *user, const gb_sim *sim, gb_error *err)
+gb_status gb_run_output_within_step(gb_run_output *o, const gb_sim *sim, const gb_run_progress *p, gb_error *err)
 {
-    gb_run_output *o = user;
     int reason = gb_run_stop_requested();
     if (reason) {
         /* its mark would count rows that are not there */
         if (o->history_failed) return gb_fail(err, GB_EIO, "%s/history.csv: write failed", o->dir);
         char where[96];
-        snprintf(where, sizeof where, "in step %d, after %ld iterations", sim->cur.step,
-                 gb_sim_step_iterations(&sim->cur));
-        return stop_here(o, sim, reason, 0, where, err);
+        snprintf(where, sizeof where, "in step %d, after %ld iterations", p->cur.step,
+                 gb_run_step_iterations(&p->cur));
+        return stop_here(o, sim, p, reason, 0, where, err);
     }
     int test = o->scene->checkpoint_every > 0 && gb_test_checkpoint_due();
     if (!test && !checkpoint_time(o)) return GB_OK;
     /* its mark would count rows that are not there */
     if (o->history_failed) return gb_fail(err, GB_EIO, "%s/history.csv: write failed", o->dir);
-    return checkpoint(o, sim, err);
+    return checkpoint(o, sim, p, err);
 }
+
+void gb_run_output_phases(gb_run_output *o, const gb_run_profile *phases) { o->phases = *phases; }
 
 int gb_run_output_fields_due(const gb_run_output *o, int step)
 {
     return o->scene->measures_every > 0 && step % o->scene->measures_every == 0;
 }
 
-gb_status gb_run_output_step(gb_run_output *o, const gb_sim *sim, const gb_step_report *r,
+gb_status gb_run_output_step(gb_run_output *o, const gb_sim *sim, const gb_run_progress *p, const gb_step_report *r,
                              const gb_step_measures *ms, gb_error *err)
 {
     gb_test_kill_point(o->steps);
@@ -500,11 +502,11 @@ gb_status gb_run_output_step(gb_run_output *o, const gb_sim *sim, const gb_step_
     }
     if (snapshot_due(sc, r->step) && (st = write_snapshot(o, sim, r->step, err))) return st;
     int due = (sc->checkpoint_every > 0 && r->step % sc->checkpoint_every == 0) || checkpoint_time(o);
-    if (due && (st = checkpoint(o, sim, err))) return st;
+    if (due && (st = checkpoint(o, sim, p, err))) return st;
     int reason = gb_run_stop_requested();
     if (!reason) return GB_OK;
     snprintf(path, sizeof path, "after step %d", r->step);
-    return stop_here(o, sim, reason, due, path, err);
+    return stop_here(o, sim, p, reason, due, path, err);
 }
 
 static gb_status write_snapshot(gb_run_output *o, const gb_sim *sim, int step, gb_error *err)

@@ -117,10 +117,8 @@ void gb_run_record_machine(FILE *f)
     fprintf(f, "  omp_threads: \"%s\"   # OMP_NUM_THREADS\n", omp ? omp : "default");
 }
 
-void gb_run_record_times(FILE *f, const gb_sim *sim, double total, double close)
+void gb_run_record_times(FILE *f, const gb_sim *sim, gb_run_profile p, double total, double close)
 {
-    gb_run_profile p = {0, 0, 0, 0};
-    if (sim) p = sim->profile;
     fprintf(f, "time:   # seconds of this process (after a resume: since it), by phase\n  total: %.3f\n", total);
     fprintf(f, "  control: %.3f   # the steps' loads, saved states, cut-backs\n", p.control);
     fprintf(f, "  solve: %.3f   # relaxations (checkpoints within a step included)\n", p.solve);

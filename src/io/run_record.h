@@ -16,8 +16,8 @@ void gb_run_record_settings(FILE *f, const gb_scene *sc);
 /* machine: CPU model and cores, memory, the BLAS's and OpenMP's threads. */
 void gb_run_record_machine(FILE *f);
 /* time: the split of this process's time (total seconds since it opened the run directory) by the
- * loop's phases (gb_sim_profile) and the solver's parts; close: the final state's writing. sim
- * may be NULL (no phases yet). */
-void gb_run_record_times(FILE *f, const gb_sim *sim, double total, double close);
+ * loop's phases (p: the run's, gb_run_phases) and the solver's parts (sim may be NULL: none);
+ * close: the final state's writing. */
+void gb_run_record_times(FILE *f, const gb_sim *sim, gb_run_profile p, double total, double close);
 
 #endif

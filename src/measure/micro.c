@@ -49,7 +49,7 @@ double gb_micro_step_dissipation(const gb_state *start, const gb_sim *sim)
     return total;
 }
 
-void gb_micro_measure(const gb_sim *sim, gb_micro *m)
+void gb_micro_measure(const gb_sim *sim, const gb_work_accounts *work, gb_micro *m)
 {
     memset(m, 0, sizeof *m);
     const gb_box *b = &sim->state.box;
@@ -78,18 +78,20 @@ void gb_micro_measure(const gb_sim *sim, gb_micro *m)
     gb_tensor2_principal(&m->fabric);
     gb_tensor2_principal(&m->energy);
     m->elastic_energy = gb_sim_elastic_energy(sim);
-    m->work_walls = sim->work_walls;
-    m->work_body = sim->work_body;
-    m->work = sim->work_walls + sim->work_body;
+    gb_work_accounts none = {NAN, NAN, NAN};
+    const gb_work_accounts *w = work ? work : &none;
+    m->work_walls = w->walls;
+    m->work_body = w->body;
+    m->work = w->walls + w->body;
     m->dissipation = sim->state.acc.dissipation;
     m->dissipation_step = sim->state.acc.dissipation_step;
     m->p_max = sim->state.acc.dissipation_step > 0 ? max_diss / sim->state.acc.dissipation_step : 0;
     m->dissipation_step_k28 = NAN; /* of a step: gb_step_measure, from its start */
-    m->balance = m->work - m->dissipation - (m->elastic_energy - sim->energy0);
+    m->balance = m->work - m->dissipation - (m->elastic_energy - w->energy0);
     m->work_walls_iter = sim->state.acc.work_walls_iter;
     m->relaxation = sim->state.acc.relaxation;
-    m->balance_iter = sim->state.acc.work_walls_iter + sim->work_body - m->dissipation - sim->state.acc.relaxation -
-                      (m->elastic_energy - sim->energy0);
+    m->balance_iter = sim->state.acc.work_walls_iter + w->body - m->dissipation - sim->state.acc.relaxation -
+                      (m->elastic_energy - w->energy0);
 }
 
 void gb_micro_rose(const gb_sim *sim, int nbins, double *count, double *energy)

@@ -58,12 +58,12 @@ static gb_status zone_measure(const gb_state *start, const gb_sim *sim, gb_zone_
     return n > 0 && dmax > 0 ? gb_d2min_points(n, z->x0, z->x1, z->d2_range, z->d2, err) : GB_OK;
 }
 
-gb_status gb_step_measure(const gb_state *start, const gb_sim *end, int step, int fields, int row,
-                          gb_step_measures *m, gb_error *err)
+gb_status gb_step_measure(const gb_state *start, const gb_sim *end, const gb_work_accounts *work, int step,
+                          int fields, int row, gb_step_measures *m, gb_error *err)
 {
     memset(m, 0, sizeof *m);
     m->step = step, m->fields = fields, m->row = row;
-    gb_micro_measure(end, &m->micro);
+    gb_micro_measure(end, work, &m->micro);
     m->micro.dissipation_step_k28 = gb_micro_step_dissipation(start, end);
     if (!row && !fields) return GB_OK;
     /* the sliding contacts, for the row's count and fields/: in the scene's numbering and order */

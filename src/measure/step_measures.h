@@ -88,8 +88,8 @@ typedef struct {
     gb_host_measures host;
 } gb_step_measures;
 
-gb_status gb_step_measure(const gb_state *start, const gb_sim *end, int step, int fields, int row,
-                          gb_step_measures *m, gb_error *err);
+gb_status gb_step_measure(const gb_state *start, const gb_sim *end, const gb_work_accounts *work, int step,
+                          int fields, int row, gb_step_measures *m, gb_error *err);
 void gb_step_measures_free(gb_step_measures *m);
 
 #endif

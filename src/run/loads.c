@@ -89,5 +89,5 @@ gb_status gb_run_weight_reachable(const gb_sim *sim, const gb_stage *sg, const g
                    "loading[%d].%s: the walls cannot reach %s dyn/cm under the grains' weight (%.6g, %.6g dyn): "
                    "frictionless walls carry at least half of it over the side, s1 >= %.6g and s2 >= %.6g (a mean "
                    ">= %.6g) here; expected a larger stress or a smaller body force",
-                   sim->cur.stage, gb_stage_name(sg->kind), target, bx, by, s1, s2, 0.5 * (s1 + s2));
+                   (int)(sg - sim->scene->stages), gb_stage_name(sg->kind), target, bx, by, s1, s2, 0.5 * (s1 + s2));
 }

@@ -11,9 +11,9 @@
  * springs and coordinates (gb_scene_force_resolution) asks for a looser accuracy; otherwise the
  * step was too large for the iterations it had: steps each the size of the finest sub-step tried
  * (each of which may still be cut back as finely again), or more iterations. */
-static void failure_hint(const gb_sim *sim, const gb_stage *sg, const gb_solve_result *res, char *hint, size_t n)
+static void failure_hint(const gb_sim *sim, const gb_run_step *c, const gb_stage *sg, const gb_solve_result *res,
+                         char *hint, size_t n)
 {
-    const gb_sim_step *c = &sim->cur;
     const gb_solver_settings *sv = &sim->scene->solver;
     double kn, x, round_off = gb_scene_force_resolution(sim->scene, &kn, &x);
     if (fmax(res->max_force, res->wall_residual) <= round_off) {
@@ -43,18 +43,17 @@ static void failure_hint(const gb_sim *sim, const gb_stage *sg, const gb_solve_r
 }
 
 /* The error of a failed step, naming it and what to change. */
-gb_status gb_run_step_failed(const gb_sim *sim, const gb_stage *sg, gb_status st, const gb_solve_result *res,
-                             gb_error *err)
+gb_status gb_run_step_failed(const gb_sim *sim, const gb_run_step *c, const gb_stage *sg, gb_status st,
+                             const gb_solve_result *res, gb_error *err)
 {
-    const gb_sim_step *c = &sim->cur;
     const gb_solver_settings *sv = &sim->scene->solver;
     if (st == GB_EINTERRUPTED) return st; /* its message says where already */
     if (st == GB_ENOCONV) {
         char cut[96] = "", hint[400], why[160];
         if (c->finest < 1) snprintf(cut, sizeof cut, ", nor in sub-steps down to 1/%.0f of the step", 1 / c->finest);
-        failure_hint(sim, sg, res, hint, sizeof hint);
+        failure_hint(sim, c, sg, res, hint, sizeof hint);
         gb_solve_stop stop = res->stop;
-        long work = gb_solver_step_work(sim);
+        long work = gb_run_step_iterations(c) + c->work.sweeps; /* its iterations and smoother steps */
         if (stop == GB_STOP_TIME)
             snprintf(why, sizeof why, "reached solver.max_step_seconds (%g s) after %ld iterations and smoother "
                      "steps", sv->max_step_seconds, work);

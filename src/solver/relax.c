@@ -72,23 +72,25 @@ static gb_status global_move(gb_solver *s, gb_sim *sim, const gb_wall_control *w
 static void report_iteration(gb_sim *sim, long it, double max_force, double wall_residual, long sweeps0)
 {
     const gb_solver *s = sim->solver;
+    const gb_relax_context *c = s->ctx;
     double move = 0;
     for (int i = 0; i < sim->state.n; i++)
         move = fmax(move, hypot(sim->scratch.dX[3 * i], sim->scratch.dX[3 * i + 1]) / sim->state.g[i].r);
     int global = s->global != NULL, line_search = s->set->newton == GB_NEWTON_LINE_SEARCH;
-    gb_iteration_report r = {sim->pos.step + 1, sim->attempt, it, max_force, wall_residual, move,
+    gb_iteration_report r = {c->step, *c->attempt, it, max_force, wall_residual, move,
                              global && !line_search ? s->damping.mu : 0, global && line_search ? s->length : 0,
                              s->work.sweeps - sweeps0, 0};
-    sim->on_iteration(sim->on_iteration_user, &r);
+    c->on_iteration(c->on_iteration_user, &r);
 }
 
 void gb_solver_report_smoother(const gb_solver *s, gb_sim *sim, double wall_residual)
 {
-    if (!sim->on_iteration) return;
+    const gb_relax_context *c = s->ctx;
+    if (!c->on_iteration) return;
     double f2 = fmax(gb_gem_largest_grain_force2(sim), gb_gem_largest_particle_force2(sim));
-    gb_iteration_report r = {sim->pos.step + 1, sim->attempt, sim->cur.relax_iters + 1, sqrt(f2), wall_residual, 0,
+    gb_iteration_report r = {c->step, *c->attempt, *c->iterations + 1, sqrt(f2), wall_residual, 0,
                              0, 0, s->work.sweeps - s->sweeps0, 1};
-    sim->on_iteration(sim->on_iteration_user, &r);
+    c->on_iteration(c->on_iteration_user, &r);
 }
 
 /* The stall window: a relaxation stalls when its largest fixing force (or the walls' residual) has
@@ -115,14 +117,17 @@ gb_solver_work gb_solver_relaxation_work(const gb_sim *sim)
     return w;
 }
 
-long gb_solver_step_work(const gb_sim *sim)
+/* The load step's work so far (its iterations plus the smoother's steps), the unit of the stall
+ * window. */
+static long step_work(const gb_sim *sim)
 {
-    return gb_sim_step_iterations(&sim->cur) + sim->cur.work.sweeps + gb_solver_relaxation_work(sim).sweeps;
+    const gb_relax_context *c = sim->solver->ctx;
+    return c->step_iterations + *c->iterations + c->step_sweeps + gb_solver_relaxation_work(sim).sweeps;
 }
 
 static int stalled(gb_solver_damping *d, const gb_sim *sim, double force)
 {
-    long w = gb_solver_step_work(sim) - d->relax_work0;
+    long w = step_work(sim) - d->relax_work0;
     if (!(force > STALL_FALL * d->stall_ref)) {
         d->stall_ref = force, d->stall_at = w;
         return 0;
@@ -133,8 +138,9 @@ static int stalled(gb_solver_damping *d, const gb_sim *sim, double force)
 
 gb_status gb_solver_poll(gb_solver *s, gb_sim *sim, double max_force)
 {
-    long sweeps = sim->cur.work.sweeps + gb_solver_relaxation_work(sim).sweeps;
-    gb_solve_stop stop = gb_sim_poll(sim, sweeps, max_force);
+    const gb_relax_context *c = s->ctx;
+    if (!c->poll) return GB_OK;
+    gb_solve_stop stop = c->poll(c->poll_user, c->step_sweeps + gb_solver_relaxation_work(sim).sweeps, max_force);
     if (stop == GB_STOP_CONVERGED) return GB_OK;
     s->stop = stop;
     return GB_ENOCONV;
@@ -142,17 +148,34 @@ gb_status gb_solver_poll(gb_solver *s, gb_sim *sim, double max_force)
 
 gb_status gb_solver_relax(gb_sim *sim, const gb_wall_control *wc, long cap, gb_solve_result *res, gb_error *err)
 {
+    int attempt = 0;
+    long iterations = 0;
+    gb_relax_context own = {.step = 1, .attempt = &attempt, .iterations = &iterations,
+                            .on_iteration = sim->solver->on_iteration, .on_iteration_user = sim->solver->on_iteration_user};
+    return gb_solver_relax_within(sim, wc, cap, &own, res, err);
+}
+
+void gb_solver_on_iteration(gb_sim *sim, gb_iteration_fn fn, void *user)
+{
+    sim->solver->on_iteration = fn;
+    sim->solver->on_iteration_user = user;
+}
+
+gb_status gb_solver_relax_within(gb_sim *sim, const gb_wall_control *wc, long cap, const gb_relax_context *ctx,
+                                 gb_solve_result *res, gb_error *err)
+{
     gb_solver *s = sim->solver;
     gb_solver_damping *d = &s->damping;
     double t0 = gb_clock_seconds(), *max_force = &res->max_force, *wall_residual = &res->wall_residual;
     *max_force = *wall_residual = 0;
     s->relax_work = gb_solver_work_done(sim);
-    long it = sim->cur.relax_iters;
+    s->ctx = ctx;
+    long it = *ctx->iterations;
     if (!it) {
-        sim->attempt++;
+        ++*ctx->attempt;
         d->best = INFINITY, d->since = 0; /* the damped iteration's stall detection */
         d->newton_failures = 0;           /* the line search's, within a relaxation */
-        d->stall_ref = INFINITY, d->stall_at = 0, d->relax_work0 = gb_solver_step_work(sim);
+        d->stall_ref = INFINITY, d->stall_at = 0, d->relax_work0 = step_work(sim);
     }
     s->stop = GB_STOP_ERROR;
     gb_status st = GB_OK;
@@ -171,15 +194,15 @@ gb_status gb_solver_relax(gb_sim *sim, const gb_wall_control *wc, long cap, gb_s
         s->sweeps0 = s->work.sweeps;
         st = s->global ? global_move(s, sim, wc, *wall_residual, err) : gb_gem_reference_move(sim, err);
         if (st) break;
-        if (sim->on_iteration) report_iteration(sim, it + 1, *max_force, *wall_residual, s->sweeps0);
-        sim->cur.relax_iters = it + 1;
+        if (ctx->on_iteration) report_iteration(sim, it + 1, *max_force, *wall_residual, s->sweeps0);
+        *ctx->iterations = it + 1;
         /* not after the last iteration allowed: its failed attempt is undone at once */
-        if (it < cap && sim->on_within_step && (st = sim->on_within_step(sim->on_within_step_user, sim, err))) {
+        if (it < cap && ctx->between && (st = ctx->between(ctx->between_user, err))) {
             it++;
             break;
         }
     }
-    sim->cur.relax_iters = 0;
+    *ctx->iterations = 0;
     if (it > cap) {
         it = cap;
         s->stop = GB_STOP_ITERATIONS, st = GB_ENOCONV;
@@ -188,6 +211,7 @@ gb_status gb_solver_relax(gb_sim *sim, const gb_wall_control *wc, long cap, gb_s
     res->iterations = it;
     res->work = gb_solver_relaxation_work(sim);
     s->relax_work = gb_solver_work_done(sim); /* none in progress now */
+    s->ctx = NULL;
     res->seconds = gb_clock_seconds() - t0;
     return st;
 }

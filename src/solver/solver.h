@@ -43,15 +43,32 @@ typedef struct {
 /* gb_solver_create, gb_solver_relax, gb_solver_work_done, gb_solver_statistics: gembem/solver.h. */
 void gb_solver_free(gb_solver *s);
 
-/* gb_solver_relax (gembem/solver.h), more of it: a relaxation resumed from a checkpoint within it
- * (sim->cur.relax_iters > 0) goes on from there: its iterations, attempt and the damped
- * iteration's stall detection are those it had. Between two iterations (not after the last allowed
- * one) it calls sim->on_within_step, whose error ends it. */
+/* A relaxation within a loading program (src/run): where it stands in its load step, and the run's
+ * hooks. attempt and iterations point into the run's record of the step, which the relaxation
+ * keeps current, so that a checkpoint taken between two iterations holds them. */
+typedef struct {
+    int step;                /* the load step it belongs to (solver.history's rows) */
+    int *attempt;            /* the step's relaxations so far: a new one adds one */
+    long *iterations;        /* of the relaxation in progress: > 0 at the call, resumed within it from a
+                                checkpoint (its iterations, attempt and stall detection go on); 0 after */
+    long step_iterations;    /* the step's iterations in its relaxations that ended */
+    long step_sweeps;        /* and their smoother steps (resumed within: also this one's before) */
+    gb_iteration_fn on_iteration; /* after every iteration that did not converge (solver.history) */
+    void *on_iteration_user;
+    /* between two iterations, not after the last one allowed (checkpoints): an error ends it */
+    gb_status (*between)(void *user, gb_error *err);
+    void *between_user;
+    /* the step's clock, given the step's smoother steps so far and the largest fixing force (NaN: not
+     * known): a stop other than GB_STOP_CONVERGED ends the relaxation */
+    gb_solve_stop (*poll)(void *user, long step_sweeps, double max_force);
+    void *poll_user;
+} gb_relax_context;
+
+/* gb_solver_relax (gembem/solver.h) within a loading program: the same, in its context. */
+gb_status gb_solver_relax_within(gb_sim *sim, const gb_wall_control *wc, long cap, const gb_relax_context *ctx,
+                                 gb_solve_result *res, gb_error *err);
 /* The work of the relaxation in progress so far (a checkpoint within it); zero outside one. */
 gb_solver_work gb_solver_relaxation_work(const gb_sim *sim);
-/* The load step's work so far (its iterations plus the smoother's steps), the unit of the stall
- * window. */
-long gb_solver_step_work(const gb_sim *sim);
 
 /* Whether sim is solved by the global solver (else by the reference iteration). */
 int gb_solver_is_global(const gb_sim *sim);

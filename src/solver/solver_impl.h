@@ -27,6 +27,9 @@ struct gb_solver {
     long sweeps0;               /* work.sweeps at the start of the iteration in progress */
     gb_solver_work work;        /* since the solver was created (gb_solver_work_done) */
     gb_solver_work relax_work;  /* gb_solver_work_done at the start of the relaxation in progress */
+    const gb_relax_context *ctx; /* that relaxation's (gb_solver_relax_within) */
+    gb_iteration_fn on_iteration; /* gb_solver_relax's (gb_solver_on_iteration) */
+    void *on_iteration_user;
 };
 
 /* The smoother's sums over the grains run on solver.threads threads in blocks of
@@ -55,7 +58,7 @@ gb_status gb_solver_line_search_move(gb_solver *s, gb_sim *sim, const gb_wall_co
 gb_status gb_solver_inertial(gb_solver *s, gb_sim *sim, const gb_wall_control *wc, double target, int max_steps,
                              double stall_check, int *stalled, gb_error *err);
 
-/* The step's clock, between iterations and every GB_POLL_SWEEPS smoother steps (gb_sim_poll): a
+/* The step's clock, between iterations and every GB_POLL_SWEEPS smoother steps (the context's poll): a
  * stop other than GB_STOP_CONVERGED ends the relaxation with GB_ENOCONV and s->stop set. */
 enum { GB_POLL_SWEEPS = 32 };
 gb_status gb_solver_poll(gb_solver *s, gb_sim *sim, double max_force);

@@ -48,7 +48,7 @@ int main(int argc, char **argv)
     gb_solve_result res;
     double t0 = bench_now();
     const char *verbose = getenv("BENCH_PROGRESS");
-    if (verbose && !strcmp(verbose, "1")) gb_sim_on_iteration(sim, progress, &t0);
+    if (verbose && !strcmp(verbose, "1")) gb_solver_on_iteration(sim, progress, &t0);
     gb_status st = gb_solver_relax(sim, &wc, prep_cap, &res, &err);
     double t_prep = bench_now() - t0;
     long prep = res.iterations;

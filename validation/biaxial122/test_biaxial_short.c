@@ -20,9 +20,10 @@ static const double S0 = 1.5e5;
 
 static gb_status check_step(void *user, const gb_sim *sim, const gb_step_report *r, gb_error *err)
 {
-    (void)user, (void)err;
+    (void)err;
     gb_micro m;
-    gb_micro_measure(sim, &m);
+    gb_work_accounts work = gb_run_work(user);
+    gb_micro_measure(sim, &work, &m);
     const gb_scene *sc = gb_sim_scene(sim);
     /* Direct count of force-carrying contacts and of their energy. */
     int n = gb_sim_contacts(sim, NULL, 0), gg = 0, gw = 0;
@@ -62,13 +63,15 @@ int main(int argc, char **argv)
     gb_error err = {0};
     gb_scene sc;
     gb_sim *sim = NULL;
-    if (gb_scene_load(argv[1], &sc, &err) || gb_sim_create(&sc, &sim, &err)) {
+    gb_run *run = NULL;
+    if (gb_scene_load(argv[1], &sc, &err) || gb_sim_create(&sc, &sim, &err) || gb_run_create(sim, &run, &err)) {
         fprintf(stderr, "%s\n", err.msg);
         return 1;
     }
-    gb_status st = gb_sim_run(sim, NULL, check_step, NULL, &err);
+    gb_status st = gb_run_program(run, NULL, check_step, run, &err);
     if (st) fprintf(stderr, "%s\n", err.msg);
     CHECK(st == GB_OK);
+    gb_run_free(run);
     gb_sim_free(sim);
     gb_scene_free(&sc);
     TEST_END();

@@ -6,29 +6,23 @@
 
 #include "core/clock.h"
 #include "core/number.h"
-#include "gem/sim.h"
+#include "run/run.h"
 
 /* A step reports its progress once it has run LONG_FACTOR times the median of the run's earlier
  * steps and at least LONG_SECONDS, then every REPORT_EVERY seconds. */
 static const double LONG_FACTOR = 10, LONG_SECONDS = 10, REPORT_EVERY = 5;
 
-const char *gb_solve_stop_name(gb_solve_stop stop)
+void gb_run_on_progress(gb_run *run, gb_progress_fn fn, void *user)
 {
-    static const char *const names[] = {"converged", "iterations", "stalled", "time", "error"};
-    return stop >= GB_STOP_CONVERGED && stop <= GB_STOP_ERROR ? names[stop] : "unknown";
+    run->watch.fn = fn;
+    run->watch.user = user;
 }
 
-void gb_sim_on_progress(gb_sim *sim, gb_progress_fn fn, void *user)
+void gb_run_watch_step(gb_run *run, double now)
 {
-    sim->watch.fn = fn;
-    sim->watch.user = user;
-}
-
-void gb_sim_watch_step(gb_sim *sim, double now)
-{
-    gb_step_watch *w = &sim->watch;
+    gb_step_watch *w = &run->watch;
     w->t0 = now;
-    w->limit = sim->scene->solver.max_step_seconds;
+    w->limit = run->sim->scene->solver.max_step_seconds;
     w->max_force = NAN;
     w->median = gb_median(w->seconds, w->n); /* sorted in place: their order is not needed */
     w->report_after = fmax(LONG_SECONDS, LONG_FACTOR * w->median);
@@ -39,9 +33,9 @@ void gb_sim_watch_step(gb_sim *sim, double now)
     w->next_report = now + w->report_after;
 }
 
-gb_status gb_sim_watch_done(gb_sim *sim, double seconds)
+gb_status gb_run_watch_done(gb_run *run, double seconds)
 {
-    gb_step_watch *w = &sim->watch;
+    gb_step_watch *w = &run->watch;
     w->t0 = 0;
     if (w->n == w->cap) {
         int cap = w->cap ? 2 * w->cap : 64;
@@ -53,17 +47,19 @@ gb_status gb_sim_watch_done(gb_sim *sim, double seconds)
     return GB_OK;
 }
 
-gb_solve_stop gb_sim_poll(gb_sim *sim, long sweeps, double max_force)
+gb_solve_stop gb_run_poll(void *user, long step_sweeps, double max_force)
 {
-    gb_step_watch *w = &sim->watch;
+    gb_run *run = user;
+    const gb_sim *sim = run->sim;
+    gb_step_watch *w = &run->watch;
     if (!isnan(max_force)) w->max_force = max_force;
     if (!(w->t0 > 0)) return GB_STOP_CONVERGED;
     double now = gb_clock_seconds();
     if (w->limit > 0 && now - w->t0 > w->limit) return GB_STOP_TIME;
     if (w->fn && now >= w->next_report) {
-        const gb_sim_step *c = &sim->cur;
+        const gb_run_step *c = &run->p.cur;
         const gb_stage *sg = &sim->scene->stages[c->stage];
-        gb_step_progress p = {c->step, c->stage_step, sg->steps, sim->attempt, gb_sim_step_iterations(c), sweeps,
+        gb_step_progress p = {c->step, c->stage_step, sg->steps, c->attempt, gb_run_step_iterations(c), step_sweeps,
                               w->max_force, sim->accuracy, now - w->t0, w->median};
         w->fn(w->user, &p);
         w->next_report = now + w->report_every;
