@@ -31,7 +31,7 @@ struct gb_run {
     double *phase;            /* the profile's field the run's time goes to now (NULL: none) */
     double phase_since;       /* since when */
     gb_step_watch watch;      /* the step's clock */
-    gb_iteration_fn on_iteration; /* solver.history, or the caller's */
+    gb_iteration_fn on_iteration; /* gb_run_on_iteration's (an output with solver.history: history.csv) */
     void *on_iteration_user;
     gb_run_output *out;       /* the output of the call in progress (NULL: none) */
 };
