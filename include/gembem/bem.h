@@ -239,6 +239,7 @@ typedef struct {
  * each increment (hypoelastic): it is not a hyperelastic material (validation/bem/README.md says
  * how far the two are apart for a thick cylinder). On an error the mesh is that of the last
  * increment that succeeded. */
+#define GB_BEM_MAX_INCREMENTS 100000 /* a scene's updated_lagrangian.increments at most */
 gb_status gb_bem_solve_updated(gb_bem_mesh *mesh, const gb_bem_material *mat, const gb_bem_problem *prob,
                                int increments, const gb_bem_guard *guard, gb_bem_follow *follow, gb_bem_solution *sol,
                                gb_error *err);

@@ -15,19 +15,29 @@
 #define A0 1.0
 #define B0 2.0
 
-/* The 1D model: material points at reference radii r[0..nr) (the inner and outer walls among
- * them), moved by n equal increments of the pressure p on the inner wall, the outer free. */
-static void lame_incremental(double p, int n, int nr, double *r)
+/* The 1D model: material points at reference radii r[0..nr), moved by n equal increments of the
+ * pressure p on the inner wall (the outer free); srr, stt (NULL: not wanted) receive the sums of
+ * the increments' radial and hoop stresses at those points. */
+static void lame_stress(double p, int n, int nr, double *r, double *srr, double *stt)
 {
     double lambda = 2 * MU * NU / (1 - 2 * NU), a = A0, b = B0, dp = p / n;
     for (int k = 0; k < n; k++) {
         /* s_rr = 2 (lambda + mu) A - 2 mu B / r^2: -dp at a, 0 at b */
         double A = dp * a * a / (2 * (lambda + MU) * (b * b - a * a));
         double B = dp * a * a * b * b / (2 * MU * (b * b - a * a));
-        for (int i = 0; i < nr; i++) r[i] += A * r[i] + B / r[i];
+        for (int i = 0; i < nr; i++) {
+            if (srr) srr[i] += 2 * (lambda + MU) * A - 2 * MU * B / (r[i] * r[i]);
+            if (stt) stt[i] += 2 * (lambda + MU) * A + 2 * MU * B / (r[i] * r[i]);
+            r[i] += A * r[i] + B / r[i];
+        }
         a += A * a + B / a;
         b += A * b + B / b;
     }
+}
+
+static void lame_incremental(double p, int n, int nr, double *r)
+{
+    lame_stress(p, n, nr, r, NULL, NULL);
 }
 
 static void load_annulus(int count, gb_bem_mesh *m)
@@ -159,6 +169,38 @@ static void check_tractions(int count, double p, int n, int verbose)
     gb_bem_mesh_free(&m);
 }
 
+/* Material points followed inside the body: their places, displacements and summed stresses
+ * against the 1D model's (radial and hoop stress turned to x, y). */
+static void check_points(int count, double p, int n, int verbose)
+{
+    gb_bem_mesh m;
+    load_annulus(count, &m);
+    gb_bem_material mat = {MU, NU, GB_BEM_PLANE_STRAIN};
+    gb_bem_problem pr = pressure(&m, p);
+    gb_bem_solution sol;
+    gb_error err = {0};
+    double xy[4] = {1.5, 0, 0, 1.25}, u[4], s[6];
+    gb_bem_follow f = {2, xy, u, s, NULL};
+    CHECK(gb_bem_solve_updated(&m, &mat, &pr, n, NULL, &f, &sol, &err) == GB_OK);
+    double r[2] = {1.5, 1.25}, srr[2] = {0, 0}, stt[2] = {0, 0};
+    lame_stress(p, n, 2, r, srr, stt);
+    double ur[2] = {r[0] - 1.5, r[1] - 1.25};
+    double got_u[2] = {u[0], u[3]}, got_x[2] = {xy[0], xy[3]}, got_rr[2] = {s[0], s[4]}, got_tt[2] = {s[1], s[3]};
+    for (int i = 0; i < 2; i++) {
+        if (verbose)
+            printf("point %d: u_r %.6f (1D %.6f, %+.2e), s_rr %.6f (1D %.6f, %+.2e), s_tt %.6f (1D %.6f, %+.2e)\n", i,
+                   got_u[i], ur[i], got_u[i] / ur[i] - 1, got_rr[i], srr[i], got_rr[i] / srr[i] - 1, got_tt[i],
+                   stt[i], got_tt[i] / stt[i] - 1);
+        CHECK_NEAR(got_u[i], ur[i], 2e-2 * ur[i]); /* measured 1.0e-2: the mesh's, as on the walls */
+        CHECK_NEAR(got_x[i], r[i], 2e-2 * ur[i]);
+        CHECK_NEAR(got_rr[i], srr[i], 2e-2 * p);
+        CHECK_NEAR(got_tt[i], stt[i], 2e-2 * p);
+    }
+    CHECK(fabs(u[1]) < 1e-9 && fabs(u[2]) < 1e-9 && fabs(s[2]) < 1e-9 && fabs(s[5]) < 1e-9); /* radial, by symmetry */
+    gb_bem_solution_free(&sol);
+    gb_bem_mesh_free(&m);
+}
+
 int main(int argc, char **argv)
 {
     int verbose = argc > 1;
@@ -216,5 +258,6 @@ int main(int argc, char **argv)
         free(w.u), free(l.u), free(one.u);
     }
     check_tractions(64, p, 10, verbose);
+    check_points(64, p, nsteps, verbose);
     return gb_test_failures;
 }
