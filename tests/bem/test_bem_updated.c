@@ -201,10 +201,28 @@ static void check_points(int count, double p, int n, int verbose)
     gb_bem_mesh_free(&m);
 }
 
+/* With an argument: the table of validation/bem/README.md (three pressures, three meshes). */
+static void table(void)
+{
+    double ps[3] = {0.05, 0.1, 0.2};
+    int counts[3] = {64, 128, 256}, nsteps = 40;
+    printf("p, elements per wall, hoop strain, u_in, 1D, dev, u_out, 1D, dev (40 increments)\n");
+    for (int i = 0; i < 3; i++)
+        for (int c = 0; c < 3; c++) {
+            walls w = solve_updated(counts[c], ps[i], nsteps);
+            double ui, uo;
+            reference(ps[i], nsteps, &w, &ui, &uo);
+            printf("%g, %d, %.4f, %.6f, %.6f, %+.2e, %.6f, %.6f, %+.2e\n", ps[i], counts[c], w.t_hoop, w.u_in, ui,
+                   w.u_in / ui - 1, w.u_out, uo, w.u_out / uo - 1);
+            free(w.u);
+        }
+}
+
 int main(int argc, char **argv)
 {
     int verbose = argc > 1;
     (void)argv;
+    if (verbose) table();
     /* large: about 16 % hoop strain at the inner wall; 40 increments */
     int counts[2] = {64, 128}, nsteps = 40;
     double p = 0.2, dev[2][2], lin[2][2];
