@@ -112,7 +112,8 @@ void gb_bem_mesh_free(gb_bem_mesh *mesh);
 /* Moves the mesh with the body: every node by the displacement u (2 per element, at the midpoints)
  * interpolated linearly along the boundary between the midpoints of its two elements; lengths,
  * midpoints, tangents and normals follow. Refused (GB_EINPUT, the mesh left as it was): an element
- * that shrinks to nothing, a loop that turns inside out, a boundary that crosses or touches itself. */
+ * that shrinks to nothing or turns by more than a right angle, a loop that turns inside out, a
+ * boundary that crosses or touches itself. */
 gb_status gb_bem_mesh_move(gb_bem_mesh *mesh, const double *u, gb_error *err);
 
 /* ---------------------------------------------------------------- H and G */

@@ -436,10 +436,19 @@ gb_status gb_bem_mesh_move(gb_bem_mesh *m, const double *u, gb_error *err)
     double diag = 0;
     gb_status st = extent(m->p0, m->n, &diag, err);
     for (int e = 0; e < m->n; e++) fill_geometry(m, e);
-    for (int e = 0; e < m->n && !st; e++)
+    for (int e = 0; e < m->n && !st; e++) {
+        /* a turn past a right angle in one move is no small rotation (a point reflection through a
+         * cavity's centre keeps every loop's orientation and crosses nothing) */
+        double dx = old[2 * e + n2] - old[2 * e], dy = old[2 * e + 1 + n2] - old[2 * e + 1];
         if (!(m->length[e] > 1e-10 * diag))
             st = gb_fail(err, GB_EINPUT, "moved by its displacement, element %d (group '%s') has no length left", e,
                          m->group_name[m->group[e]]);
+        else if (!(dx * m->tangent[2 * e] + dy * m->tangent[2 * e + 1] > 0))
+            st = gb_fail(err, GB_EINPUT,
+                         "moved by its displacement, element %d (group '%s') turns by more than a right angle: "
+                         "too large a displacement for one move",
+                         e, m->group_name[m->group[e]]);
+    }
     for (int k = 0; k < m->n_loops && !st; k++)
         if (!(loop_area(m, k) * area[k] > 0))
             st = gb_fail(err, GB_EINPUT, "moved by its displacement, loop %d (group '%s') turns inside out", k,

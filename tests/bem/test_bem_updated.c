@@ -60,8 +60,8 @@ static gb_bem_problem pressure(const gb_bem_mesh *m, double p)
     return pr;
 }
 
-/* Mean radial displacement of a group's midpoints (mid0: their first places) and their mean
- * first radius. */
+/* Mean radial displacement of a group's midpoints (in `first`, their first places) and their
+ * mean first radius. */
 static void radial(const gb_bem_mesh *first, const double *u, int group, double *ur, double *r0)
 {
     double su = 0, sr = 0;
@@ -95,17 +95,22 @@ static walls walls_of(const gb_bem_mesh *first, gb_bem_solution *sol)
     return w;
 }
 
+/* The annulus of count + count elements, pressure p in n increments; the moved mesh in m. */
+static void updated(int count, double p, int n, gb_bem_follow *f, gb_bem_mesh *m, gb_bem_solution *sol)
+{
+    load_annulus(count, m);
+    gb_bem_material mat = {MU, NU, GB_BEM_PLANE_STRAIN};
+    gb_bem_problem pr = pressure(m, p);
+    gb_error err = {0};
+    if (gb_bem_solve_updated(m, &mat, &pr, n, NULL, f, sol, &err)) fprintf(stderr, "%s\n", err.msg), exit(1);
+}
+
 static walls solve_updated(int count, double p, int n)
 {
     gb_bem_mesh m, first;
-    load_annulus(count, &m);
-    load_annulus(count, &first);
-    gb_bem_material mat = {MU, NU, GB_BEM_PLANE_STRAIN};
-    gb_bem_problem pr = pressure(&m, p);
     gb_bem_solution sol;
-    gb_error err = {0};
-    gb_bem_guard guard = gb_bem_guard_default();
-    if (gb_bem_solve_updated(&m, &mat, &pr, n, &guard, NULL, &sol, &err)) fprintf(stderr, "%s\n", err.msg), exit(1);
+    updated(count, p, n, NULL, &m, &sol);
+    load_annulus(count, &first);
     walls w = walls_of(&first, &sol);
     gb_bem_mesh_free(&m);
     gb_bem_mesh_free(&first);
@@ -143,14 +148,10 @@ static walls solve_linear(int count, double p)
 static void check_tractions(int count, double p, int n, int verbose)
 {
     gb_bem_mesh m;
-    load_annulus(count, &m);
-    gb_bem_material mat = {MU, NU, GB_BEM_PLANE_STRAIN};
-    gb_bem_problem pr = pressure(&m, p);
     gb_bem_solution sol;
-    gb_error err = {0};
-    double *bs = malloc(sizeof(double) * 3 * (size_t)m.n);
+    double *bs = malloc(sizeof(double) * 3 * 2 * (size_t)count);
     gb_bem_follow f = {0, NULL, NULL, NULL, bs};
-    CHECK(gb_bem_solve_updated(&m, &mat, &pr, n, NULL, &f, &sol, &err) == GB_OK);
+    updated(count, p, n, &f, &m, &sol);
     int cavity = gb_bem_mesh_group(&m, "cavity");
     double worst = 0, srr = 0;
     for (int e = 0; e < m.n; e++) {
@@ -174,14 +175,10 @@ static void check_tractions(int count, double p, int n, int verbose)
 static void check_points(int count, double p, int n, int verbose)
 {
     gb_bem_mesh m;
-    load_annulus(count, &m);
-    gb_bem_material mat = {MU, NU, GB_BEM_PLANE_STRAIN};
-    gb_bem_problem pr = pressure(&m, p);
     gb_bem_solution sol;
-    gb_error err = {0};
     double xy[4] = {1.5, 0, 0, 1.25}, u[4], s[6];
     gb_bem_follow f = {2, xy, u, s, NULL};
-    CHECK(gb_bem_solve_updated(&m, &mat, &pr, n, NULL, &f, &sol, &err) == GB_OK);
+    updated(count, p, n, &f, &m, &sol);
     double r[2] = {1.5, 1.25}, srr[2] = {0, 0}, stt[2] = {0, 0};
     lame_stress(p, n, 2, r, srr, stt);
     double ur[2] = {r[0] - 1.5, r[1] - 1.25};
@@ -216,6 +213,25 @@ static void table(void)
                    w.u_in / ui - 1, w.u_out, uo, w.u_out / uo - 1);
             free(w.u);
         }
+}
+
+/* A suction whose first increment would turn the cavity inside out (its wall moved by about
+ * -1.1, linearly, on a radius of 1) is refused, and the mesh stays the last valid one. */
+static void check_refusal(void)
+{
+    gb_bem_mesh m;
+    load_annulus(32, &m);
+    gb_bem_material mat = {MU, NU, GB_BEM_PLANE_STRAIN};
+    gb_bem_problem pr = pressure(&m, -3.0);
+    gb_bem_solution sol;
+    gb_error err = {0};
+    CHECK(gb_bem_solve_updated(&m, &mat, &pr, 2, NULL, NULL, &sol, &err) == GB_EINPUT);
+    CHECK(strstr(err.msg, "increment 1 of 2: moved by its displacement"));
+    CHECK(sol.u == NULL);
+    double lo = INFINITY; /* the mesh as it was */
+    for (int e = 0; e < m.n; e++) lo = fmin(lo, hypot(m.mid[2 * e], m.mid[2 * e + 1]));
+    CHECK(lo > cos(3.1416 / 32) - 1e-6 && lo < 1);
+    gb_bem_mesh_free(&m);
 }
 
 int main(int argc, char **argv)
@@ -277,5 +293,6 @@ int main(int argc, char **argv)
     }
     check_tractions(64, p, 10, verbose);
     check_points(64, p, nsteps, verbose);
+    check_refusal();
     return gb_test_failures;
 }
