@@ -174,7 +174,7 @@ static void read_undefined(const char *dir, gb_run_verdict *v)
  * fits its elements' displacements best (least squares over host_boundary.csv's midpoints: the
  * cavity's mean strain, its dilation and ovalisation; the hoop strain of a cylinder), against
  * GB_WARN_HOST_STRAIN. The dents under single contacts do not enter: they strain the material
- * locally (and more on a finer mesh), not the body's shape. */
+ * locally under a nearly point load, not the body's shape. */
 static void host_strain(const char *dir, const gb_scene *sc, gb_run_verdict *v)
 {
     if (!sc->host.present || sc->host.rigid) return;
