@@ -109,6 +109,13 @@ double gb_bem_mesh_distance(const gb_bem_mesh *mesh, double x, double y);
 
 void gb_bem_mesh_free(gb_bem_mesh *mesh);
 
+/* Moves the mesh with the body: every node by the displacement u (2 per element, at the midpoints)
+ * interpolated linearly along the boundary between the midpoints of its two elements; lengths,
+ * midpoints, tangents and normals follow. Refused (GB_EINPUT, the mesh left as it was): an element
+ * that shrinks to nothing or turns by more than a right angle, a loop that turns inside out, a
+ * boundary that crosses or touches itself. */
+gb_status gb_bem_mesh_move(gb_bem_mesh *mesh, const double *u, gb_error *err);
+
 /* ---------------------------------------------------------------- H and G */
 
 /* Dense influence matrices of size 2n x 2n, column-major (LAPACK order), DOF 2e+c is component c
@@ -206,6 +213,37 @@ gb_status gb_bem_interior(const gb_bem_mesh *mesh, const gb_bem_material *mat, c
  * tangential strain of the boundary displacement (central differences along each loop). */
 gb_status gb_bem_boundary_stress(const gb_bem_mesh *mesh, const gb_bem_material *mat, const gb_bem_solution *sol,
                                  double *stress, gb_error *err);
+
+/* ---------------------------------------------------------------- large displacements */
+
+/* Material points followed through an updated-Lagrangian solve (gb_bem_solve_updated), and the
+ * boundary stress it sums. Any pointer may be NULL (not wanted); npts 0: no points. */
+typedef struct {
+    int npts;
+    double *xy;              /* 2 per point, inside the body: moved with it to their current places */
+    double *u;               /* 2 per point: the sum of the increments' displacements */
+    double *stress;          /* 3 per point (sxx, syy, sxy): the sum of the increments' stresses */
+    double *boundary_stress; /* 3 per element: the sum of the increments' gb_bem_boundary_stress */
+} gb_bem_follow;
+
+/* The body that follows its deformed boundary (updated Lagrangian, docs/method.md section 9): the
+ * problem's values (every condition's and the remote stress) applied in `increments` equal parts;
+ * each part is solved as a linear problem on the current mesh (H and G assembled on it), then the
+ * mesh (gb_bem_mesh_move) and the followed points move by its displacement. A pressure pushes on
+ * the current normal, a normal displacement goes along it, a traction or displacement keeps its
+ * direction. On return the mesh is the deformed one, sol->u the sum of the increments'
+ * displacements (each element's midpoint from its first place to its last) and sol->t the sum of
+ * their tractions, each on the boundary it was solved on (the current, Cauchy tractions for loads
+ * that keep their direction or follow the normal; the stress is summed without rotating it, as
+ * incremental linear elasticity does). rcond and scale are those of the worst-conditioned
+ * increment. increments 1 is one linear solve, then the mesh moved. The elastic law is linear in
+ * each increment (hypoelastic): it is not a hyperelastic material (validation/bem/README.md says
+ * how far the two are apart for a thick cylinder). On an error the mesh is that of the last
+ * increment that succeeded. */
+#define GB_BEM_MAX_INCREMENTS 100000 /* a scene's updated_lagrangian.increments at most */
+gb_status gb_bem_solve_updated(gb_bem_mesh *mesh, const gb_bem_material *mat, const gb_bem_problem *prob,
+                               int increments, const gb_bem_guard *guard, gb_bem_follow *follow, gb_bem_solution *sol,
+                               gb_error *err);
 
 /* ---------------------------------------------------------------- condensed stiffness */
 

@@ -271,6 +271,8 @@ typedef struct {
     double *pts;          /* interior points, 2 per point */
     int grid_nx, grid_ny; /* >0: pts[0 .. nx*ny) is a grid, row by row (x fastest); may hold outside points */
     int *pt_inside;       /* 1 if pts[i] is inside the body */
+    int increments; /* updated_lagrangian.increments: 0, one linear solve on the undeformed mesh;
+                       n >= 1, the body follows its deformed boundary (gb_bem_solve_updated) */
     char stiffness_group[GB_BEM_NAME_MAX]; /* "" : no condensation */
     int stiffness_write;
     int write_boundary_csv, write_boundary_vtp, write_interior_vtu, write_interior_csv; /* output: default 1 */

@@ -392,3 +392,74 @@ gb_status gb_bem_mesh_circle(double cx, double cy, double r, int n, int unbounde
     free(grp);
     return st;
 }
+
+/* Signed area of loop k from its elements' start points. */
+static double loop_area(const gb_bem_mesh *m, int k)
+{
+    double A = 0;
+    for (int e = m->loop_start[k]; e < m->loop_start[k + 1]; e++)
+        A += m->p0[2 * e] * m->p1[2 * e + 1] - m->p0[2 * e + 1] * m->p1[2 * e];
+    return 0.5 * A;
+}
+
+/* The node between elements ep and e (p1 of ep, p0 of e) takes the displacement interpolated
+ * linearly along the boundary between their midpoints, which lie L_ep / 2 and L_e / 2 from it. */
+static void node_displacement(const gb_bem_mesh *m, const double *u, int ep, int e, double v[2])
+{
+    double w = m->length[e] / (m->length[ep] + m->length[e]);
+    for (int c = 0; c < 2; c++) v[c] = w * u[2 * ep + c] + (1 - w) * u[2 * e + c];
+}
+
+gb_status gb_bem_mesh_move(gb_bem_mesh *m, const double *u, gb_error *err)
+{
+    size_t n2 = 2 * (size_t)m->n;
+    double *old = malloc(sizeof(double) * 2 * n2), *area = malloc(sizeof(double) * (size_t)m->n_loops);
+    if (!old || !area) {
+        free(old), free(area);
+        return gb_fail(err, GB_ENOMEM, "out of memory");
+    }
+    memcpy(old, m->p0, sizeof(double) * n2);
+    memcpy(old + n2, m->p1, sizeof(double) * n2);
+    for (int k = 0; k < m->n_loops; k++) {
+        area[k] = loop_area(m, k);
+        int s0 = m->loop_start[k], c = m->loop_start[k + 1] - s0;
+        for (int j = 0; j < c; j++) {
+            int e = s0 + j, ep = s0 + (j + c - 1) % c;
+            double v[2];
+            node_displacement(m, u, ep, e, v);
+            for (int q = 0; q < 2; q++) {
+                m->p0[2 * e + q] = old[2 * e + q] + v[q];
+                m->p1[2 * ep + q] = old[n2 + 2 * ep + q] + v[q];
+            }
+        }
+    }
+    double diag = 0;
+    gb_status st = extent(m->p0, m->n, &diag, err);
+    for (int e = 0; e < m->n; e++) fill_geometry(m, e);
+    for (int e = 0; e < m->n && !st; e++) {
+        /* a turn past a right angle in one move is no small rotation (a point reflection through a
+         * cavity's centre keeps every loop's orientation and crosses nothing) */
+        double dx = old[2 * e + n2] - old[2 * e], dy = old[2 * e + 1 + n2] - old[2 * e + 1];
+        if (!(m->length[e] > 1e-10 * diag))
+            st = gb_fail(err, GB_EINPUT, "moved by its displacement, element %d (group '%s') has no length left", e,
+                         m->group_name[m->group[e]]);
+        else if (!(dx * m->tangent[2 * e] + dy * m->tangent[2 * e + 1] > 0))
+            st = gb_fail(err, GB_EINPUT,
+                         "moved by its displacement, element %d (group '%s') turns by more than a right angle: "
+                         "too large a displacement for one move",
+                         e, m->group_name[m->group[e]]);
+    }
+    for (int k = 0; k < m->n_loops && !st; k++)
+        if (!(loop_area(m, k) * area[k] > 0))
+            st = gb_fail(err, GB_EINPUT, "moved by its displacement, loop %d (group '%s') turns inside out", k,
+                         m->group_name[m->group[m->loop_start[k]]]);
+    if (!st) st = check_crossings(m, 1e-10 * diag, err);
+    if (st) { /* back to where it was: the caller keeps a valid mesh */
+        memcpy(m->p0, old, sizeof(double) * n2);
+        memcpy(m->p1, old + n2, sizeof(double) * n2);
+        for (int e = 0; e < m->n; e++) fill_geometry(m, e);
+    }
+    free(old);
+    free(area);
+    return st;
+}

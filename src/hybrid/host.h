@@ -68,6 +68,8 @@ gb_status gb_host_add_load(gb_host *h, gb_host_vars *v, const char *group, const
 gb_status gb_host_add_remote(gb_host *h, gb_host_vars *v, const double remote_inc[3], gb_error *err);
 /* The conditions with the values of v. */
 gb_bem_problem gb_host_problem(const gb_host *h, const gb_host_vars *v);
+/* The same with each loadable value's change since creation (or since the last gb_host_rebase). */
+gb_bem_problem gb_host_problem_change(const gb_host *h, const gb_host_vars *v);
 /* The host's whole boundary state for the cavity displacements and loads of v (one solve). */
 gb_status gb_host_solve(const gb_host *h, const gb_host_vars *v, gb_bem_solution *sol, gb_error *err);
 /* A group's total force (sum of traction x length over its elements: what the outside puts on the
@@ -78,5 +80,14 @@ void gb_host_group_resultant(const gb_host *h, const gb_host_vars *v, int group,
 /* The same by name, solving for it. */
 gb_status gb_host_group_force(const gb_host *h, const gb_host_vars *v, const char *group, double force[2],
                               double disp[2], gb_error *err);
+/* The host follows its deformed boundary (updated Lagrangian, docs/hybrid.md): its mesh moved by
+ * the displacements of every element since the last rebase (gb_host_solve, gb_bem_mesh_move), G,
+ * H, K and the loads' unit responses recomputed on it, the values of the loads now taken as the
+ * new values at creation; then u = 0 and f0 = the force K u + f0 of before, so that the grains'
+ * equilibrium is carried over exactly, and the groups' resultants go on from their values before.
+ * Not yet in runs: gb_host_solve's whole state (the host's files, fields) is then wrong (it
+ * applies the loads' whole values to the moved body), and neither a checkpoint nor a state file holds the moved mesh. On an error the host
+ * is unusable (free it). */
+gb_status gb_host_rebase(gb_host *h, gb_host_vars *v, gb_error *err);
 
 #endif

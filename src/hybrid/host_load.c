@@ -27,6 +27,13 @@ static double load_change(const gb_host *h, const gb_host_vars *v, int j)
     return now - h->load0[j];
 }
 
+gb_bem_problem gb_host_problem_change(const gb_host *h, const gb_host_vars *v)
+{
+    gb_bem_problem p = gb_host_problem(h, v);
+    for (int j = 0; j < h->n_loads; j++) *load_value(&p, &h->loads[j]) = load_change(h, v, j);
+    return p;
+}
+
 gb_status gb_host_condense(gb_host *h, gb_error *err)
 {
     int n = 0;

@@ -170,6 +170,53 @@ static void read_undefined(const char *dir, gb_run_verdict *v)
                  first[q], why[q]);
 }
 
+/* The host's cavity at the end: the largest principal strain (in magnitude) of the affine map that
+ * fits its elements' displacements best (least squares over host_boundary.csv's midpoints: the
+ * cavity's mean strain, its dilation and ovalisation; the hoop strain of a cylinder), against
+ * GB_WARN_HOST_STRAIN. The dents under single contacts do not enter: they strain the material
+ * locally under a nearly point load, not the body's shape. */
+static void host_strain(const char *dir, const gb_scene *sc, gb_run_verdict *v)
+{
+    if (!sc->host.present || sc->host.rigid) return;
+    char path[1200];
+    snprintf(path, sizeof path, "%s/host_boundary.csv", dir);
+    gb_csv c;
+    gb_error e = {0};
+    if (gb_csv_open(path, &c, &e)) return;
+    static const char *const names[4] = {"x", "y", "ux", "uy"};
+    int k[4], k_g = gb_csv_column(&c, "group"), has = 1, n = 0, ok = k_g >= 0;
+    for (int q = 0; q < 4; q++) ok &= (k[q] = gb_csv_column(&c, names[q])) >= 0;
+    /* sums of 1, x, u, x x^t and u x^t, centred at the end */
+    double s1 = 0, sx[2] = {0, 0}, su[2] = {0, 0}, sxx[3] = {0, 0, 0}, sux[4] = {0, 0, 0, 0};
+    while (ok && !gb_csv_next(&c, &has, &e) && has) {
+        if (strcmp(c.field[k_g], sc->host.cavity)) continue;
+        double x = value(&c, k[0]), y = value(&c, k[1]), ux = value(&c, k[2]), uy = value(&c, k[3]);
+        s1++, sx[0] += x, sx[1] += y, su[0] += ux, su[1] += uy;
+        sxx[0] += x * x, sxx[1] += x * y, sxx[2] += y * y;
+        sux[0] += ux * x, sux[1] += ux * y, sux[2] += uy * x, sux[3] += uy * y;
+        n++;
+    }
+    gb_csv_close(&c);
+    if (n < 3) return;
+    double cxx = sxx[0] - sx[0] * sx[0] / s1, cxy = sxx[1] - sx[0] * sx[1] / s1, cyy = sxx[2] - sx[1] * sx[1] / s1;
+    double m[4] = {sux[0] - su[0] * sx[0] / s1, sux[1] - su[0] * sx[1] / s1, sux[2] - su[1] * sx[0] / s1,
+                   sux[3] - su[1] * sx[1] / s1};
+    double det = cxx * cyy - cxy * cxy;
+    if (!(det > 0)) return;
+    /* A = M C^-1, row by row; its symmetric part's principal values */
+    double a11 = (m[0] * cyy - m[1] * cxy) / det, a12 = (m[1] * cxx - m[0] * cxy) / det;
+    double a21 = (m[2] * cyy - m[3] * cxy) / det, a22 = (m[3] * cxx - m[2] * cxy) / det;
+    double mid = 0.5 * (a11 + a22), rad = hypot(0.5 * (a11 - a22), 0.5 * (a12 + a21));
+    double worst = fmax(fabs(mid + rad), fabs(mid - rad));
+    if (worst > GB_WARN_HOST_STRAIN)
+        warn(v, "the host's cavity is strained by %.3g %% at the end (the largest principal strain of the affine "
+                "map that fits its displacements in host_boundary.csv), more than the %g %% to which the host, "
+                "linear on its geometry at rest, describes the body: its displacements and stresses, and the "
+                "grains' confinement, are those of a body that did not change shape; load it less, or see how far "
+                "the large-displacement answer is with gembem bem's updated_lagrangian",
+             100 * worst, 100 * GB_WARN_HOST_STRAIN);
+}
+
 gb_status gb_run_verdict_read(const char *dir, const gb_scene *sc, gb_run_verdict *v, gb_error *err)
 {
     memset(v, 0, sizeof *v);
@@ -213,6 +260,7 @@ gb_status gb_run_verdict_read(const char *dir, const gb_scene *sc, gb_run_verdic
              w.stalled_steps);
     free(w.secs);
     read_undefined(dir, v);
+    host_strain(dir, sc, v);
     return GB_OK;
 }
 

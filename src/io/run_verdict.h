@@ -18,6 +18,10 @@
 /* The contact count swings: it changes by more than this share of the larger count between two
  * consecutive converged steps. */
 #define GB_WARN_SWING 0.25
+/* The linear host leaves its range: the largest principal strain of the affine map that fits its
+ * cavity's displacements at the end (host_boundary.csv) above this; its geometry at rest is then
+ * no longer the body's (docs/hybrid.md). */
+#define GB_WARN_HOST_STRAIN 0.02
 
 enum { GB_VERDICT_WARNINGS = 8 };
 

@@ -29,30 +29,64 @@ static void bem_run_free(bem_run *r)
     free(r->u), free(r->s), free(r->bs);
 }
 
+/* The body that follows its deformed boundary: the interior points inside the body are material
+ * points, followed to their current places (written there), with their summed displacements and
+ * stresses. */
+static gb_status compute_updated(bem_run *r, const gb_bem_guard *guard, gb_error *err)
+{
+    gb_bem_scene *sc = &r->sc;
+    int n = 0;
+    for (int i = 0; i < sc->npts; i++) n += sc->pt_inside[i];
+    gb_bem_follow f = {n, malloc(sizeof(double) * 2 * (size_t)(n ? n : 1)),
+                       malloc(sizeof(double) * 2 * (size_t)(n ? n : 1)),
+                       malloc(sizeof(double) * 3 * (size_t)(n ? n : 1)), r->bs};
+    gb_status st = (!f.xy || !f.u || !f.stress) ? gb_fail(err, GB_ENOMEM, "out of memory") : GB_OK;
+    for (int i = 0, q = 0; !st && i < sc->npts; i++)
+        if (sc->pt_inside[i]) memcpy(f.xy + 2 * q++, sc->pts + 2 * i, sizeof(double) * 2);
+    if (!st) st = gb_bem_solve_updated(&sc->mesh, &sc->material, &sc->problem, sc->increments, guard, &f, &r->sol, err);
+    for (int i = 0, q = 0; !st && i < sc->npts; i++)
+        if (sc->pt_inside[i]) {
+            memcpy(sc->pts + 2 * i, f.xy + 2 * q, sizeof(double) * 2);
+            memcpy(r->u + 2 * i, f.u + 2 * q, sizeof(double) * 2);
+            memcpy(r->s + 3 * i, f.stress + 3 * q, sizeof(double) * 3);
+            q++;
+        }
+    free(f.xy), free(f.u), free(f.stress);
+    return st;
+}
+
+/* Today's linear solve on the undeformed mesh, its interior points and its condensed stiffness. */
+static gb_status compute_linear(bem_run *r, const gb_bem_guard *guard, gb_error *err)
+{
+    gb_bem_scene *sc = &r->sc;
+    gb_status st;
+    if ((st = gb_bem_assemble(&sc->mesh, &sc->material, &r->sys, err))) return st;
+    if ((st = gb_bem_solve(&sc->mesh, &r->sys, &sc->problem, guard, &r->sol, err))) return st;
+    if ((st = gb_bem_boundary_stress(&sc->mesh, &sc->material, &r->sol, r->bs, err))) return st;
+    for (int i = 0; i < sc->npts && !st; i++) /* point by point: the grid may hold points outside the body */
+        if (sc->pt_inside[i])
+            st = gb_bem_interior(&sc->mesh, &sc->material, &sc->problem, &r->sol, 1, sc->pts + 2 * i, r->u + 2 * i,
+                                 r->s + 3 * i, err);
+    if (st) return st;
+    if (sc->stiffness_group[0]) {
+        int g = gb_bem_mesh_group(&sc->mesh, sc->stiffness_group);
+        if ((st = gb_bem_condense(&sc->mesh, &r->sys, &sc->problem, g, guard, &r->k, err))) return st;
+        r->has_k = 1;
+    }
+    return GB_OK;
+}
+
 static gb_status compute(const char *scene, bem_run *r, gb_error *err)
 {
     gb_status st = gb_bem_scene_load(scene, &r->sc, err);
     if (st) return st;
     gb_bem_guard guard = gb_bem_guard_default();
-    if ((st = gb_bem_assemble(&r->sc.mesh, &r->sc.material, &r->sys, err))) return st;
-    if ((st = gb_bem_solve(&r->sc.mesh, &r->sys, &r->sc.problem, &guard, &r->sol, err))) return st;
     int n = r->sc.npts, m = r->sc.mesh.n;
     r->u = calloc(2 * (size_t)(n ? n : 1), sizeof(double));
     r->s = calloc(3 * (size_t)(n ? n : 1), sizeof(double));
     r->bs = calloc(3 * (size_t)m, sizeof(double));
     if (!r->u || !r->s || !r->bs) return gb_fail(err, GB_ENOMEM, "out of memory");
-    if ((st = gb_bem_boundary_stress(&r->sc.mesh, &r->sc.material, &r->sol, r->bs, err))) return st;
-    for (int i = 0; i < n && !st; i++) /* point by point: the grid may hold points outside the body */
-        if (r->sc.pt_inside[i])
-            st = gb_bem_interior(&r->sc.mesh, &r->sc.material, &r->sc.problem, &r->sol, 1, r->sc.pts + 2 * i,
-                                 r->u + 2 * i, r->s + 3 * i, err);
-    if (st) return st;
-    if (r->sc.stiffness_group[0]) {
-        int g = gb_bem_mesh_group(&r->sc.mesh, r->sc.stiffness_group);
-        if ((st = gb_bem_condense(&r->sc.mesh, &r->sys, &r->sc.problem, g, &guard, &r->k, err))) return st;
-        r->has_k = 1;
-    }
-    return GB_OK;
+    return r->sc.increments ? compute_updated(r, &guard, err) : compute_linear(r, &guard, err);
 }
 
 /* What `gembem bem` prints: the solve's numbers in a few lines. */
@@ -65,6 +99,11 @@ static void summary_text(const bem_run *r, char *text, size_t cap)
                         gb_version(), sc->path, sc->mesh_path, sc->mesh.n, sc->mesh.n_loops,
                         sc->mesh.unbounded ? "unbounded" : "bounded", sc->length_unit, sc->force_unit, r->sol.rcond,
                         r->sol.rcond_first, r->sol.scale);
+    if (sc->increments && used > 0 && (size_t)used < cap)
+        used += snprintf(text + used, cap - (size_t)used,
+                         "updated Lagrangian: %d increments, each on the mesh the previous ones moved; the files "
+                         "describe the deformed body\n",
+                         sc->increments);
     if (r->has_k && used > 0 && (size_t)used < cap)
         snprintf(text + used, cap - (size_t)used,
                  "stiffness on '%s': %d x %d, ||K - K^t||_F / ||K||_F = %.6e, rcond %.6e, length scale %.6g\n",
@@ -89,6 +128,9 @@ static gb_status write_info(const char *path, const char *command, const bem_run
             mat->plane == GB_BEM_PLANE_STRESS ? "stress" : "strain");
     fprintf(f, "  mesh: {file: \"%s\", elements: %d, loops: %d, unbounded: %s}\n", sc->mesh_path, sc->mesh.n,
             sc->mesh.n_loops, sc->mesh.unbounded ? "true" : "false");
+    if (sc->increments)
+        fprintf(f, "  updated_lagrangian: {increments: %d}   # the body followed its deformed boundary\n",
+                sc->increments);
     gb_run_record_machine(f);
     fprintf(f, "solve:   # what the boundary element solve measured\n"
                "  system_rcond: %.6e   # the system's reciprocal condition number, at the length scale used\n"

@@ -326,6 +326,24 @@ gb_status gb_bem_host_read(const gb_yaml_doc *doc, gb_ymap *root, gb_bem_scene *
     return st;
 }
 
+/* updated_lagrangian: {increments: n}; not with a condensed stiffness, whose f0 on the moved mesh
+ * would be that of the whole load again. */
+static gb_status read_updated(const gb_yaml_doc *doc, gb_ymap *root, gb_bem_scene *s, gb_error *err)
+{
+    gb_ymap ul;
+    long n = 0;
+    gb_status st = gb_ymap_map(root, "updated_lagrangian", 0, &ul, err);
+    if (st || !ul.node) return st;
+    if ((st = gb_ymap_int(&ul, "increments", GB_Y_REQUIRED, 1, GB_BEM_MAX_INCREMENTS, &n, err))) return st;
+    s->increments = (int)n;
+    if ((st = gb_ymap_close(&ul, err))) return st;
+    if (s->stiffness_group[0])
+        return gb_yaml_fail(doc, ul.node, err,
+                            "updated_lagrangian: the condensed stiffness (stiffness.group) is computed on the "
+                            "undeformed body only; remove one of the two");
+    return GB_OK;
+}
+
 gb_status gb_bem_scene_load(const char *path, gb_bem_scene *s, gb_error *err)
 {
     memset(s, 0, sizeof *s);
@@ -349,6 +367,7 @@ gb_status gb_bem_scene_load(const char *path, gb_bem_scene *s, gb_error *err)
         if (!st && s->stiffness_write && !g) st = gb_yaml_fail(&doc, stiff.node, err, "stiffness: write needs a group");
         if (!st) st = gb_ymap_close(&stiff, err);
     }
+    if (!st) st = read_updated(&doc, &root, s, err);
     gb_ymap out;
     s->write_boundary_csv = s->write_boundary_vtp = s->write_interior_vtu = s->write_interior_csv = 1;
     if (!st) st = gb_ymap_map(&root, "output", 0, &out, err);

@@ -81,8 +81,12 @@ def main():
         made = list(demo.draw(settled, compressed, os.path.join(out, "figures")))
         print(f"pipeline {seconds:.1f} s; {', '.join(os.path.basename(p) for p, _ in made)}")
         accuracy = compressed.scene["solver"]["accuracy"]
-        for run in (settled, compressed):
-            check(not warnings(run), f"{os.path.basename(run.path)}: no warning: {warnings(run)}")
+        check(not warnings(settled), f"settled: no warning: {warnings(settled)}")
+        # the compression (the top down by 3 % of the body) strains the cavity past the linear host's
+        # range: that warning, and no other
+        w = warnings(compressed)
+        check(len(w) == 1 and w[0].startswith("the host's cavity is strained by "),
+              f"compressed: the host's strain is the only warning: {w}")
 
         p = settled.host_particles
         u = np.hypot(p["ux"], p["uy"]).max()
