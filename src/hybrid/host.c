@@ -7,19 +7,28 @@
 
 #include "core/blas.h"
 
+void gb_host_free_condensed(gb_host *h)
+{
+    gb_bem_stiffness_free(&h->K);
+    free(h->loads), free(h->load0), free(h->f0_base), free(h->f0_unit), free(h->resultant_unit);
+    h->loads = NULL, h->load0 = h->f0_base = h->f0_unit = h->resultant_unit = NULL;
+}
+
+void gb_host_symmetrise(gb_host *h)
+{
+    size_t m = (size_t)h->m;
+    for (size_t c = 0; c < m; c++)
+        for (size_t r = 0; r < m; r++) h->Ksym[r + c * m] = 0.5 * (h->K.K[r + c * m] + h->K.K[c + r * m]);
+}
+
 void gb_host_free(gb_host *h)
 {
     if (!h) return;
-    gb_bem_stiffness_free(&h->K);
+    gb_host_free_condensed(h);
     gb_bem_system_free(&h->sys);
     gb_bem_mesh_free(&h->mesh);
     free(h->Ksym);
     free(h->force);
-    free(h->loads);
-    free(h->load0);
-    free(h->f0_base);
-    free(h->f0_unit);
-    free(h->resultant_unit);
     free(h);
 }
 
@@ -76,8 +85,7 @@ gb_status gb_host_create(const gb_host_def *def, gb_host **out, gb_error *err)
         gb_host_free(h);
         return gb_fail(err, GB_ENOMEM, "out of memory for the host stiffness");
     }
-    for (int c = 0; c < m; c++)
-        for (int r = 0; r < m; r++) h->Ksym[r + (size_t)c * m] = 0.5 * (h->K.K[r + (size_t)c * m] + h->K.K[c + (size_t)r * m]);
+    gb_host_symmetrise(h);
     memcpy(h->force, h->K.f0, (size_t)m * sizeof(double)); /* u = 0 */
     *out = h;
     return GB_OK;

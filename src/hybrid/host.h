@@ -57,6 +57,10 @@ void gb_host_vars_free(gb_host_vars *v);
 void gb_host_update_force(gb_host *h, const gb_host_vars *v);
 /* Condenses the host on its cavity (h->K) and the unit responses of f0 (src/hybrid/host_load.c). */
 gb_status gb_host_condense(gb_host *h, gb_error *err);
+/* What gb_host_condense allocates, freed (before it runs again, or with the host). */
+void gb_host_free_condensed(gb_host *h);
+/* Ksym = (K + K^t) / 2, for the symmetric solve. */
+void gb_host_symmetrise(gb_host *h);
 /* f0 from the loads' values now (v->bc, v->remote), then the force. */
 void gb_host_update_f0(gb_host *h, gb_host_vars *v);
 /* Number of values of a group's condition that loading may change: 2 (displacement, traction,

@@ -12,14 +12,6 @@ static void resultants(const gb_host *h, const gb_host_vars *v, double *r)
     for (int g = 0; g < h->mesh.n_groups; g++) gb_host_group_resultant(h, v, g, r + 4 * g, r + 4 * g + 2);
 }
 
-/* What gb_host_condense allocates, freed before it runs again. */
-static void free_condensed(gb_host *h)
-{
-    gb_bem_stiffness_free(&h->K);
-    free(h->loads), free(h->load0), free(h->f0_base), free(h->f0_unit), free(h->resultant_unit);
-    h->loads = NULL, h->load0 = h->f0_base = h->f0_unit = h->resultant_unit = NULL;
-}
-
 gb_status gb_host_rebase(gb_host *h, gb_host_vars *v, gb_error *err)
 {
     int m = h->m, no = 4 * h->mesh.n_groups;
@@ -44,14 +36,12 @@ gb_status gb_host_rebase(gb_host *h, gb_host_vars *v, gb_error *err)
     if (!st) {
         /* the values now are the new values at creation: later loads act through the moved body */
         h->prob = gb_host_problem(h, v);
-        free_condensed(h);
+        gb_host_free_condensed(h);
         st = gb_host_condense(h, err);
     }
     if (!st && h->K.m != m) st = gb_fail(err, GB_EINTERNAL, "the host's cavity changed its size in a rebase");
     if (!st) {
-        for (int c = 0; c < m; c++)
-            for (int r = 0; r < m; r++)
-                h->Ksym[r + (size_t)c * m] = 0.5 * (h->K.K[r + (size_t)c * m] + h->K.K[c + (size_t)r * m]);
+        gb_host_symmetrise(h);
         /* K 0 + f0 = the force before: the grains' equilibrium carried over exactly */
         memcpy(h->f0_base, force, sizeof(double) * (size_t)m);
         memcpy(h->K.f0, force, sizeof(double) * (size_t)m);
