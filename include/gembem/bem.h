@@ -115,6 +115,12 @@ void gb_bem_mesh_free(gb_bem_mesh *mesh);
  * that shrinks to nothing or turns by more than a right angle, a loop that turns inside out, a
  * boundary that crosses or touches itself. */
 gb_status gb_bem_mesh_move(gb_bem_mesh *mesh, const double *u, gb_error *err);
+/* The element end points p0, p1 (2n each, in the mesh's element order) in place of the mesh's, as
+ * gb_bem_mesh_move leaves them (a moved mesh read back); refused as gb_bem_mesh_move refuses, and
+ * where an element does not end where the next in its loop starts. */
+gb_status gb_bem_mesh_place(gb_bem_mesh *mesh, const double *p0, const double *p1, gb_error *err);
+/* A copy of src in dst (its own arrays: gb_bem_mesh_free). */
+gb_status gb_bem_mesh_copy(const gb_bem_mesh *src, gb_bem_mesh *dst, gb_error *err);
 
 /* ---------------------------------------------------------------- H and G */
 

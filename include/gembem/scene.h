@@ -102,6 +102,8 @@ typedef struct {
     gb_bem_bc bc[GB_HOST_MAX_BCS]; /* the other groups: any condition of the BEM module */
     double remote_stress[3];      /* sxx, syy, sxy at infinity (unbounded meshes, mesh_opts.unbounded) */
     int rigid;                    /* the cavity does not deform: boundary particles held (a reference) */
+    int follow_every;             /* updated_lagrangian.every: the host follows its deformed boundary
+                                     after every this many load steps (0: the body at rest, linear) */
     /* The mesh as the scene's check read it (run_info.yaml): elements per group, the cavity's
      * shortest and longest element. counts_given: host.elements gave counts (else the .geo's own
      * sizes, or a .msh as gmsh wrote it). */

@@ -410,7 +410,9 @@ static void node_displacement(const gb_bem_mesh *m, const double *u, int ep, int
     for (int c = 0; c < 2; c++) v[c] = w * u[2 * ep + c] + (1 - w) * u[2 * e + c];
 }
 
-gb_status gb_bem_mesh_move(gb_bem_mesh *m, const double *u, gb_error *err)
+/* The end points p0, p1 (2n each) in place of the mesh's, its geometry following; refused as
+ * gb_bem_mesh_move and gb_bem_mesh_place say, the mesh then left as it was. */
+static gb_status place(gb_bem_mesh *m, const double *p0, const double *p1, gb_error *err)
 {
     size_t n2 = 2 * (size_t)m->n;
     double *old = malloc(sizeof(double) * 2 * n2), *area = malloc(sizeof(double) * (size_t)m->n_loops);
@@ -420,21 +422,12 @@ gb_status gb_bem_mesh_move(gb_bem_mesh *m, const double *u, gb_error *err)
     }
     memcpy(old, m->p0, sizeof(double) * n2);
     memcpy(old + n2, m->p1, sizeof(double) * n2);
-    for (int k = 0; k < m->n_loops; k++) {
-        area[k] = loop_area(m, k);
-        int s0 = m->loop_start[k], c = m->loop_start[k + 1] - s0;
-        for (int j = 0; j < c; j++) {
-            int e = s0 + j, ep = s0 + (j + c - 1) % c;
-            double v[2];
-            node_displacement(m, u, ep, e, v);
-            for (int q = 0; q < 2; q++) {
-                m->p0[2 * e + q] = old[2 * e + q] + v[q];
-                m->p1[2 * ep + q] = old[n2 + 2 * ep + q] + v[q];
-            }
-        }
-    }
+    for (int k = 0; k < m->n_loops; k++) area[k] = loop_area(m, k);
+    memcpy(m->p0, p0, sizeof(double) * n2);
+    memcpy(m->p1, p1, sizeof(double) * n2);
     double diag = 0;
     gb_status st = extent(m->p0, m->n, &diag, err);
+    if (!st) st = extent(m->p1, m->n, &diag, err);
     for (int e = 0; e < m->n; e++) fill_geometry(m, e);
     for (int e = 0; e < m->n && !st; e++) {
         /* a turn past a right angle in one move is no small rotation (a point reflection through a
@@ -449,6 +442,12 @@ gb_status gb_bem_mesh_move(gb_bem_mesh *m, const double *u, gb_error *err)
                          "too large a displacement for one move",
                          e, m->group_name[m->group[e]]);
     }
+    for (int e = 0; e < m->n && !st; e++) { /* a loop stays closed: each element ends where the next starts */
+        int k = m->loop[e], next = e + 1 < m->loop_start[k + 1] ? e + 1 : m->loop_start[k];
+        if (m->p1[2 * e] != m->p0[2 * next] || m->p1[2 * e + 1] != m->p0[2 * next + 1])
+            st = gb_fail(err, GB_EINPUT, "element %d (group '%s') does not end where the next starts", e,
+                         m->group_name[m->group[e]]);
+    }
     for (int k = 0; k < m->n_loops && !st; k++)
         if (!(loop_area(m, k) * area[k] > 0))
             st = gb_fail(err, GB_EINPUT, "moved by its displacement, loop %d (group '%s') turns inside out", k,
@@ -462,4 +461,53 @@ gb_status gb_bem_mesh_move(gb_bem_mesh *m, const double *u, gb_error *err)
     free(old);
     free(area);
     return st;
+}
+
+gb_status gb_bem_mesh_move(gb_bem_mesh *m, const double *u, gb_error *err)
+{
+    size_t n2 = 2 * (size_t)m->n;
+    double *p = malloc(sizeof(double) * 2 * n2);
+    if (!p) return gb_fail(err, GB_ENOMEM, "out of memory");
+    memcpy(p, m->p0, sizeof(double) * n2);
+    memcpy(p + n2, m->p1, sizeof(double) * n2);
+    for (int k = 0; k < m->n_loops; k++) {
+        int s0 = m->loop_start[k], c = m->loop_start[k + 1] - s0;
+        for (int j = 0; j < c; j++) {
+            int e = s0 + j, ep = s0 + (j + c - 1) % c;
+            double v[2];
+            node_displacement(m, u, ep, e, v);
+            for (int q = 0; q < 2; q++) {
+                p[2 * e + q] = m->p0[2 * e + q] + v[q];
+                p[n2 + 2 * ep + q] = m->p1[2 * ep + q] + v[q];
+            }
+        }
+    }
+    gb_status st = place(m, p, p + n2, err);
+    free(p);
+    return st;
+}
+
+gb_status gb_bem_mesh_place(gb_bem_mesh *m, const double *p0, const double *p1, gb_error *err)
+{
+    return place(m, p0, p1, err);
+}
+
+gb_status gb_bem_mesh_copy(const gb_bem_mesh *src, gb_bem_mesh *dst, gb_error *err)
+{
+    memset(dst, 0, sizeof *dst);
+    gb_status st = alloc_mesh(dst, src->n, src->n_loops, src->n_groups, NULL, err);
+    if (st) {
+        gb_bem_mesh_free(dst);
+        return st;
+    }
+    size_t n = (size_t)src->n;
+    memcpy(dst->p0, src->p0, 2 * n * sizeof(double)), memcpy(dst->p1, src->p1, 2 * n * sizeof(double));
+    memcpy(dst->mid, src->mid, 2 * n * sizeof(double)), memcpy(dst->tangent, src->tangent, 2 * n * sizeof(double));
+    memcpy(dst->normal, src->normal, 2 * n * sizeof(double)), memcpy(dst->length, src->length, n * sizeof(double));
+    memcpy(dst->group, src->group, n * sizeof(int)), memcpy(dst->loop, src->loop, n * sizeof(int));
+    memcpy(dst->loop_start, src->loop_start, (size_t)(src->n_loops + 1) * sizeof(int));
+    memcpy(dst->loop_outer, src->loop_outer, (size_t)src->n_loops * sizeof(int));
+    memcpy(dst->group_name, src->group_name, (size_t)src->n_groups * sizeof *src->group_name);
+    dst->unbounded = src->unbounded;
+    return GB_OK;
 }

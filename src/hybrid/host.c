@@ -27,6 +27,9 @@ void gb_host_free(gb_host *h)
     gb_host_free_condensed(h);
     gb_bem_system_free(&h->sys);
     gb_bem_mesh_free(&h->mesh);
+    gb_bem_system_free(&h->rest_sys);
+    gb_bem_mesh_free(&h->rest);
+    free(h->u_acc), free(h->t_acc);
     free(h->Ksym);
     free(h->force);
     free(h);
@@ -133,17 +136,23 @@ gb_bem_problem gb_host_problem(const gb_host *h, const gb_host_vars *v)
 gb_status gb_host_solve(const gb_host *h, const gb_host_vars *v, gb_bem_solution *sol, gb_error *err)
 {
     memset(sol, 0, sizeof *sol);
-    gb_bem_problem p = gb_host_problem(h, v);
-    return gb_bem_solve_group_displacement(&h->mesh, &h->sys, &p, h->cavity, v->u, NULL, sol, err);
+    gb_bem_problem p = gb_host_problem_change(h, v);
+    gb_status st = gb_bem_solve_group_displacement(&h->mesh, &h->sys, &p, h->cavity, v->u, NULL, sol, err);
+    for (int k = 0; !st && h->rebases && k < 2 * h->mesh.n; k++) sol->u[k] += h->u_acc[k], sol->t[k] += h->t_acc[k];
+    return st;
 }
+
+const gb_bem_mesh *gb_host_rest_mesh(const gb_host *h) { return h->rebases ? &h->rest : &h->mesh; }
+const gb_bem_system *gb_host_rest_system(const gb_host *h) { return h->rebases ? &h->rest_sys : &h->sys; }
 
 void gb_host_group_sum(const gb_host *h, const gb_bem_solution *sol, int g, double force[2], double disp[2])
 {
     double len = 0;
+    const gb_bem_mesh *mesh = gb_host_rest_mesh(h);
     force[0] = force[1] = disp[0] = disp[1] = 0;
-    for (int e = 0; e < h->mesh.n; e++)
-        if (h->mesh.group[e] == g) {
-            double L = h->mesh.length[e];
+    for (int e = 0; e < mesh->n; e++)
+        if (mesh->group[e] == g) {
+            double L = mesh->length[e];
             force[0] += sol->t[2 * e] * L, force[1] += sol->t[2 * e + 1] * L;
             disp[0] += sol->u[2 * e] * L, disp[1] += sol->u[2 * e + 1] * L;
             len += L;

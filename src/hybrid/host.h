@@ -44,6 +44,15 @@ typedef struct {
      * unit displacement of each cavity DOF (m columns), for the loads at creation (1) and for a
      * unit value of each load (n_loads); gb_host_group_resultant sums them, no solve per step. */
     double *resultant_unit;
+    /* Followed boundary (gb_host_rebase): mesh, sys, K and the loads' unit responses are those of
+     * the moved body; rest and rest_sys keep the body at rest, the frame of the host's whole state
+     * (gb_host_solve); u_acc and t_acc (2 per element) each element's displacement and traction
+     * summed over the rebases. Unset (rebases = 0) for a host at rest. */
+    int rebases;
+    int rebase_step;        /* the load step after which the last rebase came */
+    gb_bem_mesh rest;
+    gb_bem_system rest_sys;
+    double *u_acc, *t_acc;
 } gb_host;
 
 /* Meshes, assembles and condenses the host, with the unit responses of f0 to every loadable value
@@ -72,10 +81,18 @@ gb_status gb_host_add_load(gb_host *h, gb_host_vars *v, const char *group, const
 gb_status gb_host_add_remote(gb_host *h, gb_host_vars *v, const double remote_inc[3], gb_error *err);
 /* The conditions with the values of v. */
 gb_bem_problem gb_host_problem(const gb_host *h, const gb_host_vars *v);
-/* The same with each loadable value's change since creation (or since the last gb_host_rebase). */
+/* The same with each loadable value's change since the last gb_host_rebase (before the first: the
+ * values themselves, their change since the body at rest): with the cavity's u, the problem whose
+ * solution is every element's displacement since then. */
 gb_bem_problem gb_host_problem_change(const gb_host *h, const gb_host_vars *v);
-/* The host's whole boundary state for the cavity displacements and loads of v (one solve). */
+/* The host's whole boundary state for the cavity displacements and loads of v (one solve): of a
+ * followed host, the state since the last rebase plus u_acc and t_acc, in the frame of the body at
+ * rest (gb_host_rest_mesh). */
 gb_status gb_host_solve(const gb_host *h, const gb_host_vars *v, gb_bem_solution *sol, gb_error *err);
+/* The body at rest: the mesh that gb_host_solve's state goes with (the host's own mesh until its
+ * first rebase), and its system. */
+const gb_bem_mesh *gb_host_rest_mesh(const gb_host *h);
+const gb_bem_system *gb_host_rest_system(const gb_host *h);
 /* A group's total force (sum of traction x length over its elements: what the outside puts on the
  * body) and its mean displacement (length-weighted), from a solution of gb_host_solve. */
 void gb_host_group_sum(const gb_host *h, const gb_bem_solution *sol, int group, double force[2], double disp[2]);
@@ -89,9 +106,22 @@ gb_status gb_host_group_force(const gb_host *h, const gb_host_vars *v, const cha
  * H, K and the loads' unit responses recomputed on it, the values of the loads now taken as the
  * new values at creation; then u = 0 and f0 = the force K u + f0 of before, so that the grains'
  * equilibrium is carried over exactly, and the groups' resultants go on from their values before.
- * Not yet in runs: gb_host_solve's whole state (the host's files, fields) is then wrong (it
- * applies the loads' whole values to the moved body), and neither a checkpoint nor a state file holds the moved mesh. On an error the host
- * is unusable (free it). */
-gb_status gb_host_rebase(gb_host *h, gb_host_vars *v, gb_error *err);
+ * step: the load step it follows (rebase_step). On an error the host is unusable (free it). */
+gb_status gb_host_rebase(gb_host *h, gb_host_vars *v, int step, gb_error *err);
+/* What a rebase leaves, as a checkpoint holds it: the moved mesh's end points (p0, p1, 2 per
+ * element each), the loads' values at the last rebase (bc and remote, as gb_host_vars), f0 then
+ * (m), the groups' resultants then (4 per group), u_acc and t_acc. */
+typedef struct {
+    int rebases, rebase_step;
+    double *p0, *p1;
+    double bc[GB_BEM_MAX_GROUPS][2], remote[3];
+    double *f0, *resultant, *u_acc, *t_acc;
+} gb_host_followed;
+/* The host's record (arrays pointing into the host: valid until it changes); rebases = 0 for a
+ * host at rest. */
+gb_host_followed gb_host_followed_of(const gb_host *h);
+/* A host as created (never rebased) put where a record says: its mesh moved to the record's, G, H,
+ * K and the unit responses recomputed, the rest as recorded, bit for bit what the rebases left. */
+gb_status gb_host_follow_again(gb_host *h, const gb_host_followed *r, gb_error *err);
 
 #endif

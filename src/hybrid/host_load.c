@@ -30,6 +30,7 @@ static double load_change(const gb_host *h, const gb_host_vars *v, int j)
 gb_bem_problem gb_host_problem_change(const gb_host *h, const gb_host_vars *v)
 {
     gb_bem_problem p = gb_host_problem(h, v);
+    if (!h->rebases) return p; /* the body at rest carries no load: the values since rest are the whole values */
     for (int j = 0; j < h->n_loads; j++) *load_value(&p, &h->loads[j]) = load_change(h, v, j);
     return p;
 }

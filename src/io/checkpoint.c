@@ -17,8 +17,9 @@
 /* 2: the load step in progress (a checkpoint within a step) and its states; 1 (before): between
  * steps only, not read. */
 /* 3: each pair's rolling moment; 4: the line search's smoother-first state; 5: grains in the
- * simulation's order by cell (gb_sim.grain_order) */
-enum { FORMAT = 6 };
+ * simulation's order by cell (gb_sim.grain_order); 7: a host's rebases ("followed"; 6 is 7 with a
+ * host at rest, and is read) */
+enum { FORMAT = 7, FORMAT_READ_FROM = 6 };
 
 static uint64_t fnv(uint64_t h, const void *data, size_t n)
 {
@@ -192,6 +193,27 @@ static void put_step(FILE *f, const gb_sim *sim, const gb_run_progress *p)
     if (c->cuts > 0) put_state(f, "substep", sim, &p->substep, NULL);
 }
 
+/* A host that followed its boundary: what its rebases left (gb_host_followed), from which a resumed
+ * run recomputes G, H and K bit for bit; "followed 0 0" for a host at rest. */
+static void put_followed(FILE *f, const gb_host *h)
+{
+    gb_host_followed r = gb_host_followed_of(h);
+    fprintf(f, "followed %d %d\n", r.rebases, r.rebase_step);
+    if (!r.rebases) return;
+    double v[2 * GB_BEM_MAX_GROUPS + 3];
+    for (int g = 0; g < GB_BEM_MAX_GROUPS; g++) v[2 * g] = r.bc[g][0], v[2 * g + 1] = r.bc[g][1];
+    memcpy(&v[2 * GB_BEM_MAX_GROUPS], r.remote, 3 * sizeof(double));
+    put(f, "followed_values", v, 2 * GB_BEM_MAX_GROUPS + 3);
+    put(f, "followed_f0", r.f0, h->m);
+    put(f, "followed_resultants", r.resultant, 4 * h->mesh.n_groups);
+    fprintf(f, "followed_elements\n");
+    for (int e = 0; e < h->mesh.n; e++) {
+        const double row[8] = {r.p0[2 * e],    r.p0[2 * e + 1],    r.p1[2 * e],    r.p1[2 * e + 1],
+                               r.u_acc[2 * e], r.u_acc[2 * e + 1], r.t_acc[2 * e], r.t_acc[2 * e + 1]};
+        put_row(f, NULL, 0, row, 8, NULL, 0);
+    }
+}
+
 static void write_body(FILE *f, const gb_sim *sim, const gb_run_progress *p, const gb_checkpoint_meta *m)
 {
     fprintf(f, "gembem_checkpoint %d\nversion %s\nscene %s\nscene_hash %016" PRIx64 "\nfiles %d\n", FORMAT,
@@ -205,6 +227,7 @@ static void write_body(FILE *f, const gb_sim *sim, const gb_run_progress *p, con
     const gb_run_position *pos = &p->pos;
     fprintf(f, "position %d %d %d %a %a\n", pos->stage, pos->stage_step, pos->step, pos->start[0], pos->start[1]);
     fprintf(f, "counts %d %d %d\n", sim->state.n, sim->bp.n, sim->host ? sim->host->m : 0);
+    if (sim->host) put_followed(f, sim->host);
     double ref[2] = {sim->ref_width, sim->ref_height}, acc[3] = {p->work.walls, p->work.body, p->work.energy0};
     put(f, "reference", ref, 2);
     put(f, "accounts", acc, 3);
@@ -284,6 +307,7 @@ typedef struct {
     gb_error *err;
     gb_status st;
     char w[2 * GB_CHECKPOINT_TAIL + 8]; /* the last word read */
+    int format;
 } cursor;
 
 static void fail(cursor *c, const char *what)
@@ -397,10 +421,11 @@ static void read_meta(cursor *c, gb_checkpoint_meta *m)
 {
     expect(c, "gembem_checkpoint");
     long long format = integer(c, 0, 1000);
-    if (!c->st && format != FORMAT) {
+    c->format = (int)format;
+    if (!c->st && (format < FORMAT_READ_FROM || format > FORMAT)) {
         char what[160];
-        snprintf(what, sizeof what, "a checkpoint of format %lld, this gembem reads format %d; resume it with the "
-                 "gembem that wrote it", format, FORMAT);
+        snprintf(what, sizeof what, "a checkpoint of format %lld, this gembem reads formats %d to %d; resume it "
+                 "with the gembem that wrote it", format, FORMAT_READ_FROM, FORMAT);
         fail(c, what);
     }
     expect(c, "version");
@@ -442,7 +467,7 @@ gb_status gb_checkpoint_read_meta(const char *dir, gb_checkpoint_meta *m, gb_err
     char path[1200], *text;
     gb_status st = load(dir, path, sizeof path, &text, err);
     if (st) return st;
-    cursor c = {text, 1, path, err, GB_OK, ""};
+    cursor c = {text, 1, path, err, GB_OK, "", 0};
     read_meta(&c, m);
     free(text);
     return c.st;
@@ -460,6 +485,7 @@ typedef struct {
     gb_solver_work work;
     double *dX;
     long gen[3];               /* the lists' generations as written: now, start, sub */
+    gb_host_followed followed; /* its arrays allocated here */
 } extras;
 
 static void *alloc(cursor *c, size_t n, size_t size)
@@ -568,6 +594,39 @@ static void get_step(cursor *c, const gb_sim *sim, extras *x)
     if (s->cuts > 0) get_state(c, sim, "substep", &x->p.substep, &x->gen[2], NULL);
 }
 
+/* put_followed's block, checked against the host the scene makes. */
+static void get_followed(cursor *c, const gb_sim *sim, gb_host_followed *r)
+{
+    const gb_host *h = sim->host;
+    int n = h->mesh.n, no = 4 * h->mesh.n_groups;
+    expect(c, "followed");
+    r->rebases = (int)integer(c, 0, 2147483647LL);
+    r->rebase_step = (int)integer(c, 0, gb_scene_total_steps(sim->scene));
+    if (!c->st && r->rebases && !sim->scene->host.follow_every) fail(c, "a followed host, where the scene's is at rest");
+    if (c->st || !r->rebases) return;
+    double v[2 * GB_BEM_MAX_GROUPS + 3];
+    nums(c, "followed_values", v, 2 * GB_BEM_MAX_GROUPS + 3);
+    for (int g = 0; g < GB_BEM_MAX_GROUPS; g++) r->bc[g][0] = v[2 * g], r->bc[g][1] = v[2 * g + 1];
+    memcpy(r->remote, &v[2 * GB_BEM_MAX_GROUPS], sizeof r->remote);
+    r->f0 = alloc(c, (size_t)h->m, sizeof(double));
+    r->resultant = alloc(c, (size_t)no, sizeof(double));
+    r->p0 = alloc(c, 2 * (size_t)n, sizeof(double)), r->p1 = alloc(c, 2 * (size_t)n, sizeof(double));
+    r->u_acc = alloc(c, 2 * (size_t)n, sizeof(double)), r->t_acc = alloc(c, 2 * (size_t)n, sizeof(double));
+    if (c->st) return;
+    nums(c, "followed_f0", r->f0, h->m);
+    nums(c, "followed_resultants", r->resultant, no);
+    expect(c, "followed_elements");
+    for (int e = 0; e < n && !c->st; e++) {
+        r->p0[2 * e] = num(c), r->p0[2 * e + 1] = num(c), r->p1[2 * e] = num(c), r->p1[2 * e + 1] = num(c);
+        r->u_acc[2 * e] = num(c), r->u_acc[2 * e + 1] = num(c), r->t_acc[2 * e] = num(c), r->t_acc[2 * e + 1] = num(c);
+    }
+}
+
+static void followed_free(gb_host_followed *r)
+{
+    free(r->f0), free(r->resultant), free(r->p0), free(r->p1), free(r->u_acc), free(r->t_acc);
+}
+
 static void read_body(cursor *c, const gb_sim *sim, extras *x)
 {
     const gb_scene *sc = sim->scene;
@@ -583,6 +642,7 @@ static void read_body(cursor *c, const gb_sim *sim, extras *x)
     long long n_grains = integer(c, 0, 1 << 30), n_particles = integer(c, 0, 1 << 30), n_host = integer(c, 0, 1 << 30);
     if (n_grains != sim->state.n || n_particles != sim->bp.n || n_host != (sim->host ? sim->host->m : 0))
         fail(c, "the checkpoint's grains or host differ from the scene's");
+    if (sim->host && c->format >= 7) get_followed(c, sim, &x->followed);
     double acc[3];
     nums(c, "reference", x->ref, 2);
     nums(c, "accounts", acc, 3);
@@ -623,7 +683,7 @@ gb_status gb_checkpoint_read(const char *dir, gb_sim *sim, gb_run_progress *p, u
     char path[1200], *text;
     gb_status st = load(dir, path, sizeof path, &text, err);
     if (st) return st;
-    cursor c = {text, 1, path, err, GB_OK, ""};
+    cursor c = {text, 1, path, err, GB_OK, "", 0};
     read_meta(&c, m);
     if (!c.st && m->scene_hash != scene_hash)
         c.st = gb_fail(err, GB_EINPUT, "%s: the scene %s (or a file it reads: grains, initial state, host mesh) "
@@ -641,6 +701,8 @@ gb_status gb_checkpoint_read(const char *dir, gb_sim *sim, gb_run_progress *p, u
         if (!grown) c.st = gb_fail(err, GB_ENOMEM, "out of memory for %d pairs", need);
         else sim->state.pairs.p = grown, sim->state.pairs.cap = need;
     }
+    /* the host where its rebases left it, before any state of it is restored */
+    if (!c.st && sim->host) c.st = gb_host_follow_again(sim->host, &x.followed, err);
     if (!c.st) {
         new_generations(sim, &x);
         gb_sim_state_restore(sim, &x.now);
@@ -665,6 +727,7 @@ gb_status gb_checkpoint_read(const char *dir, gb_sim *sim, gb_run_progress *p, u
     }
     gb_state_free(&x.now), gb_state_free(&x.p.saved), gb_state_free(&x.p.substep);
     free(x.unloading), free(x.dX);
+    followed_free(&x.followed);
     free(text);
     return c.st;
 }

@@ -11,20 +11,22 @@
 #include "io/host_output.h"
 #include "io/file_util.h"
 
-/* Cavity elements: the particle's centre at rest, its displacement, the force the host asks for
- * (K u + f0) and the force the grains put on it. */
+/* Cavity elements: the particle's centre at rest, its displacement (since rest: summed over a
+ * followed host's rebases), the force the host asks for (K u + f0) and the force the grains put on it. */
 static void write_particles(FILE *f, const void *data)
 {
     const gb_sim *sim = data;
     const gb_host *h = sim->host;
+    const gb_bem_mesh *rest = gb_host_rest_mesh(h);
     fprintf(f, "element,x,y,r,nx,ny,ux,uy,host_fx,host_fy,grain_fx,grain_fy\n");
     for (int k = 0; k < sim->bp.n; k++) {
         int e = h->K.elem[k];
         /* bp_F = (K u + f0) - (force of the grains on the particle) */
         double gx = h->force[2 * k] - sim->scratch.bp_F[2 * k], gy = h->force[2 * k + 1] - sim->scratch.bp_F[2 * k + 1];
-        fprintf(f, "%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", e, h->mesh.mid[2 * e],
-                h->mesh.mid[2 * e + 1], sim->bp.r[k], sim->bp.nx[k], sim->bp.ny[k], sim->state.host.u[2 * k],
-                sim->state.host.u[2 * k + 1],
+        double ux = sim->state.host.u[2 * k], uy = sim->state.host.u[2 * k + 1];
+        if (h->rebases) ux += h->u_acc[2 * e], uy += h->u_acc[2 * e + 1];
+        fprintf(f, "%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", e, rest->mid[2 * e],
+                rest->mid[2 * e + 1], sim->bp.r[k], sim->bp.nx[k], sim->bp.ny[k], ux, uy,
                 h->force[2 * k], h->force[2 * k + 1], gx, gy);
     }
 }
@@ -42,6 +44,8 @@ static void write_info(FILE *f, const void *data)
 gb_status gb_host_write_outputs(const char *dir, const gb_sim *sim, gb_error *err)
 {
     const gb_host *h = sim->host;
+    /* the whole state in the frame of the body at rest (gb_host_solve), as a host that never moved */
+    const gb_bem_mesh *mesh = gb_host_rest_mesh(h);
     char path[1024];
     gb_status st;
     snprintf(path, sizeof path, "%s/host_info.yaml", dir);
@@ -54,10 +58,10 @@ gb_status gb_host_write_outputs(const char *dir, const gb_sim *sim, gb_error *er
     /* An interior grid over the body's bounding box: points closer to the boundary than a fifth of
      * the mean element length are left out (constant elements are inaccurate there). */
     double xmin = HUGE_VAL, xmax = -HUGE_VAL, ymin = HUGE_VAL, ymax = -HUGE_VAL, lmean = 0;
-    for (int e = 0; e < h->mesh.n; e++) {
-        xmin = fmin(xmin, h->mesh.mid[2 * e]), xmax = fmax(xmax, h->mesh.mid[2 * e]);
-        ymin = fmin(ymin, h->mesh.mid[2 * e + 1]), ymax = fmax(ymax, h->mesh.mid[2 * e + 1]);
-        lmean += h->mesh.length[e] / h->mesh.n;
+    for (int e = 0; e < mesh->n; e++) {
+        xmin = fmin(xmin, mesh->mid[2 * e]), xmax = fmax(xmax, mesh->mid[2 * e]);
+        ymin = fmin(ymin, mesh->mid[2 * e + 1]), ymax = fmax(ymax, mesh->mid[2 * e + 1]);
+        lmean += mesh->length[e] / mesh->n;
     }
     enum { NG = 61 };
     gb_bem_scene grid;
@@ -68,7 +72,7 @@ gb_status gb_host_write_outputs(const char *dir, const gb_sim *sim, gb_error *er
     grid.pt_inside = calloc(NG * NG, sizeof(int));
     double *inside_xy = malloc(2 * NG * NG * sizeof(double)), *u = calloc(2 * NG * NG, sizeof(double)),
            *s = calloc(3 * NG * NG, sizeof(double)), *uin = malloc(2 * NG * NG * sizeof(double)),
-           *sin_ = malloc(3 * NG * NG * sizeof(double)), *bs = malloc(3 * (size_t)h->mesh.n * sizeof(double));
+           *sin_ = malloc(3 * NG * NG * sizeof(double)), *bs = malloc(3 * (size_t)mesh->n * sizeof(double));
     if (!grid.pts || !grid.pt_inside || !inside_xy || !u || !s || !uin || !sin_ || !bs) {
         st = gb_fail(err, GB_ENOMEM, "out of memory for the host's field");
         goto done;
@@ -79,10 +83,10 @@ gb_status gb_host_write_outputs(const char *dir, const gb_sim *sim, gb_error *er
             int q = j * NG + i;
             double x = xmin + (xmax - xmin) * i / (NG - 1), y = ymin + (ymax - ymin) * j / (NG - 1);
             grid.pts[2 * q] = x, grid.pts[2 * q + 1] = y;
-            grid.pt_inside[q] = gb_bem_mesh_inside(&h->mesh, x, y) && gb_bem_mesh_distance(&h->mesh, x, y) > 0.2 * lmean;
+            grid.pt_inside[q] = gb_bem_mesh_inside(mesh, x, y) && gb_bem_mesh_distance(mesh, x, y) > 0.2 * lmean;
             if (grid.pt_inside[q]) inside_xy[2 * nin] = x, inside_xy[2 * nin + 1] = y, nin++;
         }
-    if ((st = gb_bem_interior(&h->mesh, &h->sys.material, &now, &sol, nin, inside_xy, uin, sin_, err))) goto done;
+    if ((st = gb_bem_interior(mesh, &h->sys.material, &now, &sol, nin, inside_xy, uin, sin_, err))) goto done;
     for (int q = 0, k = 0; q < NG * NG; q++)
         if (grid.pt_inside[q]) {
             memcpy(&u[2 * q], &uin[2 * k], 2 * sizeof(double));
@@ -91,11 +95,11 @@ gb_status gb_host_write_outputs(const char *dir, const gb_sim *sim, gb_error *er
         }
     snprintf(path, sizeof path, "%s/host_field.vtu", dir);
     if ((st = gb_bem_write_interior_vtu(path, &grid, u, s, err))) goto done;
-    if ((st = gb_bem_boundary_stress(&h->mesh, &h->sys.material, &sol, bs, err))) goto done;
+    if ((st = gb_bem_boundary_stress(mesh, &h->sys.material, &sol, bs, err))) goto done;
     snprintf(path, sizeof path, "%s/host_boundary.csv", dir);
-    if ((st = gb_bem_write_boundary_csv(path, &h->mesh, &sol, bs, err))) goto done;
+    if ((st = gb_bem_write_boundary_csv(path, mesh, &sol, bs, err))) goto done;
     snprintf(path, sizeof path, "%s/host_boundary.vtp", dir);
-    st = gb_bem_write_boundary_vtp(path, &h->mesh, &sol, err);
+    st = gb_bem_write_boundary_vtp(path, mesh, &sol, err);
 done:
     free(grid.pts), free(grid.pt_inside), free(inside_xy), free(u), free(s), free(uin), free(sin_), free(bs);
     gb_bem_solution_free(&sol);

@@ -88,9 +88,12 @@ static void write_host_csv(FILE *f, const void *data)
     const gb_sim *sim = data;
     const gb_host *h = sim->host;
     fprintf(f, "element,x,y,ux,uy\n");
-    for (int k = 0; k < h->m / 2; k++)
-        fprintf(f, "%d,%.17g,%.17g,%.17g,%.17g\n", h->K.elem[k], sim->bp.x[k], sim->bp.y[k], sim->state.host.u[2 * k],
-                sim->state.host.u[2 * k + 1]);
+    for (int k = 0; k < h->m / 2; k++) {
+        int e = h->K.elem[k]; /* the displacement since rest: summed over a followed host's rebases */
+        double ux = sim->state.host.u[2 * k] + (h->rebases ? h->u_acc[2 * e] : 0);
+        double uy = sim->state.host.u[2 * k + 1] + (h->rebases ? h->u_acc[2 * e + 1] : 0);
+        fprintf(f, "%d,%.17g,%.17g,%.17g,%.17g\n", e, sim->bp.x[k], sim->bp.y[k], ux, uy);
+    }
 }
 
 static void write_host_yaml(FILE *f, const gb_sim *sim)
@@ -109,6 +112,9 @@ static void write_host_yaml(FILE *f, const gb_sim *sim)
     if (h->mesh.unbounded)
         fprintf(f, "  remote_stress: [%.17g, %.17g, %.17g]\n", now.remote_stress[0], now.remote_stress[1],
                 now.remote_stress[2]);
+    if (h->rebases)
+        fprintf(f, "  followed: %d   # rebases of a host that followed its boundary: not a restart's start\n",
+                h->rebases);
 }
 
 gb_status gb_state_write(const char *dir, const gb_sim *sim, gb_error *err)

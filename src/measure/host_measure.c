@@ -38,7 +38,7 @@ static int has_value(const gb_bem_bc *bc)
 static void reference_stress(const gb_host *h, const gb_bem_problem *now, const gb_bem_solution *sol,
                              gb_host_measures *m)
 {
-    const gb_bem_mesh *mesh = &h->mesh;
+    const gb_bem_mesh *mesh = gb_host_rest_mesh(h);
     const double *r = now->remote_stress;
     m->s_ref = 0, m->s_ref_kind = "none";
     if (mesh->unbounded) {
@@ -71,7 +71,7 @@ static void reference_stress(const gb_host *h, const gb_bem_problem *now, const 
 static gb_status ring(const gb_host *h, const gb_bem_problem *now, const gb_bem_solution *sol, gb_host_measures *m,
                       gb_error *err)
 {
-    const gb_bem_mesh *mesh = &h->mesh;
+    const gb_bem_mesh *mesh = gb_host_rest_mesh(h);
     double area = 0, lmean = 0;
     for (int e = 0; e < mesh->n; e++) lmean += mesh->length[e] / mesh->n;
     for (int k = 0; k < m->n_wall; k++) {
@@ -109,7 +109,7 @@ gb_status gb_host_measure(const gb_sim *sim, int wall_only, gb_host_measures *m,
     m->s_ref_kind = "none";
     const gb_host *h = sim->host;
     if (!h) return gb_fail(err, GB_EINPUT, "host measures: the scene has no host");
-    const gb_bem_mesh *mesh = &h->mesh;
+    const gb_bem_mesh *mesh = gb_host_rest_mesh(h);
     int nw = m->n_wall = h->m / 2, n = mesh->n;
     m->elem = malloc((size_t)nw * sizeof *m->elem);
     m->wall_xy = malloc(2 * (size_t)nw * sizeof(double));
@@ -137,7 +137,7 @@ gb_status gb_host_measure(const gb_sim *sim, int wall_only, gb_host_measures *m,
         (st = gb_bem_boundary_stress(mesh, &h->sys.material, &sol, bs, err)))
         goto done;
     if (wall_only) memset(bs0, 0, 3 * (size_t)n * sizeof *bs0);
-    else if ((st = gb_bem_solve(mesh, &h->sys, &empty, NULL, &sol0, err)) ||
+    else if ((st = gb_bem_solve(mesh, gb_host_rest_system(h), &empty, NULL, &sol0, err)) ||
              (st = gb_bem_boundary_stress(mesh, &h->sys.material, &sol0, bs0, err)))
         goto done;
     double hmax = 0;

@@ -297,6 +297,27 @@ static const gb_stage *start_step(gb_run *run)
     return sg;
 }
 
+/* A host that follows its deformed boundary (host.updated_lagrangian) is rebased after every k-th
+ * load step, at the start of the next: the state saved then is of the rebased host, so a failed
+ * step and its cut-backs go back to the host they started with, and a run resumed between steps
+ * rebases where the run it continues would have. */
+static gb_status follow_boundary(gb_run *run, gb_error *err)
+{
+    gb_sim *sim = run->sim;
+    gb_host *h = sim->host;
+    int every = sim->scene->host.follow_every, step = run->p.pos.step;
+    if (!h || !every || step - h->rebase_step < every) return GB_OK;
+    gb_status st = gb_host_rebase(h, &sim->state.host, step, err);
+    if (st == GB_EINPUT) { /* the mesh would fold: too much travel between two rebases */
+        char why[GB_ERROR_MSG_MAX];
+        snprintf(why, sizeof why, "%s", err->msg);
+        return gb_fail(err, GB_ENUMERIC, "the host cannot follow its boundary after step %d (%s): rebase it more "
+                       "often (host.updated_lagrangian.every: now %d) or load it in smaller steps", step, why, every);
+    }
+    if (!st) save_state(run, err, &st);
+    return st;
+}
+
 /* The control and solve phases of the step in progress (run->p.cur), from its start (the saved
  * state): its accuracy, then its loads and relaxations, cut back where they fail. */
 static gb_status solve_step(gb_run *run, const gb_stage *sg, gb_solve_result *res, gb_error *err)
@@ -337,10 +358,12 @@ static gb_status next_step(gb_run *run, gb_step_fn on_step, void *user, gb_step_
 {
     enter(run, &run->profile.control);
     double t0 = gb_clock_seconds();
+    int within = start_of(run) == START_WITHIN;
     const gb_stage *sg = start_step(run);
     gb_run_watch_step(run, t0);
     gb_solve_result res = {0};
-    gb_status st = solve_step(run, sg, &res, err);
+    gb_status st = within ? GB_OK : follow_boundary(run, err);
+    if (!st) st = solve_step(run, sg, &res, err);
     run->p.cur.active = 0;
     run->p.iterations_total += run->p.cur.iters;
     run->watch.t0 = 0; /* no step is watched until the next starts */

@@ -162,6 +162,22 @@ static gb_status read_unbounded(gb_ymap *m, gb_host_def *h, gb_error *err)
     return GB_OK;
 }
 
+/* updated_lagrangian: {every: k}, the host following its deformed boundary (docs/hybrid.md). */
+static gb_status read_follow(gb_ymap *m, gb_host_def *h, gb_error *err)
+{
+    gb_ymap ul;
+    long every;
+    gb_status st = gb_ymap_map(m, "updated_lagrangian", 0, &ul, err);
+    if (st || !ul.node) return st;
+    if ((st = gb_ymap_int(&ul, "every", GB_Y_REQUIRED, 1, 1000000000, &every, err)) || (st = gb_ymap_close(&ul, err)))
+        return st;
+    if (h->rigid)
+        return gb_yaml_fail(m->doc, ul.node, err, "host.updated_lagrangian: a rigid host's cavity does not move; "
+                            "remove one of rigid and updated_lagrangian");
+    h->follow_every = (int)every;
+    return GB_OK;
+}
+
 gb_status gb_host_section_read(gb_ymap *top, gb_host_def *h, gb_bem_mesh *mesh, gb_error *err)
 {
     gb_ymap m, bcs;
@@ -179,7 +195,8 @@ gb_status gb_host_section_read(gb_ymap *top, gb_host_def *h, gb_bem_mesh *mesh, 
         return st;
 
     if ((st = read_counts(&m, h, err)) || (st = read_material(&m, h, err)) || (st = read_boundary(&m, h, &bcs, err)) ||
-        (st = read_unbounded(&m, h, err)) || (st = gb_ymap_close(&m, err)))
+        (st = read_unbounded(&m, h, err)) || (st = read_follow(&m, h, err)) ||
+        (st = gb_ymap_close(&m, err)))
         return st;
     if ((st = gb_bem_mesh_load(h->mesh, &h->mesh_opts, mesh, err))) {
         if (st != GB_EINPUT) return st;

@@ -80,6 +80,12 @@ static gb_status read_host(gb_ymap *m, gb_scene *s, const gb_bem_mesh *mesh, gb_
     gb_status st;
     int cavity = gb_bem_mesh_group(mesh, def->cavity), count = 0;
     for (int e = 0; e < mesh->n; e++) count += mesh->group[e] == cavity;
+    if ((st = gb_ymap_find(m, "followed", 0, &v, err))) return st;
+    if (v)
+        return gb_yaml_fail(m->doc, v, err, "host.followed: the state's host followed its deformed boundary "
+                            "(host.updated_lagrangian), and its moved mesh is not in a state file: such a state "
+                            "does not start another run (a run stopped within its loading continues with gembem "
+                            "run --resume)");
     if ((st = gb_ymap_int(m, "elements", GB_Y_REQUIRED, 1, 1000000000L, &ne, err))) return st;
     if (ne != mesh->n) {
         gb_ymap_find(m, "elements", 0, &v, err);

@@ -19,7 +19,8 @@
 #    displacements (1e-4 cm; largest 6.4e-4) and of the grains' forces on it (1 kgf; up to 42).
 # 3. A state that does not fit the scene is refused (exit 2, file:line:column, no run directory):
 #    another element count, another kind of condition, a particle off its element, a state
-#    without a host, a scene without a host.
+#    without a host, a scene without a host, a state of a host that followed its boundary
+#    (host.updated_lagrangian: its moved mesh is not in a state file).
 set -u
 gembem=$1; root=$(cd "$(dirname "$0")/../.." && pwd)
 source "$root/tests/csv.sh"
@@ -130,6 +131,12 @@ scene_edit "$d/s2.yaml" -o "$d/r_nohost.yaml" --set initial_state=nohost/state.y
 refuse "a state without a host" "$d/r_nohost.yaml" "nohost/state.yaml:[0-9]+:[0-9]+: the state has no host"
 scene_edit "$d/s2.yaml" -o "$d/r_noscenehost.yaml" --delete host
 refuse "a scene without a host" "$d/r_noscenehost.yaml" "stage1/state.yaml:[0-9]+:[0-9]+: host: the state comes from a run with a host"
+scene_edit "$d/s1.yaml" -o "$d/followed.yaml" --add 'host.updated_lagrangian={every: 1}'
+if "$gembem" run "$d/followed.yaml" -o "$d/followed" --quiet; then
+  line=$(grep -n "^  followed: " "$d/followed/state.yaml" | cut -d: -f1)
+  scene_edit "$d/s2.yaml" -o "$d/r_followed.yaml" --set initial_state=followed/state.yaml
+  refuse "a state of a followed host" "$d/r_followed.yaml" "followed/state.yaml:$line:13: host.followed: the state's host followed its deformed boundary"
+else bad "the followed host's stage 1 failed"; fi
 
 # 4. A restart after the cavity has moved: stage 1's grains, particles and cavity displacements
 #    moved down by 0.7 cm, more than a grain's radius (0.575 cm), so that the lowest grains lie

@@ -21,7 +21,11 @@
 #    pattern was built for: the checkpoint keeps which lists are the same); resumes inside a
 #    cut-back sub-step and inside an attempt that then fails;
 #  - hybrid_history: a host (UMFPACK) with grains in its cavity, host_load stages (the host's load
-#    increment is applied once, before the checkpoint), solver.history on.
+#    increment is applied once, before the checkpoint), solver.history on;
+#  - hybrid_followed: the same host following its boundary (host.updated_lagrangian: every 2 steps):
+#    resumes within a step after a rebase (the checkpoint's moved mesh, from which G, H and K are
+#    recomputed), and kills between steps where the resumed run must rebase where the first would.
+# A checkpoint of format 6 (before hosts followed their boundary) still resumes, to the same result.
 set -u
 source "$(dirname "$0")/resume_lib.sh"
 
@@ -29,6 +33,8 @@ steps4=(--set loading.0.shear_mean_stress.steps=4)   # of 7 in resume_lib.sh's r
 scene_edit "$out/scenes/ref.yaml" -o "$out/scenes/ref_history.yaml" --add solver.history=true "${steps4[@]}"
 scene_edit "$out/scenes/ref.yaml" -o "$out/scenes/cutback.yaml" --set solver.max_iterations=1200 "${steps4[@]}"
 scene_edit "$out/scenes/hybrid.yaml" -o "$out/scenes/hybrid_history.yaml" --add solver.history=true
+scene_edit "$out/scenes/hybrid_history.yaml" -o "$out/scenes/hybrid_followed.yaml" \
+  --add 'host.updated_lagrangian={every: 2}'
 scene_edit "$out/scenes/global.yaml" -o "$out/scenes/global_cutback.yaml" --set solver.max_iterations=60 "${steps4[@]}"
 
 # Before a resume: the checkpoint's step in progress, if any, as "STEP H CUTS PHASE" in $d/within.
@@ -82,6 +88,16 @@ k=$(count "$out/cutback/in_write")
 within_case global_cutback 3 10 50 4
 substep_resumes global_cutback
 within_case hybrid_history 1 12 25 4
+mkdir -p "$out/hybrid_followed"; : > "$out/hybrid_followed/rebased"
+on_resume() {
+  grep -q "^within_step 1" run/checkpoint.txt || return 0
+  grep -q "^followed [1-9]" run/checkpoint.txt && echo >> "$d/rebased"
+  awk '$1 == "step" { s = $4; h = $8 } $1 == "progress" { print s, h, $2, $5 }' run/checkpoint.txt >> "$d/within"
+}
+within_case hybrid_followed 1 12 25 4
+k=$(count "$out/hybrid_followed/rebased")
+[ "$k" -ge 2 ] && ok "hybrid_followed: $k resumes within a step of a rebased host" \
+  || bad "hybrid_followed: $k resumes within a step of a rebased host, expected 2 or more"
 
 # A checkpoint of format 1 (before checkpoints within steps), its checksum made right: refused.
 d=$out/format1; mkdir -p "$d"; cd "$d"
@@ -97,8 +113,27 @@ for b in body: h = ((h ^ b) * 0x100000001b3) % 2**64
 open(sys.argv[1], 'wb').write(body + b'end %016x\n' % h)
 PY
   msg=$("$gembem" run --resume run 2>&1 >/dev/null); code=$?
-  [ $code -eq 2 ] && [[ $msg =~ "a checkpoint of format 1, this gembem reads format $fmt" ]] && ok "format 1: refused: $msg" \
+  [ $code -eq 2 ] && [[ $msg =~ "a checkpoint of format 1, this gembem reads formats 6 to $fmt" ]] && ok "format 1: refused: $msg" \
     || bad "format 1: exit $code, '$msg'"
 else bad "format 1: the run left no checkpoint"; fi
+
+# A checkpoint of format 6 (a host at rest, without the "followed" line) resumes to the
+# uninterrupted run's result.
+d=$out/format6; mkdir -p "$d"; cd "$d"
+n=20; extra_env="GB_TEST_CHECKPOINT_ITERATIONS=1"; start "$out/scenes/hybrid_history.yaml" -o run
+if grep -qs "^followed 0 0$" run/checkpoint.txt; then
+  fmt=$(awk 'NR == 1 { print $2 }' run/checkpoint.txt)
+  /usr/bin/python3 - run/checkpoint.txt "$fmt" <<'PY'
+import sys
+text = open(sys.argv[1], 'rb').read()
+body = text[:text.rindex(b'end ')].replace(b'gembem_checkpoint ' + sys.argv[2].encode(), b'gembem_checkpoint 6', 1)
+body = body.replace(b'\nfollowed 0 0\n', b'\n', 1)
+h = 0xcbf29ce484222325
+for b in body: h = ((h ^ b) * 0x100000001b3) % 2**64
+open(sys.argv[1], 'wb').write(body + b'end %016x\n' % h)
+PY
+  "$gembem" run --resume run --quiet && same_runs "$out/hybrid_history/ref/run" "$d/run" "format 6" \
+    || bad "format 6: the resume failed"
+else bad "format 6: the run left no checkpoint of a host at rest"; fi
 
 finish

@@ -20,7 +20,13 @@
  *    and every group's force equal the boundary element module's solution of the body with a
  *    traction-free cavity (gb_bem_solve, 1e-9 of the largest).
  * Then the scene runs again and every step is bit-identical (host u and f0, grains).
- *   test_host_load_steps scene.yaml [line_search]
+ * A host that follows its boundary (`follow`: rebased after every step, host.updated_lagrangian),
+ * once rebased, is checked against what stays true of it: the grains' forces equal its K u + f0;
+ * the state since the last rebase, solved on the moved mesh (G, H assembled apart from the
+ * condensation), puts on the cavity's elements K u + f0 minus the force carried over (1e-8); with
+ * an empty granular zone the cavity displacements summed over the rebases equal the body alone
+ * followed in as many increments (gb_bem_solve_updated, 1e-9 of the largest).
+ *   test_host_load_steps scene.yaml [line_search | follow]
  * line_search: the global solver's newton: line_search (UMFPACK) instead of the scene's solver. */
 #include <math.h>
 #include <stdio.h>
@@ -69,6 +75,103 @@ static double max_abs(const double *v, int n)
 
 static gb_status record(run_log *log, const gb_sim *sim);
 
+/* The forces the grains put on the boundary particles (2 per particle); the number of contacts. */
+static int grain_forces(const gb_sim *sim, double *grain)
+{
+    int n = 0;
+    for (int q = 0; q < sim->state.pairs.n; q++) {
+        const gb_pair *pr = &sim->state.pairs.p[q];
+        if (!(pr->d > 0) || !GB_IS_PARTICLE(pr->j)) continue;
+        int e = GB_PARTICLE_OF(pr->j);
+        grain[2 * e] += pr->nx * pr->pn - pr->ny * pr->pt;
+        grain[2 * e + 1] += pr->ny * pr->pn + pr->nx * pr->pt;
+        n++;
+    }
+    return n;
+}
+
+/* The body alone with a free cavity, followed step by step (each step's load change one increment
+ * of gb_bem_solve_updated on the mesh the ones before moved; the first from rest, the scene's
+ * initial values with it): every element's displacement since rest after `steps` steps, in u (2
+ * per element). */
+static gb_status followed_alone(const gb_sim *sim, int steps, double *u, gb_error *err)
+{
+    const gb_host *h = sim->host;
+    gb_bem_mesh moved;
+    gb_status st = gb_bem_mesh_copy(gb_host_rest_mesh(h), &moved, err);
+    for (int j = 1; j <= steps && !st; j++) { /* j = 1: from rest, the scene's initial values with it */
+        gb_bem_problem before, change;
+        gb_bem_solution sol;
+        expected_problem(sim, j - 1, &before);
+        if (j == 1) memset(before.bc, 0, sizeof before.bc), memset(before.remote_stress, 0, sizeof before.remote_stress);
+        expected_problem(sim, j, &change);
+        for (int g = 0; g < GB_BEM_MAX_GROUPS; g++)
+            for (int c = 0; c < 2; c++) change.bc[g].value[c] -= before.bc[g].value[c];
+        for (int c = 0; c < 3; c++) change.remote_stress[c] -= before.remote_stress[c];
+        if ((st = gb_bem_solve_updated(&moved, &h->sys.material, &change, 1, NULL, NULL, &sol, err))) break;
+        for (int k = 0; k < 2 * moved.n; k++) u[k] += sol.u[k];
+        gb_bem_solution_free(&sol);
+    }
+    gb_bem_mesh_free(&moved);
+    return st;
+}
+
+/* A step of a host rebased after every step (see the top). */
+static gb_status check_followed(run_log *log, const gb_sim *sim, const gb_step_report *r, gb_error *err)
+{
+    const gb_host *h = sim->host;
+    const gb_host_vars *v = &sim->state.host;
+    int m = h->m;
+    CHECK(h->rebases == r->step - 1 && h->rebase_step == r->step - 1);
+    size_t mm = (size_t)(m > 0 ? m : 1);
+    double *grain = calloc(mm, sizeof(double)), *host = malloc(mm * sizeof(double));
+    if (!grain || !host) return gb_fail(err, GB_ENOMEM, "out of memory");
+    int n_bp_contacts = grain_forces(sim, grain);
+    for (int q = 0; q < m; q++) {
+        host[q] = v->f0[q];
+        for (int j = 0; j < m; j++) host[q] += h->K.K[q + (size_t)j * m] * v->u[j];
+    }
+    double scale = fmax(max_abs(host, m), max_abs(v->f0, m)), dforce = 0, dcav = 0;
+    for (int q = 0; q < m; q++) dforce = fmax(dforce, fabs(grain[q] - host[q]));
+    CHECK(scale > 0);
+    CHECK(dforce <= 1e-8 * scale);
+    /* the state since the last rebase on the moved mesh: tractions x current lengths + the force carried */
+    gb_bem_solution inc;
+    memset(&inc, 0, sizeof inc);
+    gb_bem_problem change = gb_host_problem_change(h, v);
+    gb_status st = gb_bem_solve_group_displacement(&h->mesh, &h->sys, &change, h->cavity, v->u, NULL, &inc, err);
+    if (st) return st;
+    for (int q = 0; q < m; q++) {
+        int e = h->K.elem[q / 2];
+        dcav = fmax(dcav, fabs(inc.t[2 * e + q % 2] * h->mesh.length[e] + h->f0_base[q] - host[q]));
+    }
+    CHECK(dcav <= 1e-8 * scale);
+    /* an empty granular zone: the body alone, followed in as many increments as steps */
+    double du = 0, umax = 0;
+    if (n_bp_contacts == 0) {
+        log->empty_steps++;
+        double *alone = calloc(2 * (size_t)h->mesh.n, sizeof(double));
+        if (!alone) return gb_fail(err, GB_ENOMEM, "out of memory");
+        if ((st = followed_alone(sim, r->step, alone, err))) return st;
+        for (int q = 0; q < m / 2; q++) {
+            int e = h->K.elem[q];
+            for (int c = 0; c < 2; c++) {
+                umax = fmax(umax, fabs(alone[2 * e + c]));
+                du = fmax(du, fabs(alone[2 * e + c] - (h->u_acc[2 * e + c] + v->u[2 * q + c])));
+            }
+        }
+        free(alone);
+        CHECK(umax > 1e-7);
+        CHECK(du <= 1e-9 * umax);
+    }
+    printf("step %d (host rebased %d times): %d particle contacts; |K u + f0| %.4g, grains - host %.2g, "
+           "tractions since the rebase - host %.2g; empty zone: u %.4g, coupled - body followed alone %.2g\n",
+           r->step, h->rebases, n_bp_contacts, scale, dforce, dcav, umax, du);
+    gb_bem_solution_free(&inc);
+    free(grain), free(host);
+    return record(log, sim);
+}
+
 static gb_status check(void *user, const gb_sim *sim, const gb_step_report *r, gb_error *err)
 {
     run_log *log = user;
@@ -82,6 +185,7 @@ static gb_status check(void *user, const gb_sim *sim, const gb_step_report *r, g
             CHECK_NEAR(v->bc[g][c], p.bc[g].value[c], 1e-12 * fabs(p.bc[g].value[c]));
     for (int c = 0; c < 3; c++) CHECK_NEAR(v->remote[c], p.remote_stress[c], 1e-12 * fabs(p.remote_stress[c]));
 
+    if (h->rebases) return check_followed(log, sim, r, err);
     /* f0 against a fresh condensation */
     gb_bem_stiffness k;
     gb_status st = gb_bem_condense(&h->mesh, &h->sys, &p, h->cavity, NULL, &k, err);
@@ -98,15 +202,7 @@ static gb_status check(void *user, const gb_sim *sim, const gb_step_report *r, g
     size_t mm = (size_t)(m > 0 ? m : 1);
     double *grain = calloc(mm, sizeof(double)), *host = malloc(mm * sizeof(double));
     if (!grain || !host) return gb_fail(err, GB_ENOMEM, "out of memory");
-    int n_bp_contacts = 0;
-    for (int q = 0; q < sim->state.pairs.n; q++) {
-        const gb_pair *pr = &sim->state.pairs.p[q];
-        if (!(pr->d > 0) || !GB_IS_PARTICLE(pr->j)) continue;
-        int e = GB_PARTICLE_OF(pr->j);
-        grain[2 * e] += pr->nx * pr->pn - pr->ny * pr->pt;
-        grain[2 * e + 1] += pr->ny * pr->pn + pr->nx * pr->pt;
-        n_bp_contacts++;
-    }
+    int n_bp_contacts = grain_forces(sim, grain);
     for (int q = 0; q < m; q++) {
         host[q] = k.f0[q];
         for (int j = 0; j < m; j++) host[q] += k.K[q + (size_t)j * m] * v->u[j];
@@ -203,7 +299,7 @@ static gb_status record(run_log *log, const gb_sim *sim)
     return GB_OK;
 }
 
-static int run(const char *path, int line_search, run_log *log)
+static int run(const char *path, int line_search, int follow, run_log *log)
 {
     gb_error err = {0};
     gb_scene sc;
@@ -214,6 +310,7 @@ static int run(const char *path, int line_search, run_log *log)
         sc.solver.linear = GB_LINEAR_UMFPACK;
         sc.solver.newton = GB_NEWTON_LINE_SEARCH;
     }
+    if (!st0 && follow) sc.host.follow_every = 1;
     if (st0 || gb_sim_create(&sc, &sim, &err)) {
         fprintf(stderr, "%s\n", err.msg);
         return 1;
@@ -231,13 +328,13 @@ static int run(const char *path, int line_search, run_log *log)
 
 int main(int argc, char **argv)
 {
-    if (argc < 2 || argc > 3 || (argc == 3 && strcmp(argv[2], "line_search")))
-        return fprintf(stderr, "usage: %s scene.yaml [line_search]\n", argv[0]), 2;
-    int line_search = argc == 3;
+    if (argc < 2 || argc > 3 || (argc == 3 && strcmp(argv[2], "line_search") && strcmp(argv[2], "follow")))
+        return fprintf(stderr, "usage: %s scene.yaml [line_search | follow]\n", argv[0]), 2;
+    int line_search = argc == 3 && !strcmp(argv[2], "line_search"), follow = argc == 3 && !line_search;
     run_log a, b;
-    if (run(argv[1], line_search, &a)) return 1;
+    if (run(argv[1], line_search, follow, &a)) return 1;
     printf("second run\n");
-    if (run(argv[1], line_search, &b)) return 1;
+    if (run(argv[1], line_search, follow, &b)) return 1;
     int same = a.n_steps == b.n_steps && a.per_step == b.per_step &&
                !memcmp(a.rec, b.rec, (size_t)a.n_steps * (size_t)a.per_step * sizeof(double));
     printf("%d steps (%d with an empty granular zone), run twice: %s\n", a.n_steps, a.empty_steps,
