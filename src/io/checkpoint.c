@@ -17,8 +17,8 @@
 /* 2: the load step in progress (a checkpoint within a step) and its states; 1 (before): between
  * steps only, not read. */
 /* 3: each pair's rolling moment; 4: the line search's smoother-first state; 5: grains in the
- * simulation's order by cell (gb_sim.grain_order); 7: a host's rebases ("followed"; 6 is 7 with a
- * host at rest, and is read) */
+ * simulation's order by cell (gb_sim.grain_order); 6: the stall window; 7: a host's rebases
+ * ("followed"; 6 is 7 with a host at rest, and is read) */
 enum { FORMAT = 7, FORMAT_READ_FROM = 6 };
 
 static uint64_t fnv(uint64_t h, const void *data, size_t n)
