@@ -183,6 +183,9 @@ def pack_values(name):
     sc = stat_case(name)
     if sc is not None:
         return STAT_N, BASE["phi"], sc[4], STAT_CAVITY
+    sc = scale_case(name)
+    if sc is not None:
+        return SCALE_N, BASE["phi"], sc[4], SCALE_CAVITY
     c = ext(name)
     if c is not None:
         return c["n"], c["phi"], c["seed"], c["cavity"]
@@ -204,7 +207,7 @@ def pack_scene(name, mesh, radius=2.5):
     the case's friction, with its kn; the accuracy is 5e-5 kn (the sweep's), the balance of every
     grain at the end of the packing."""
     n, phi, seed, cavity = pack_values(name)
-    c, sc = ext(name), stat_case(name)
+    c, sc = ext(name), stat_case(name) or scale_case(name)
     kn = (sc[1] * G if sc is not None else c["kn_g"] * G if c is not None
           else next(k for m, _, _, k in cases() if m == name))
     usable = radius * (math.cos(math.pi / cavity) - math.sin(math.pi / cavity))
@@ -228,6 +231,8 @@ def scene(name, mesh, refine=1):
     `refine` times smaller (a second attempt)."""
     if stat_case(name) is not None:
         return stat_scene(name, mesh)
+    if scale_case(name) is not None:
+        return scale_scene(name, mesh)
     c = ext(name)
     if c is not None:
         shear = c["load"] == "shear"
@@ -287,28 +292,61 @@ def stat_case(name):
     return None
 
 
-def stat_r0():
-    """The mean radius of the statistics' grains: phi pi R_u^2 = n pi E[r^2], r uniform in [0.75, 1.25] r0."""
-    usable = 2.5 * (math.cos(math.pi / STAT_CAVITY) - math.sin(math.pi / STAT_CAVITY))
-    return math.sqrt(BASE["phi"] * usable**2 / (STAT_N * (1 + 0.25**2 / 3)))
+def stat_r0(n=None, cavity=None):
+    """The mean radius of the statistics' grains (n grains, cavity elements: the statistics' by
+    default): phi pi R_u^2 = n pi E[r^2], r uniform in [0.75, 1.25] r0."""
+    n, cavity = n or STAT_N, cavity or STAT_CAVITY
+    usable = 2.5 * (math.cos(math.pi / cavity) - math.sin(math.pi / cavity))
+    return math.sqrt(BASE["phi"] * usable**2 / (n * (1 + 0.25**2 / 3)))
 
 
-def stat_rolling(kn_g):
+def stat_rolling(kn_g, r0=None):
     """{kr, eta}: kr = kt R*^2 (beta = 1, docs/scene.md), R* = r0 / 2 between two mean grains."""
     kt = KT_KN * kn_g * G
-    return {"kr": g6(kt * (stat_r0() / 2)**2), "eta": STAT_ETA}
+    return {"kr": g6(kt * ((r0 or stat_r0()) / 2)**2), "eta": STAT_ETA}
+
+
+def stat_like_scene(name, case, mesh, n, cavity, steps, follow=None):
+    """A statistics case's scene (case: stat_case's tuple) for n grains, cavity elements and steps
+    of the top; follow: the host rebased after every `follow` steps (host.updated_lagrangian)."""
+    _, kn_g, p, rolling, seed = case
+    dp = p / STEPS_P
+    s = case_scene(name, kn_g * G, BASE["friction"], mesh, cavity, NU, "displacement", 1.0, 3000, dp, None,
+                   steps, [0, -STAT_DU])
+    s.solver["accuracy"] = {"relative": STAT_A_REL}
+    if rolling:
+        s.materials["grain_grain"]["rolling"] = stat_rolling(kn_g, stat_r0(n, cavity))
+    if follow:
+        s.host["updated_lagrangian"] = {"every": follow}
+    s.output = {"contacts_every": 1}   # the grains' rotations and the contact forces (Love-Weber stress)
+    return s
 
 
 def stat_scene(name, mesh):
-    _, kn_g, p, rolling, seed = stat_case(name)
-    dp = p / STEPS_P
-    s = case_scene(name, kn_g * G, BASE["friction"], mesh, STAT_CAVITY, NU, "displacement", 1.0, 3000, dp, None,
-                   STAT_STEPS[kn_g], [0, -STAT_DU])
-    s.solver["accuracy"] = {"relative": STAT_A_REL}
-    if rolling:
-        s.materials["grain_grain"]["rolling"] = stat_rolling(kn_g)
-    s.output = {"contacts_every": 1}   # the grains' rotations and the contact forces (Love-Weber stress)
-    return s
+    case = stat_case(name)
+    return stat_like_scene(name, case, mesh, STAT_N, STAT_CAVITY, STAT_STEPS[case[1]])
+
+
+# The study at scale: zones 110 grain diameters across (1e4 grains; 384 cavity elements keep the
+# boundary particles' size to the grains'), the host following its deformed boundary (rebased
+# after every step), the top pushed SCALE_STEPS x 0.01 cm (the zone to about 10 % of vertical
+# strain); the statistics' cases at P = 100 kgf/cm^2, SCALE_SEEDS packings each. Names
+# scale/<statistics name>.
+SCALE_N, SCALE_CAVITY, SCALE_SEEDS, SCALE_STEPS, SCALE_FOLLOW, SCALE_P = 10000, 384, 5, 60, 1, [100.0]
+
+
+def scale_cases():
+    """(name, kn_g, P, rolling, seed) of every run of the study at scale."""
+    return [("scale/" + stat_name(k, p, r, s), k, p, r, s) for r in STAT_ROLLING for p in SCALE_P for k in STAT_KN_G
+            for s in range(1, SCALE_SEEDS + 1)]
+
+
+def scale_case(name):
+    return next((c for c in scale_cases() if c[0] == name), None)
+
+
+def scale_scene(name, mesh):
+    return stat_like_scene(name, scale_case(name), mesh, SCALE_N, SCALE_CAVITY, SCALE_STEPS, SCALE_FOLLOW)
 
 
 def write_scene(name, path, mesh, refine=1):
