@@ -37,7 +37,11 @@ cavity wall (wall_strain) <= study.STAT_HOST_STRAIN; with --ring, on the ring at
             each end) over that at the mirror points (x -> -x: the loading is symmetric about
             the vertical axis, so the mirror points see the same loading without the band).
 
-Usage: validation/localisation/band_statistics.py [RUNS_DIR] [--ring]     (default runs/localisation)
+With --scale, the study at scale (study.py scale_cases: 1e4 grains, the host following its
+deformed boundary) over each run's whole travel, no host strain bound: scale.md, scale_runs.csv,
+scale_maps.png, scale_measures.png.
+
+Usage: validation/localisation/band_statistics.py [RUNS_DIR] [--ring | --scale]     (default runs/localisation)
 """
 import math
 import os
@@ -64,13 +68,20 @@ RUNS = ARGS[0] if ARGS else os.path.join(HERE, "..", "..", "runs", "localisation
 # Where the host's strain is bounded: on the cavity wall (its largest), or with --ring on the
 # ring at 1.5 R (the sensitivity run: outputs statistics_ring*)
 BOUND_AT = "ring" if "--ring" in sys.argv else "wall"
-SUFFIX = "_ring" if BOUND_AT == "ring" else ""
+SCALE = "--scale" in sys.argv   # the study at scale: the whole travel, no bound
+OUT = "scale" if SCALE else "statistics" + ("_ring" if BOUND_AT == "ring" else "")
+# the runs (name, kn_g, P, rolling, seed), the cases (group, kn_g, P, rolling), packings per case
+CASES = study.scale_cases() if SCALE else study.stat_cases()
+GROUPS = ([("scale/" + g, k, p, r) for g, k, p, r in study.stat_groups() if p in study.SCALE_P] if SCALE
+          else study.stat_groups())
+SEEDS = study.SCALE_SEEDS if SCALE else study.STAT_SEEDS
+CAVITY = study.SCALE_CAVITY if SCALE else study.STAT_CAVITY
 WINDOW = 5          # steps of 0.01 cm: the window over which the band's strain accumulates
 DANG = 1            # degrees between the band measure's strip directions
 SPIN = 1.0          # radians over a window: a grain turning more is in a mechanism (README)
 NULL_SHUFFLES, NULL_SEED = 5, 20  # the nulls' shuffles (and 4x as many random strips), their seed
 EPISODE = fg.EPISODE  # band measure that counts as a band (0.45, as the extended cases)
-R_USABLE = 2.5 * (math.cos(math.pi / study.STAT_CAVITY) - math.sin(math.pi / study.STAT_CAVITY))
+R_USABLE = 2.5 * (math.cos(math.pi / CAVITY) - math.sin(math.pi / CAVITY))
 
 
 def principal(exx, eyy, exy):
@@ -126,13 +137,13 @@ class StatRun:
 
     def __init__(self, name):
         self.name = name
-        self.dir = os.path.join(RUNS, "statistics", name)
+        self.dir = os.path.join(RUNS, name) if SCALE else os.path.join(RUNS, "statistics", name)
         self.run = os.path.join(self.dir, "run")
         self.r = gembem.Run(self.run)
         self.radii = fg.read_csv(os.path.join(self.dir, "grains.csv"))["r"]
         self.d = 2 * self.radii.mean()
         self.first_top = study.STEPS_P + 2
-        self.P = study.stat_case(name)[2]
+        self.P = next(c for c in CASES if c[0] == name)[2]
         hs = self.r.host_steps
         top = hs["group"] == "top"
         self.travel = -hs["uy"][top]
@@ -140,7 +151,7 @@ class StatRun:
         self.ring = {k: ring_strain(self.r, k) for k in steps}
         self.wall = {k: wall_strain(self.r, k) for k in steps}
         bound = self.wall if BOUND_AT == "wall" else self.ring
-        ok = [k for k in steps if k >= self.first_top and bound[k] <= study.STAT_HOST_STRAIN]
+        ok = [k for k in steps if k >= self.first_top and (SCALE or bound[k] <= study.STAT_HOST_STRAIN)]
         self.last = max(ok) if ok else self.first_top - 1  # the last step within the allowed strain
 
 
@@ -373,16 +384,16 @@ KEYS = [("travel", "top's travel within the allowed host strain [cm]", "{:.3f}")
 
 
 def case_label(group):
-    _, k, p, r = next(g for g in study.stat_groups() if g[0] == group)
+    _, k, p, r = next(g for g in GROUPS if g[0] == group)
     return f"kn/G {k:g} cm, P {p:g}, {'rolling' if r else 'no rolling'}"
 
 
 def table(rows):
-    groups = [g[0] for g in study.stat_groups()]
+    groups = [g[0] for g in GROUPS]
     head = "| measure | " + " | ".join(f"{g}" for g in groups) + " |\n|---|" + "---|" * len(groups) + "\n"
     lines = []
     by = {g: [r for r in rows if r["case"].startswith(g + "/")] for g in groups}
-    lines.append("| runs measured (of " + str(study.STAT_SEEDS) + ") | "
+    lines.append("| runs measured (of " + str(SEEDS) + ") | "
                  + " | ".join(str(sum("band" in r for r in by[g])) for g in groups) + " |")
     lines.append(f"| runs with band measure >= {EPISODE} | "
                  + " | ".join(str(sum(r.get("band", 0) >= EPISODE for r in by[g])) for g in groups) + " |")
@@ -410,8 +421,10 @@ def table(rows):
     legend = "\n".join(f"- `{g}`: {case_label(g)}" for g in groups)
     where = ("on the cavity wall" if BOUND_AT == "wall" else "on the ring at 1.5 R (the wall's reaches about twice "
              "as much)")
-    return (f"Mean +- standard deviation (number of runs) over the packings; each run measured up to its "
-            f"last step with the host's largest principal strain {where} <= {study.STAT_HOST_STRAIN:g} "
+    bound = ("each run measured over its whole travel (the host follows its deformed boundary)" if SCALE else
+             f"each run measured up to its last step with the host's largest principal strain {where} <= "
+             f"{study.STAT_HOST_STRAIN:g}")
+    return (f"Mean +- standard deviation (number of runs) over the packings; {bound} "
             f"(band_statistics.py; windows of {WINDOW} steps of 0.01 cm, or all the allowed steps when fewer).\n\n" + head + "\n".join(lines) + "\n\n"
             + legend + "\n")
 
@@ -436,7 +449,7 @@ def draw_band(ax, sr, m, vmax):
 
 def fig_maps(runs, meas):
     """Per case, the run whose band measure is the case's median: the band's window."""
-    groups = [g[0] for g in study.stat_groups()]
+    groups = [g[0] for g in GROUPS]
     fig, axes = plt.subplots(2, 4, figsize=(13, 7.2))
     for ax, grp in zip(axes.ravel(), groups):
         ms = [m for m in meas if m["case"].startswith(grp + "/") and "band" in m]
@@ -447,7 +460,7 @@ def fig_maps(runs, meas):
         m = ms[order[len(order) // 2]]
         sr = runs[m["case"]]
         tp, _ = draw_band(ax, sr, m, np.percentile(m["_draw"][1][m["_draw"][2]], 98))
-        ax.set_title(f"{case_label(grp)}\n{m['case'].split('/')[1]}: window to {m['band_travel']:.2f} cm, "
+        ax.set_title(f"{case_label(grp)}\n{m['case'].split('/')[-1]}: window to {m['band_travel']:.2f} cm, "
                      f"band {m['band']:.2f} at {m['ang']:.0f} deg\nthickness {m['thickness_d']:.1f} d, "
                      f"rotation ratio {m['rot_ratio']:.2f}", fontsize=7)
         fig.colorbar(tp, ax=ax, fraction=0.04, pad=0.01)
@@ -455,14 +468,14 @@ def fig_maps(runs, meas):
                  "median band measure of each case\ndashed: the band measure's 0.5 cm strip; grey squares: the host's "
                  "shear strain increment over the window on the ring at 1.5 R (own scale)", fontsize=8)
     fig.tight_layout(rect=(0, 0, 1, 0.95))
-    path = os.path.join(HERE, f"statistics{SUFFIX}_maps.png")
+    path = os.path.join(HERE, f"{OUT}_maps.png")
     fig.savefig(path, dpi=110)
     plt.close(fig)
     fg.shrink_png(path)
 
 
 def fig_measures(meas):
-    groups = [g[0] for g in study.stat_groups()]
+    groups = [g[0] for g in GROUPS]
     panels = [("theta", "band to minor principal stress [deg]"), ("band", "band measure"),
               ("thickness_d", "thickness [d]"), ("rot_ratio_med", "median rotation in band / outside"),
               ("onset_wall_d", "onset distance from the wall [d]"),
@@ -506,31 +519,31 @@ def fig_measures(meas):
                  "(Bardet & Proubet 1992, discs); in the orientation panel: 45 +- 26 deg, a direction drawn at random",
                  fontsize=8)
     fig.tight_layout(rect=(0, 0, 1, 0.96))
-    fig.savefig(os.path.join(HERE, f"statistics{SUFFIX}_measures.png"), dpi=110)
+    fig.savefig(os.path.join(HERE, f"{OUT}_measures.png"), dpi=110)
     plt.close(fig)
 
 
 def main():
-    names = [c[0] for c in study.stat_cases()]
+    names = [c[0] for c in CASES]
     runs, meas = {}, []
     for n in names:
-        st = os.path.join(RUNS, "statistics", n, "status.yaml")
+        st = os.path.join(RUNS, n, "status.yaml") if SCALE else os.path.join(RUNS, "statistics", n, "status.yaml")
         if not os.path.exists(st) or read_yaml(st).get("status") != "completed":
             print(f"{n}: not completed, skipped")
             continue
         sr = StatRun(n)
         runs[n] = sr
         meas.append(measure(sr))
-    with open(os.path.join(HERE, f"statistics{SUFFIX}.md"), "w") as f:
+    with open(os.path.join(HERE, f"{OUT}.md"), "w") as f:
         f.write(table(meas))
     keys = [k for k, _, _ in KEYS] + ["window", "spinning", "rattlers", "strip_ang", "ang", "minor_dir", "axis", "onset_travel", "d"]
-    with open(os.path.join(HERE, f"statistics{SUFFIX}_runs.csv"), "w") as f:
+    with open(os.path.join(HERE, f"{OUT}_runs.csv"), "w") as f:
         f.write("case," + ",".join(keys) + "\n")
         for m in meas:
             f.write(m["case"] + "," + ",".join(f"{m[k]:.6g}" if k in m else "" for k in keys) + "\n")
     fig_maps(runs, meas)
     fig_measures(meas)
-    print(open(os.path.join(HERE, f"statistics{SUFFIX}.md")).read())
+    print(open(os.path.join(HERE, f"{OUT}.md")).read())
 
 
 if __name__ == "__main__":
