@@ -435,15 +435,17 @@ def table(rows):
             + legend + "\n")
 
 
-def draw_band(ax, sr, m, vmax, extent=3.9):
-    """The window's shear strain on its triangles, the grains, the band measure's strip (dashed)
-    and, with a host (hx not None), the host's strain on its ring; the axes span +-extent."""
+def draw_band(ax, sr, m, vmax, extent=3.9, outlines=True):
+    """The window's shear strain on its triangles, the grains' outlines (if asked), the band
+    measure's strip (dashed) and, with a host (hx not None), the host's strain on its ring; the
+    axes span +-extent."""
     tri, g, ok, hx, hy, hg, gb, ang, axis = m["_draw"]
     tp = ax.tripcolor(tri, facecolors=np.where(ok, g, 0), cmap="inferno", vmin=0, vmax=vmax)
     hs = None if hx is None else ax.scatter(hx, hy, c=hg, cmap="Greys", vmin=0, vmax=np.percentile(hg, 98), s=14,
                                             marker="s", edgecolors="k", linewidths=0.2)
-    ax.add_collection(PatchCollection([Circle((x, y), r) for x, y, r in zip(gb["x"], gb["y"], sr.radii)],
-                                      facecolor="none", edgecolor="0.6", linewidths=0.15))
+    if outlines:
+        ax.add_collection(PatchCollection([Circle((x, y), r) for x, y, r in zip(gb["x"], gb["y"], sr.radii)],
+                                          facecolor="none", edgecolor="0.6", linewidths=0.15))
     th = math.radians(ang)
     nrm, tan = np.array([-math.sin(th), math.cos(th)]), np.array([math.cos(th), math.sin(th)])
     for off in (-fg.STRIP / 2, fg.STRIP / 2):

@@ -42,6 +42,7 @@ import figures as fg  # noqa: E402
 MARGIN_D = 3        # mean diameters of the box's interior left out along each wall
 EVERY = 0.01        # vertical strain per window
 SHEAR_STAGE = 3     # biaxial_control.py's stages: relax, isotropic, shear_mean_stress
+OUTLINES = 3000     # the maps draw the grains' outlines up to this many grains (beyond, they hide the strain)
 
 
 class BoxRun:
@@ -136,7 +137,8 @@ def table(br, rows, whole):
 
 
 def figure(br, rows, whole, path):
-    fig, axes = plt.subplots(1, 4, figsize=(17, 4.6))
+    fig, axes = plt.subplots(2, 2, figsize=(12, 10.5), gridspec_kw={"height_ratios": [1, 1.6]})
+    axes = axes.ravel()
     s, sh = br.s, slice(br.first - 1, br.last + 1)
     ax = axes[0]
     ax.plot(100 * s["e1"][sh], s["stress_ratio"][sh], color="k", label="q/p (walls)")
@@ -156,14 +158,15 @@ def figure(br, rows, whole, path):
     for ax, m, what in ((axes[2], rows[-1], f"last window, steps {rows[-1]['k0']}-{rows[-1]['k1']}"),
                         (axes[3], whole, f"whole travel, steps {whole['k0']}-{whole['k1']}")):
         tri, g, ok = m["_draw"][:3]
-        tp, _ = bs.draw_band(ax, br, m, np.percentile(g[ok], 98), extent=ext)
+        tp, _ = bs.draw_band(ax, br, m, np.percentile(g[ok], 98), extent=ext, outlines=len(br.radii) <= OUTLINES)
         hw, hh = br.half(m["k1"])
         ax.plot([-hw, hw, hw, -hw, -hw], [-hh, -hh, hh, hh, -hh], color="tab:green", lw=0.6)
         ax.set_title(f"{what}: band {m['band']:.2f} (null {m['band_null']:.2f}) at {m['ang']:.0f} deg,\n"
                      f"thickness {m['thickness_d']:.1f} d, rotation ratio {m['rot_ratio_med']:.2f}", fontsize=8)
         fig.colorbar(tp, ax=ax, fraction=0.04, pad=0.01)
-    fig.suptitle(f"Biaxial box, {len(br.radii)} grains ({br.dir}): shear strain on the triangles of the centres; "
-                 f"dashed: the band measure's {fg.STRIP} cm strip; green: the measuring window", fontsize=9)
+    fig.suptitle(f"Biaxial box, {len(br.radii)} grains ({os.path.basename(os.path.normpath(br.dir))}): the walls' "
+                 f"stress ratio and dilation; the band measures per window;\nthe shear strain on the triangles of the "
+                 f"centres, the band measure's {fg.STRIP} cm strip (dashed), the measuring window (green)", fontsize=9)
     fig.tight_layout(rect=(0, 0, 1, 0.94))
     fig.savefig(path, dpi=110)
     plt.close(fig)
