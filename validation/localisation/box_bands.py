@@ -21,7 +21,8 @@ the measuring window and the stress differ from the cavity's:
 
 Usage: validation/localisation/box_bands.py DIR      (DIR of biaxial_control.py: DIR/run, DIR/grains.csv)
 Writes DIR/bands.md (the table), DIR/bands.csv and DIR/bands.png (the stress ratio and band
-measures along the path; the strain of the last window and of the whole travel with the strip)."""
+measures along the path; the strain with the strip of the window whose band measure is the most
+above its null, of the last window and of the whole travel)."""
 import math
 import os
 import sys
@@ -137,8 +138,10 @@ def table(br, rows, whole):
 
 
 def figure(br, rows, whole, path):
-    fig, axes = plt.subplots(2, 2, figsize=(12, 10.5), gridspec_kw={"height_ratios": [1, 1.6]})
-    axes = axes.ravel()
+    fig = plt.figure(figsize=(16, 10))
+    grid = fig.add_gridspec(2, 6, height_ratios=[1, 1.3])
+    axes = [fig.add_subplot(grid[0, 0:3]), fig.add_subplot(grid[0, 3:6])] + [fig.add_subplot(grid[1, 2 * i:2 * i + 2])
+                                                                            for i in range(3)]
     s, sh = br.s, slice(br.first - 1, br.last + 1)
     ax = axes[0]
     ax.plot(100 * s["e1"][sh], s["stress_ratio"][sh], color="k", label="q/p (walls)")
@@ -155,8 +158,10 @@ def figure(br, rows, whole, path):
     ax.set_ylim(0, None)
     ax.legend(fontsize=7)
     ext = 0.5 * max(s["width"][br.last], s["height"][br.last]) * 1.02
-    for ax, m, what in ((axes[2], rows[-1], f"last window, steps {rows[-1]['k0']}-{rows[-1]['k1']}"),
-                        (axes[3], whole, f"whole travel, steps {whole['k0']}-{whole['k1']}")):
+    top = max(rows, key=lambda m: m["band"] / m["band_null"])
+    for ax, m, what in ((axes[2], top, f"largest band / null: steps {top['k0']}-{top['k1']}"),
+                        (axes[3], rows[-1], f"last window, steps {rows[-1]['k0']}-{rows[-1]['k1']}"),
+                        (axes[4], whole, f"whole travel, steps {whole['k0']}-{whole['k1']}")):
         tri, g, ok = m["_draw"][:3]
         tp, _ = bs.draw_band(ax, br, m, np.percentile(g[ok], 98), extent=ext, outlines=len(br.radii) <= OUTLINES)
         hw, hh = br.half(m["k1"])
