@@ -218,6 +218,66 @@ def band_thickness(tri, g, ok, area, ang, axis, d, radius=R_USABLE):
     return width
 
 
+def strip_measures(sr, k0, k1, tri, g, ok, area, ang, axis, radius=R_USABLE, among=None):
+    """The measures of a window's band measure strip (direction ang, axis: figures.strip_share's)
+    over the window of steps k0-k1 (its strain tri, g, ok, area: figures.accumulated_strain's, ok
+    limited to the measuring window), as a dict: the refined direction and axis (ang, axis), the
+    null (band_null), the thickness (width [length], thickness_d), the rotation ratios and their
+    nulls (rot_ratio*), spinning and rattlers.
+    radius: the window's largest distance from the centre (the thickness' profile spans +-radius,
+    the rotations' random strips lie within radius/2 of it); among: the grains (bool per grain)
+    whose rotations count, default all."""
+    out = {}
+    ang, axis = band_direction(tri, g, ok, area, ang, axis)
+    out.update(ang=ang, axis=axis)
+    # the null: the same window's strain values shuffled among its triangles (no spatial order;
+    # NULL_SHUFFLES seeded shuffles, their mean): what the band measure gives without a band
+    rng = np.random.default_rng(NULL_SEED)
+    idx = np.nonzero(ok)[0]
+    nulls = []
+    for _ in range(NULL_SHUFFLES):
+        # strain and area together (a sliver's huge strain stays on a sliver's area)
+        gs, as_ = g.copy(), area.copy()
+        perm = rng.permutation(idx)
+        gs[idx], as_[idx] = g[perm], area[perm]
+        nulls.append(fg.strip_share(tri, gs, ok, as_, dang=DANG)[0])
+    out["band_null"] = float(np.mean(nulls))
+    width = band_thickness(tri, g, ok, area, ang, axis, sr.d, radius)
+    out["width"], out["thickness_d"] = width, width / sr.d
+    # rotations of the grains in and out of the band over the window
+    ga, gb = sr.r.grains(k0 - 1), sr.r.grains(k1)
+    th = math.radians(ang)
+    dist = np.abs(-gb["x"] * math.sin(th) + gb["y"] * math.cos(th) - axis)
+    rot = np.abs(gb["rotation"] - ga["rotation"])
+    # rattlers (fewer than 2 contacts at the window's end) spin freely: left out of both means
+    c = sr.r.contacts(k1)
+    jj = np.array([int(j) for j in c["j"] if str(j).isdigit()], int)  # j: a grain, a wall or p<k> a particle
+    z = np.bincount(c["i"].astype(int), minlength=len(rot)) + np.bincount(jj, minlength=len(rot))
+    # grains spinning in a mechanism (both contacts sliding: the rotation is undetermined, the
+    # solver's value arbitrary; 7326 rad in one step on k0.01_p100_nr/s11) are left out too
+    spin = rot > SPIN
+    out["spinning"] = int((spin & (z >= 2)).sum())
+    held = (z >= 2) & ~spin & (True if among is None else among)
+    out["rattlers"] = int((z < 2).sum())
+    inside = (dist <= max(width / 2, sr.d)) & held
+    outside = (~inside) & held
+    # means (the brief's measure) and medians: a few grains spinning between two contacts swing
+    # the means' ratio (0.01 and 13 on one run), not the medians'
+    few = inside.sum() < 5
+    out["rot_ratio"] = np.nan if few else float(rot[inside].mean() / rot[outside].mean())
+    out["rot_ratio_med"] = np.nan if few else float(np.median(rot[inside]) / np.median(rot[outside]))
+    # its null: the same ratio for strips as wide at random directions and offsets (|offset| < radius/2)
+    rr = []
+    for _ in range(NULL_SHUFFLES * 4):
+        a2, o2 = math.radians(rng.uniform(0, 180)), rng.uniform(-radius / 2, radius / 2)
+        ins = np.abs(-gb["x"] * math.sin(a2) + gb["y"] * math.cos(a2) - o2) <= max(width / 2, sr.d)
+        if (ins & held).sum() >= 5:
+            rr.append((rot[ins & held].mean() / rot[~ins & held].mean(),
+                       np.median(rot[ins & held]) / np.median(rot[~ins & held])))
+    out["rot_ratio_null"], out["rot_ratio_med_null"] = (float(v) for v in np.mean(rr, 0))
+    return out
+
+
 def measure(sr):
     """The measures of one run (a dict; None where the allowed steps hold no full window)."""
     out = {"case": sr.name, "travel": float(sr.travel[sr.last]), "last": sr.last, "d": sr.d}
@@ -243,20 +303,10 @@ def measure(sr):
     q = int(np.argmax([w[2] for w in wins]))
     k0, k1, share, ashare, ang, axis, tri, g, ok, area = wins[q]
     out.update(band=share, band_area=ashare, band_end=k1, band_travel=float(sr.travel[k1]), strip_ang=ang)
-    ang, axis = band_direction(tri, g, ok, area, ang, axis)
-    out.update(ang=ang, axis=axis)
-    # the null: the same window's strain values shuffled among its triangles (no spatial order;
-    # NULL_SHUFFLES seeded shuffles, their mean): what the band measure gives without a band
-    rng = np.random.default_rng(NULL_SEED)
-    idx = np.nonzero(ok)[0]
-    nulls = []
-    for _ in range(NULL_SHUFFLES):
-        # strain and area together (a sliver's huge strain stays on a sliver's area)
-        gs, as_ = g.copy(), area.copy()
-        perm = rng.permutation(idx)
-        gs[idx], as_[idx] = g[perm], area[perm]
-        nulls.append(fg.strip_share(tri, gs, ok, as_, dang=DANG)[0])
-    out["band_null"] = float(np.mean(nulls))
+    sm = strip_measures(sr, k0, k1, tri, g, ok, area, ang, axis)
+    ang, axis = sm["ang"], sm["axis"]
+    del sm["width"]
+    out.update(sm)
     out["axis_r"] = abs(axis) / R_USABLE
     # the whole allowed loading's band measure
     tri_a, g_a, ok_a, area_a, _ = fg.accumulated_strain(sr, sr.first_top, sr.last)
@@ -275,39 +325,8 @@ def measure(sr):
     out["theta_mc"] = 45 + out["phi"] / 2
     out["theta_r"] = 45 + out["psi"] / 2
     out["theta_a"] = 45 + (out["phi"] + out["psi"]) / 4
-    width = band_thickness(tri, g, ok, area, ang, axis, sr.d)
-    out["thickness_d"] = width / sr.d
-    # rotations of the grains in and out of the band over the window
-    ga, gb = sr.r.grains(k0 - 1), sr.r.grains(k1)
+    gb = sr.r.grains(k1)
     th = math.radians(ang)
-    dist = np.abs(-gb["x"] * math.sin(th) + gb["y"] * math.cos(th) - axis)
-    rot = np.abs(gb["rotation"] - ga["rotation"])
-    # rattlers (fewer than 2 contacts at the window's end) spin freely: left out of both means
-    c = sr.r.contacts(k1)
-    jj = np.array([int(j) for j in c["j"] if not str(j).startswith("p")], int)  # j: a grain, or p<k> a particle
-    z = np.bincount(c["i"].astype(int), minlength=len(rot)) + np.bincount(jj, minlength=len(rot))
-    # grains spinning in a mechanism (both contacts sliding: the rotation is undetermined, the
-    # solver's value arbitrary; 7326 rad in one step on k0.01_p100_nr/s11) are left out too
-    spin = rot > SPIN
-    out["spinning"] = int((spin & (z >= 2)).sum())
-    held = (z >= 2) & ~spin
-    out["rattlers"] = int((z < 2).sum())
-    inside = (dist <= max(width / 2, sr.d)) & held
-    outside = (~inside) & held
-    # means (the brief's measure) and medians: a few grains spinning between two contacts swing
-    # the means' ratio (0.01 and 13 on one run), not the medians'
-    few = inside.sum() < 5
-    out["rot_ratio"] = np.nan if few else float(rot[inside].mean() / rot[outside].mean())
-    out["rot_ratio_med"] = np.nan if few else float(np.median(rot[inside]) / np.median(rot[outside]))
-    # its null: the same ratio for strips as wide at random directions and offsets (|offset| < R/2)
-    rr = []
-    for _ in range(NULL_SHUFFLES * 4):
-        a2, o2 = math.radians(rng.uniform(0, 180)), rng.uniform(-R_USABLE / 2, R_USABLE / 2)
-        ins = np.abs(-gb["x"] * math.sin(a2) + gb["y"] * math.cos(a2) - o2) <= max(width / 2, sr.d)
-        if (ins & held).sum() >= 5:
-            rr.append((rot[ins & held].mean() / rot[~ins & held].mean(),
-                       np.median(rot[ins & held]) / np.median(rot[~ins & held])))
-    out["rot_ratio_null"], out["rot_ratio_med_null"] = (float(v) for v in np.mean(rr, 0))
     # onset: the first window whose strain in the band's strip is half way to its band-time share
     target = ashare + 0.5 * (share - ashare)
     for k0o, k1o, _, _, _, _, trio, go, oko, areao in wins:
@@ -429,20 +448,24 @@ def table(rows):
             + legend + "\n")
 
 
-def draw_band(ax, sr, m, vmax):
+def draw_band(ax, sr, m, vmax, extent=3.9, outlines=True):
+    """The window's shear strain on its triangles, the grains' outlines (if asked), the band
+    measure's strip (dashed) and, with a host (hx not None), the host's strain on its ring; the
+    axes span +-extent."""
     tri, g, ok, hx, hy, hg, gb, ang, axis = m["_draw"]
     tp = ax.tripcolor(tri, facecolors=np.where(ok, g, 0), cmap="inferno", vmin=0, vmax=vmax)
-    hs = ax.scatter(hx, hy, c=hg, cmap="Greys", vmin=0, vmax=np.percentile(hg, 98), s=14, marker="s",
-                    edgecolors="k", linewidths=0.2)
-    ax.add_collection(PatchCollection([Circle((x, y), r) for x, y, r in zip(gb["x"], gb["y"], sr.radii)],
-                                      facecolor="none", edgecolor="0.6", linewidths=0.15))
+    hs = None if hx is None else ax.scatter(hx, hy, c=hg, cmap="Greys", vmin=0, vmax=np.percentile(hg, 98), s=14,
+                                            marker="s", edgecolors="k", linewidths=0.2)
+    if outlines:
+        ax.add_collection(PatchCollection([Circle((x, y), r) for x, y, r in zip(gb["x"], gb["y"], sr.radii)],
+                                          facecolor="none", edgecolor="0.6", linewidths=0.15))
     th = math.radians(ang)
     nrm, tan = np.array([-math.sin(th), math.cos(th)]), np.array([math.cos(th), math.sin(th)])
     for off in (-fg.STRIP / 2, fg.STRIP / 2):
         p = (axis + off) * nrm
         ax.plot(*np.array([p - 3 * tan, p + 3 * tan]).T, color="tab:cyan", lw=0.6, ls="--")
     ax.set_aspect("equal")
-    ax.set_xlim(-3.9, 3.9), ax.set_ylim(-3.9, 3.9)
+    ax.set_xlim(-extent, extent), ax.set_ylim(-extent, extent)
     ax.set_xticks([]), ax.set_yticks([])
     return tp, hs
 

@@ -84,18 +84,24 @@ def g6(v):
     return float(f"{v:g}")
 
 
+def materials(kn, friction):
+    """The contact laws of a case's scenes: kn, kt = KT_KN kn and the friction between grains;
+    frictionless walls (smooth platens: the box of biaxial_control.py; unused with a host) and
+    boundary particles (normal springs only)."""
+    kn, kt = g6(kn), g6(KT_KN * kn)
+    return {"grain_grain": {"kn": kn, "kt": kt, "friction_deg": g6(friction)},
+            "grain_wall": {"kn": kn, "kt": kt, "friction_deg": 0},
+            "grain_boundary": {"kn": kn, "kt": 0, "friction_deg": 0}}
+
+
 def host(kn, friction, mesh, cavity, nu, top_bc):
     """The materials and the host of a case's scenes (the run's and the packing's), as a Scene's
     sections; top_bc: the top's boundary condition ("displacement" or {"ux": 0, "ty": 0})."""
-    kn, kt = g6(kn), g6(KT_KN * kn)
-    materials = {"grain_grain": {"kn": kn, "kt": kt, "friction_deg": g6(friction)},
-                 "grain_wall": {"kn": kn, "kt": kt, "friction_deg": 0},     # unused: the host replaces the walls
-                 "grain_boundary": {"kn": kn, "kt": 0, "friction_deg": 0}}
     body = {"mesh": mesh, "elements": {"bottom": 16, "right": 16, "top": 16, "left": 16, "cavity": cavity},
             "material": {"shear_modulus": g6(G), "poisson": g6(nu), "plane": "strain"},
             "boundary": {"bottom": "fixed", "top": top_bc, "left": {"pressure": 0}, "right": {"pressure": 0}},
             "cavity": "cavity"}
-    return {"materials": materials, "host": body}
+    return {"materials": materials(kn, friction), "host": body}
 
 
 def case_scene(name, kn, friction, mesh, cavity, nu, top_bc, a, max_it, dp, top_p, steps, du):
@@ -201,6 +207,19 @@ def pack_args(name):
     return f"--n {n} --phi {phi} --seed {seed} --elements {cavity}"
 
 
+def pack_section(n, phi, seed):
+    """The packing protocol of every case: n discs of radii uniform in [0.75, 1.25] x r0 (r0 set by
+    the target), grown frictionless to the solid fraction phi of the region (gembem pack)."""
+    return {"protocol": "growth", "seed": seed,
+            "sizes": {"uniform": [0.75, 1.25]},   # radii, scaled to the solid fraction
+            "count": n, "solid_fraction": phi}
+
+
+def pack_solver(kn):
+    """The packing's solver: the accuracy 5e-5 kn (the sweep's), the balance of every grain at the end."""
+    return {"method": "global", "accuracy": g6(A_KN * kn)}
+
+
 def pack_scene(name, mesh, radius=2.5):
     """The pack scene of the case (gembem pack -o DIR; the grains of DIR/state_grains.csv) and the
     comment saying what it is: (gembem.Scene, str). The grains are packed frictionless whatever
@@ -210,15 +229,12 @@ def pack_scene(name, mesh, radius=2.5):
     c, sc = ext(name), stat_case(name) or scale_case(name)
     kn = (sc[1] * G if sc is not None else c["kn_g"] * G if c is not None
           else next(k for m, _, _, k in cases() if m == name))
-    usable = radius * (math.cos(math.pi / cavity) - math.sin(math.pi / cavity))
+    usable = usable_radius(cavity, radius)
     polygon = 0.5 * cavity * radius**2 * math.sin(2 * math.pi / cavity)
     nu = c["nu"] if c is not None else NU
     phi_polygon = float(f"{phi * math.pi * usable**2 / polygon:.6f}")
     s = gembem.Scene(units={"length": "cm", "force": "kgf"}, **host(kn, 0, mesh, cavity, nu, "displacement"),
-                     solver={"method": "global", "accuracy": g6(A_KN * kn)},
-                     extra={"pack": {"protocol": "growth", "seed": seed,
-                                     "sizes": {"uniform": [0.75, 1.25]},   # radii, scaled to the solid fraction
-                                     "count": n, "solid_fraction": phi_polygon}})
+                     solver=pack_solver(kn), extra={"pack": pack_section(n, phi_polygon, seed)})
     comment = f"""The localisation study's packing (validation/localisation/study.py writes this pack scene): {name}
 N discs of radii uniform in [0.75, 1.25] x r0 grown by gembem pack (docs/packing.md) into the
 cavity, frictionless, to the solid fraction phi = {phi} of the usable disc (the cavity's radius
@@ -292,18 +308,29 @@ def stat_case(name):
     return None
 
 
+def usable_radius(cavity, radius=2.5):
+    """The radius of the disc the grains fill: the cavity's less the boundary particles' bulge,
+    R cos(pi/m) - R sin(pi/m) with m cavity elements."""
+    return radius * (math.cos(math.pi / cavity) - math.sin(math.pi / cavity))
+
+
 def stat_r0(n=None, cavity=None):
-    """The mean radius of the statistics' grains (n grains, cavity elements: the statistics' by
-    default): phi pi R_u^2 = n pi E[r^2], r uniform in [0.75, 1.25] r0."""
-    n, cavity = n or STAT_N, cavity or STAT_CAVITY
-    usable = 2.5 * (math.cos(math.pi / cavity) - math.sin(math.pi / cavity))
-    return math.sqrt(BASE["phi"] * usable**2 / (n * (1 + 0.25**2 / 3)))
+    """The mean radius of the statistics' grains (n grains, default STAT_N, in a cavity of `cavity`
+    elements, default STAT_CAVITY): phi pi R_u^2 = n pi E[r^2], r uniform in [0.75, 1.25] r0."""
+    usable = usable_radius(cavity or STAT_CAVITY)
+    return math.sqrt(BASE["phi"] * usable**2 / ((n or STAT_N) * (1 + 0.25**2 / 3)))
 
 
 def stat_rolling(kn_g, r0=None):
-    """{kr, eta}: kr = kt R*^2 (beta = 1, docs/scene.md), R* = r0 / 2 between two mean grains."""
+    """{kr, eta}: kr = kt R*^2 (beta = 1, docs/scene.md), R* = r0 / 2 between two mean grains
+    (r0: default the statistics' stat_r0())."""
     kt = KT_KN * kn_g * G
     return {"kr": g6(kt * ((r0 or stat_r0()) / 2)**2), "eta": STAT_ETA}
+
+
+def stat_solver():
+    """The statistics' solver: global, a = STAT_A_REL x each step's mean normal contact force."""
+    return {"method": "global", "accuracy": {"relative": STAT_A_REL}, "max_iterations": 3000}
 
 
 def stat_like_scene(name, case, mesh, n, cavity, steps, follow=None):
@@ -313,7 +340,7 @@ def stat_like_scene(name, case, mesh, n, cavity, steps, follow=None):
     dp = p / STEPS_P
     s = case_scene(name, kn_g * G, BASE["friction"], mesh, cavity, NU, "displacement", 1.0, 3000, dp, None,
                    steps, [0, -STAT_DU])
-    s.solver["accuracy"] = {"relative": STAT_A_REL}
+    s.solver = stat_solver()
     if rolling:
         s.materials["grain_grain"]["rolling"] = stat_rolling(kn_g, stat_r0(n, cavity))
     if follow:
