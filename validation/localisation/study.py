@@ -373,7 +373,9 @@ def scale_case(name):
 
 
 def scale_scene(name, mesh):
-    return stat_like_scene(name, scale_case(name), mesh, SCALE_N, SCALE_CAVITY, SCALE_STEPS, SCALE_FOLLOW)
+    s = stat_like_scene(name, scale_case(name), mesh, SCALE_N, SCALE_CAVITY, SCALE_STEPS, SCALE_FOLLOW)
+    s.output["measures_every"] = 1   # the grains and host fields of every step (off by default from 5 000 grains)
+    return s
 
 
 def write_scene(name, path, mesh, refine=1):
