@@ -473,7 +473,7 @@ def draw_band(ax, sr, m, vmax, extent=3.9, outlines=True):
 def fig_maps(runs, meas):
     """Per case, the run whose band measure is the case's median: the band's window."""
     groups = [g[0] for g in GROUPS]
-    fig, axes = plt.subplots(2, 4, figsize=(13, 7.2))
+    fig, axes = plt.subplots(*((2, 2) if SCALE else (2, 4)), figsize=(10, 10.5) if SCALE else (13, 7.2))
     for ax, grp in zip(axes.ravel(), groups):
         ms = [m for m in meas if m["case"].startswith(grp + "/") and "band" in m]
         if not ms:
