@@ -80,6 +80,7 @@ WINDOW = 5          # steps of 0.01 cm: the window over which the band's strain 
 DANG = 1            # degrees between the band measure's strip directions
 SPIN = 1.0          # radians over a window: a grain turning more is in a mechanism (README)
 NULL_SHUFFLES, NULL_SEED = 5, 20  # the nulls' shuffles (and 4x as many random strips), their seed
+BLOCK_D = 4         # mean diameters: the cells of the profile contrast's block null (network_measures)
 EPISODE = fg.EPISODE  # band measure that counts as a band (0.45, as the extended cases)
 R_USABLE = 2.5 * (math.cos(math.pi / CAVITY) - math.sin(math.pi / CAVITY))
 
@@ -218,6 +219,70 @@ def band_thickness(tri, g, ok, area, ang, axis, d, radius=R_USABLE):
     return width
 
 
+def shuffled(g, ok, area, rng):
+    """NULL_SHUFFLES copies of a window's (strain, area) with the pairs of its triangles (ok)
+    shuffled among their places: the same values without spatial order, the band measures' null.
+    Strain and area together: a sliver's huge strain stays on a sliver's area."""
+    idx = np.nonzero(ok)[0]
+    for _ in range(NULL_SHUFFLES):
+        gs, as_ = g.copy(), area.copy()
+        perm = rng.permutation(idx)
+        gs[idx], as_[idx] = g[perm], area[perm]
+        yield gs, as_
+
+
+def block_shuffled(cx, cy, wa, size, rng):
+    """The points (cx, cy) (areas wa) with the square cells `size` wide that they fill (at least
+    90 % of the cell's area: the window's ragged edge stays in place) moved among each other and
+    turned by a random multiple of 90 deg: the strain's order within a cell kept, beyond it gone."""
+    i, j = np.floor(cx / size).astype(int), np.floor(cy / size).astype(int)
+    cells, inv = np.unique(np.stack([i, j], 1), axis=0, return_inverse=True)
+    inv = inv.ravel()
+    full = np.nonzero(np.bincount(inv, wa) >= 0.9 * size**2)[0]
+    dest, turn = np.arange(len(cells)), np.zeros(len(cells), int)
+    dest[full], turn[full] = full[rng.permutation(len(full))], rng.integers(0, 4, len(full))
+    centre = (cells + 0.5) * size
+    lx, ly = cx - centre[inv, 0], cy - centre[inv, 1]
+    q = turn[inv]
+    for k in (1, 2, 3):   # turned by k quarter turns: (x, y) -> (-y, x), k times
+        m = q >= k
+        lx[m], ly[m] = -ly[m], lx[m].copy()
+    return centre[dest[inv], 0] + lx, centre[dest[inv], 1] + ly
+
+
+def network_measures(tri, g, ok, area, d):
+    """The band measures that see a band network as well as one band, on a window's strain (tri,
+    g, ok, area: figures.accumulated_strain's, ok limited to the measuring window), d the mean
+    grain diameter, as a dict:
+      contrast       figures.profile_contrast in strips PROFILE_D d wide, its largest over the
+                     directions (DANG steps), its direction contrast_ang; contrast_ang2 and
+                     contrast2: the largest at least 30 deg from it (a conjugate family);
+      contrast_null  the same of the window's (strain, area) shuffled among its triangles (the
+                     mean of NULL_SHUFFLES shuffles, as band_null): a field without any order;
+      contrast_block the same with the window's cells BLOCK_D d wide shuffled and turned
+                     (block_shuffled; the mean of NULL_SHUFFLES): a field with the strain's order
+                     over a few grains (the triangles' shared corners, force chains) and none
+                     beyond, so contrast / contrast_block measures the order along bands alone;
+      share_d        figures.strip_share in a strip BAND_D d wide (steps of d/2), its area share
+                     share_d_area, its direction share_d_ang, and its shuffled null share_d_null."""
+    w = fg.PROFILE_D * d
+    c, ang, per = fg.profile_contrast(tri, g, ok, area, w, dang=DANG)
+    ang2, c2 = fg.second_direction(per, dang=DANG)
+    share, ashare, sang = fg.strip_share(tri, g, ok, area, width=fg.BAND_D * d, step=d / 2, dang=DANG)
+    rng = np.random.default_rng(NULL_SEED)
+    cn, sn = [], []
+    for gs, as_ in shuffled(g, ok, area, rng):
+        cn.append(fg.profile_contrast(tri, gs, ok, as_, w, dang=DANG)[0])
+        sn.append(fg.strip_share(tri, gs, ok, as_, width=fg.BAND_D * d, step=d / 2, dang=DANG)[0])
+    t = tri.triangles
+    cx, cy, wg, wa = tri.x[t].mean(1)[ok], tri.y[t].mean(1)[ok], (g * area)[ok], area[ok]
+    cb = [fg.contrast_per_direction(*block_shuffled(cx, cy, wa, BLOCK_D * d, rng), wg, wa, w, DANG).max()
+          for _ in range(NULL_SHUFFLES)]
+    return dict(contrast=c, contrast_ang=ang, contrast_ang2=ang2, contrast2=c2, contrast_null=float(np.mean(cn)),
+                contrast_block=float(np.mean(cb)), share_d=share, share_d_area=ashare, share_d_ang=sang,
+                share_d_null=float(np.mean(sn)))
+
+
 def strip_measures(sr, k0, k1, tri, g, ok, area, ang, axis, radius=R_USABLE, among=None):
     """The measures of a window's band measure strip (direction ang, axis: figures.strip_share's)
     over the window of steps k0-k1 (its strain tri, g, ok, area: figures.accumulated_strain's, ok
@@ -233,15 +298,8 @@ def strip_measures(sr, k0, k1, tri, g, ok, area, ang, axis, radius=R_USABLE, amo
     # the null: the same window's strain values shuffled among its triangles (no spatial order;
     # NULL_SHUFFLES seeded shuffles, their mean): what the band measure gives without a band
     rng = np.random.default_rng(NULL_SEED)
-    idx = np.nonzero(ok)[0]
-    nulls = []
-    for _ in range(NULL_SHUFFLES):
-        # strain and area together (a sliver's huge strain stays on a sliver's area)
-        gs, as_ = g.copy(), area.copy()
-        perm = rng.permutation(idx)
-        gs[idx], as_[idx] = g[perm], area[perm]
-        nulls.append(fg.strip_share(tri, gs, ok, as_, dang=DANG)[0])
-    out["band_null"] = float(np.mean(nulls))
+    out["band_null"] = float(np.mean([fg.strip_share(tri, gs, ok, as_, dang=DANG)[0]
+                                      for gs, as_ in shuffled(g, ok, area, rng)]))
     width = band_thickness(tri, g, ok, area, ang, axis, sr.d, radius)
     out["width"], out["thickness_d"] = width, width / sr.d
     # rotations of the grains in and out of the band over the window
