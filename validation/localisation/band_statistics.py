@@ -36,6 +36,14 @@ cavity wall (wall_strain) <= study.STAT_HOST_STRAIN; with --ring, on the ring at
             meets the cavity (the two wall elements, and the two ring points at 1.5 R, nearest
             each end) over that at the mirror points (x -> -x: the loading is symmetric about
             the vertical axis, so the mirror points see the same loading without the band).
+  network   the band network measures (network_measures; README, the control) on the windows
+            that follow each other without overlap and on the whole allowed travel: the profile
+            contrast (the strain's mean in strips 1 d wide across each direction: std / mean,
+            the largest over the directions) over its block null (the same with the window's
+            cells 4 d wide shuffled and turned) and its shuffled null, its direction families;
+            "a band forms": at least BAND_BLOCK x the block null in two windows in a row, in one
+            direction family to 10 deg (persistent_band); and the
+            share of the strain in the best strip 8 d wide over its shuffled null.
 
 With --scale, the study at scale (study.py scale_cases: 1e4 grains, the host following its
 deformed boundary) over each run's whole travel, no host strain bound: scale.md, scale_runs.csv,
@@ -81,6 +89,7 @@ DANG = 1            # degrees between the band measure's strip directions
 SPIN = 1.0          # radians over a window: a grain turning more is in a mechanism (README)
 NULL_SHUFFLES, NULL_SEED = 5, 20  # the nulls' shuffles (and 4x as many random strips), their seed
 BLOCK_D = 4         # mean diameters: the cells of the profile contrast's block null (network_measures)
+BAND_BLOCK = 1.6    # profile contrast / its block null that counts as a band or a band network (README)
 EPISODE = fg.EPISODE  # band measure that counts as a band (0.45, as the extended cases)
 R_USABLE = 2.5 * (math.cos(math.pi / CAVITY) - math.sin(math.pi / CAVITY))
 
@@ -336,6 +345,52 @@ def strip_measures(sr, k0, k1, tri, g, ok, area, ang, axis, radius=R_USABLE, amo
     return out
 
 
+def angle_apart(a, b):
+    """The angle between two directions [deg] (modulo 180: 0-90)."""
+    x = abs(a - b) % 180
+    return min(x, 180 - x)
+
+
+def persistent_band(net, within=10.0):
+    """The longest run of successive windows (network_measures' dicts, in order) whose profile
+    contrast reaches BAND_BLOCK x its block null in one direction family (the best or the next
+    direction of each window) within `within` degrees of the last's: a band that stays, not a
+    streak that moves. 2 or more: "a band forms"."""
+    longest = run = 0
+    for i, m in enumerate(net):
+        if m["contrast"] < BAND_BLOCK * m["contrast_block"]:
+            run = 0
+        else:
+            p = net[i - 1] if i else None
+            same = p is not None and run > 0 and any(
+                angle_apart(a, b) <= within for a in (m["contrast_ang"], m["contrast_ang2"])
+                for b in (p["contrast_ang"], p["contrast_ang2"]))
+            run = run + 1 if same else 1
+        longest = max(longest, run)
+    return longest
+
+
+def network_run(sr, wins, whole):
+    """The band network measures of a run (network_measures) on its windows that follow each
+    other without overlap (wins: measure's window tuples) and on the whole allowed loading (whole:
+    its tri, g, ok, area), as a dict (NET_KEYS): those of the window with the largest profile
+    contrast over its block null, how many windows reach BAND_BLOCK, the longest run of them in
+    one direction (persistent_band)."""
+    net = [network_measures(tri, g, ok, area, sr.d) for _, _, _, _, _, _, tri, g, ok, area in wins]
+    ratio = [m["contrast"] / m["contrast_block"] for m in net]
+    q = int(np.argmax(ratio))
+    m = net[q]
+    longest = persistent_band(net)
+    mw = network_measures(*whole, sr.d)
+    return dict(net_ratio=ratio[q], net_ratio_shuffled=m["contrast"] / m["contrast_null"], net_contrast=m["contrast"],
+                net_ang=m["contrast_ang"], net_ang2=m["contrast_ang2"], net_ratio2=m["contrast2"] / m["contrast_block"],
+                net_travel=float(sr.travel[wins[q][1]]), net_windows=len(net),
+                net_band_windows=sum(r >= BAND_BLOCK for r in ratio), net_longest=longest,
+                net_whole_ratio=mw["contrast"] / mw["contrast_block"],
+                share_d_ratio=max(n["share_d"] / n["share_d_null"] for n in net),
+                share_d_whole_ratio=mw["share_d"] / mw["share_d_null"])
+
+
 def measure(sr):
     """The measures of one run (a dict; None where the allowed steps hold no full window)."""
     out = {"case": sr.name, "travel": float(sr.travel[sr.last]), "last": sr.last, "d": sr.d}
@@ -369,6 +424,7 @@ def measure(sr):
     # the whole allowed loading's band measure
     tri_a, g_a, ok_a, area_a, _ = fg.accumulated_strain(sr, sr.first_top, sr.last)
     out["band_whole"] = fg.strip_share(tri_a, g_a, ok_a, area_a, dang=DANG)[0]
+    out.update(network_run(sr, wins[::win], (tri_a, g_a, ok_a, area_a)))
     # stress, dilatancy, orientation
     s = zone_stress(sr.r, k1)
     s1, s3, dir1 = principal(s[0, 0], s[1, 1], s[0, 1])   # s1 >= s3 (tension +): s3 most compressive
@@ -460,9 +516,30 @@ KEYS = [("travel", "top's travel within the allowed host strain [cm]", "{:.3f}")
         ("host_end_mean", "the same / the ring's mean", "{:.2f}")]
 
 
+# the band network measures (network_run), in the table after the others and at the end of the CSV
+NET_KEYS = [("net_ratio", "profile contrast / its block null, largest over the windows (without overlap)", "{:.2f}"),
+            ("net_ratio_shuffled", "the same window's profile contrast / its shuffled null", "{:.2f}"),
+            ("net_ratio2", "the same window's next direction family: contrast / block null", "{:.2f}"),
+            ("net_travel", "that window's end: travel [cm]", "{:.3f}"),
+            ("net_band_windows", f"windows with profile contrast >= {BAND_BLOCK} x block null", "{:.1f}"),
+            ("net_windows", "windows without overlap", "{:.1f}"),
+            ("net_whole_ratio", "profile contrast / block null of the whole travel", "{:.2f}"),
+            ("share_d_ratio", f"{fg.BAND_D:g} d strip share / its shuffled null, largest over the windows", "{:.2f}"),
+            ("share_d_whole_ratio", f"{fg.BAND_D:g} d strip share / its null of the whole travel", "{:.2f}")]
+
+
 def case_label(group):
     _, k, p, r = next(g for g in GROUPS if g[0] == group)
     return f"kn/G {k:g} cm, P {p:g}, {'rolling' if r else 'no rolling'}"
+
+
+def mean_row(by, groups, key, label, fmt):
+    """A table row: the key's mean +- sd (count) over each group's runs (by: group -> rows)."""
+    cells = []
+    for g in groups:
+        v = np.array([r[key] for r in by[g] if key in r and np.isfinite(r[key])])
+        cells.append(f"{fmt.format(v.mean())} +- {fmt.format(v.std(ddof=1))} ({len(v)})" if len(v) > 1 else "")
+    return f"| {label} | " + " | ".join(cells) + " |"
 
 
 def table(rows):
@@ -482,12 +559,7 @@ def table(rows):
                  + " |")
     lines.append("| runs with the onset's strain peak within 3 d of the wall | "
                  + " | ".join(str(sum(r.get("onset_wall_d", 99) <= 3 for r in by[g])) for g in groups) + " |")
-    for key, label, fmt in KEYS:
-        cells = []
-        for g in groups:
-            v = np.array([r[key] for r in by[g] if key in r and np.isfinite(r[key])])
-            cells.append(f"{fmt.format(v.mean())} +- {fmt.format(v.std(ddof=1))} ({len(v)})" if len(v) > 1 else "")
-        lines.append(f"| {label} | " + " | ".join(cells) + " |")
+    lines += [mean_row(by, groups, *k) for k in KEYS]
     # the measured orientation against each prediction: mean (sd) of the difference
     for key, name in (("theta_mc", "MC"), ("theta_r", "R"), ("theta_a", "A")):
         cells = []
@@ -495,6 +567,12 @@ def table(rows):
             v = np.array([r["theta"] - r[key] for r in by[g] if "theta" in r])
             cells.append(f"{v.mean():+.1f} +- {v.std(ddof=1):.1f} ({len(v)})" if len(v) > 1 else "")
         lines.append(f"| theta - theta_{name} [deg] | " + " | ".join(cells) + " |")
+    # the band network measures (after the others: their rows stay where they were)
+    lines.append(f"| runs with profile contrast >= {BAND_BLOCK} x its block null in a window | "
+                 + " | ".join(str(sum(r.get("net_band_windows", 0) >= 1 for r in by[g])) for g in groups) + " |")
+    lines.append("| runs with it in two windows in a row, in one direction to 10 deg (a band forms) | "
+                 + " | ".join(str(sum(r.get("net_longest", 0) >= 2 for r in by[g])) for g in groups) + " |")
+    lines += [mean_row(by, groups, *k) for k in NET_KEYS]
     legend = "\n".join(f"- `{g}`: {case_label(g)}" for g in groups)
     where = ("on the cavity wall" if BOUND_AT == "wall" else "on the ring at 1.5 R (the wall's reaches about twice "
              "as much)")
@@ -618,6 +696,7 @@ def main():
     with open(os.path.join(HERE, f"{OUT}.md"), "w") as f:
         f.write(table(meas))
     keys = [k for k, _, _ in KEYS] + ["window", "spinning", "rattlers", "strip_ang", "ang", "minor_dir", "axis", "onset_travel", "d"]
+    keys += [k for k, _, _ in NET_KEYS] + ["net_contrast", "net_ang", "net_ang2", "net_longest"]
     with open(os.path.join(HERE, f"{OUT}_runs.csv"), "w") as f:
         f.write("case," + ",".join(keys) + "\n")
         for m in meas:

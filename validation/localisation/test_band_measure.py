@@ -26,8 +26,8 @@ strips, its triangle-shuffled and block-shuffled nulls) at the study at scale's 
 0.044 cm, 10 800 centres in the disc) on a background of independent grain displacements (its
 strain's median half the bands' peak): one band of 8 d at 35 deg, two conjugate bands of 8 d at 55
 and 125 deg, a network of eight bands of 2 d (four at 40 deg, four at 140, 0.8 cm = 18 d apart),
-and no band. Each band field must give at least BAND_BLOCK = 1.6 times the block null (and twice
-the shuffled null) in each of its directions (to 3 degrees; the conjugate and the network: the
+and no band. Each band field must give at least band_statistics.BAND_BLOCK = 1.6 times the block
+null (and twice the shuffled null) in each of its directions (to 3 degrees; the conjugate and the network: the
 first and the second family); no band must stay below 1.2 times the block null and 1.4 times the
 shuffled one. Measured (seeds 5-7): one band 2.9-3.0 x block, conjugate 2.2-2.3, network 2.1-2.3,
 no band 1.01-1.04 (1.17-1.23 x shuffled: neighbouring triangles share corners, so even a field
@@ -52,7 +52,6 @@ ANGLE, AXIS, FWHM_D, GAMMA, D = 35.0, 0.3, 8.0, 0.01, 0.14
 HALF = 2.4                        # the disc's radius, the square's half side [cm]
 WALL_FWHM_D, WALL_GAMMA = 1.0, 10 * GAMMA
 ND, NOISE = 0.044, 0.2            # network(): the study at scale's grain size (10 000 grains), the noise
-BAND_BLOCK = 1.6                  # network(): a band's profile contrast over its block null, at least
 
 
 def shear_profile(s, fwhm, gamma):
@@ -197,12 +196,6 @@ class Field:
         self.radii = np.full(len(p), ND / 2)
 
 
-def apart(a, b):
-    """Two directions' difference modulo 180 deg (0-90)."""
-    x = abs(a - b) % 180
-    return min(x, 180 - x)
-
-
 def network(tmp):
     """band_statistics.network_measures (the profile contrast and its nulls) at the study at
     scale's grain size: one band, two conjugate bands, a network of thin bands, no band."""
@@ -221,13 +214,13 @@ def network(tmp):
               f"block null; {fg.BAND_D:g} d strip share {m['share_d']:.3f}, {m['share_d'] / m['share_d_null']:.2f} x "
               f"its null at {m['share_d_ang']:.0f} deg")
         found = [m["contrast_ang"], m["contrast_ang2"]][:len(dirs)]
-        if dirs and not (block_r >= BAND_BLOCK and tri_r >= 2):
+        if dirs and not (block_r >= bs.BAND_BLOCK and tri_r >= 2):
             errors.append(f"{name} against its nulls")
         if not dirs and not (block_r < 1.2 and tri_r < 1.4):
             errors.append("no band: not at its nulls")
-        if any(min(apart(f, a) for f in found) > 3 for a in dirs):
+        if any(min(bs.angle_apart(f, a) for f in found) > 3 for a in dirs):
             errors.append(f"{name}: directions")
-        if len(dirs) == 2 and not m["contrast2"] / m["contrast_block"] >= BAND_BLOCK:
+        if len(dirs) == 2 and not m["contrast2"] / m["contrast_block"] >= bs.BAND_BLOCK:
             errors.append(f"{name}: the second family against the block null")
     return ["network: " + e for e in errors]
 
