@@ -181,6 +181,7 @@ def figure(br, rows, whole, path):
              label="profile contrast / shuffled null")
     ax2.axhline(bs.BAND_BLOCK, color="tab:purple", lw=0.6, ls="--")
     ax2.set_ylim(0, None)
+    ax2.set_ylabel("profile contrast / null (dashed: a band)", fontsize=8)
     ax2.legend(fontsize=7, loc="lower right")
     ext = 0.5 * max(s["width"][br.last], s["height"][br.last]) * 1.02
     top = max(rows, key=lambda m: m["band"] / m["band_null"])

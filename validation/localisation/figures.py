@@ -534,7 +534,7 @@ BAND_D = 8.0     # mean grain diameters: the strip of the band measure in d (a s
 def profile_contrast(tri, gamma, ok, area, width, dang=1):
     """The band network measure: across each direction (`dang` degree steps; triangles by their
     centroids) the profile of the area-weighted mean strain in strips `width` wide, its contrast
-    std / mean (the strips weighted by their area, so that the window's thin ends count little).
+    std / mean over the strips at least half as long as the longest (weighted by their area).
     Bands parallel to a direction, one or a network of them, make its profile peak at each band;
     a field without order has a contrast that falls as the strips hold more triangles.
     Returns (the largest contrast, its direction [deg from +x], the contrast per direction)."""
@@ -550,16 +550,18 @@ def contrast_per_direction(cx, cy, wg, wa, width, dang=1):
     angs = np.arange(0, 180, dang)
     if wg.sum() <= 0:
         return np.zeros(len(angs))
-    mean = wg.sum() / wa.sum()
     c = np.empty(len(angs))
     for i, ang in enumerate(angs):
         th = math.radians(ang)
         pr = -cx * math.sin(th) + cy * math.cos(th)   # across the direction, as strip_share
         b = ((pr - pr.min()) / width).astype(int)
         sg, sa = np.bincount(b, wg), np.bincount(b, wa)
-        nz = sa > 0
-        var = np.sum(sg[nz]**2 / sa[nz]) / wa.sum() - mean**2   # sum_i a_i (m_i - mean)^2 / sum a_i
-        c[i] = math.sqrt(max(var, 0.0)) / mean
+        # the strips at least half as long as the longest: the window's thin ends left out (a
+        # sliver's huge strain on the edge makes its short strip's mean anything)
+        k = sa >= 0.5 * sa.max()
+        mean = sg[k].sum() / sa[k].sum()
+        var = np.sum(sg[k]**2 / sa[k]) / sa[k].sum() - mean**2   # sum_i a_i (m_i - mean)^2 / sum a_i
+        c[i] = math.sqrt(max(var, 0.0)) / mean if mean > 0 else 0.0
     return c
 
 
