@@ -42,7 +42,7 @@ cavity wall (wall_strain) <= study.STAT_HOST_STRAIN; with --ring, on the ring at
             the largest over the directions) over its block null (the same with the window's
             cells 4 d wide shuffled and turned) and its shuffled null, its direction families;
             "a band forms": at least BAND_BLOCK x the block null in two windows in a row, in one
-            direction family to 10 deg (persistent_band); and the
+            direction (or its mirror image about the vertical) to 15 deg (persistent_band); and the
             share of the strain in the best strip 8 d wide over its shuffled null.
 
 With --scale, the study at scale (study.py scale_cases: 1e4 grains, the host following its
@@ -351,20 +351,19 @@ def angle_apart(a, b):
     return min(x, 180 - x)
 
 
-def persistent_band(net, within=10.0):
+def persistent_band(net, within=15.0):
     """The longest run of successive windows (network_measures' dicts, in order) whose profile
-    contrast reaches BAND_BLOCK x its block null in one direction family (the best or the next
-    direction of each window) within `within` degrees of the last's: a band that stays, not a
-    streak that moves. 2 or more: "a band forms"."""
+    contrast reaches BAND_BLOCK x its block null, each window's direction within `within` degrees
+    of the last's or of its mirror image about the vertical (the loading's axis: a conjugate
+    network's best family may swap from window to window): bands that stay, not streaks that move.
+    2 or more: "a band forms"."""
     longest = run = 0
     for i, m in enumerate(net):
         if m["contrast"] < BAND_BLOCK * m["contrast_block"]:
             run = 0
         else:
-            p = net[i - 1] if i else None
-            same = p is not None and run > 0 and any(
-                angle_apart(a, b) <= within for a in (m["contrast_ang"], m["contrast_ang2"])
-                for b in (p["contrast_ang"], p["contrast_ang2"]))
+            a, b = m["contrast_ang"], net[i - 1]["contrast_ang"] if i else None
+            same = run > 0 and min(angle_apart(a, b), angle_apart(a, 180 - b)) <= within
             run = run + 1 if same else 1
         longest = max(longest, run)
     return longest
@@ -570,7 +569,7 @@ def table(rows):
     # the band network measures (after the others: their rows stay where they were)
     lines.append(f"| runs with profile contrast >= {BAND_BLOCK} x its block null in a window | "
                  + " | ".join(str(sum(r.get("net_band_windows", 0) >= 1 for r in by[g])) for g in groups) + " |")
-    lines.append("| runs with it in two windows in a row, in one direction to 10 deg (a band forms) | "
+    lines.append("| runs with it in two windows in a row, in one direction to 15 deg (a band forms) | "
                  + " | ".join(str(sum(r.get("net_longest", 0) >= 2 for r in by[g])) for g in groups) + " |")
     lines += [mean_row(by, groups, *k) for k in NET_KEYS]
     legend = "\n".join(f"- `{g}`: {case_label(g)}" for g in groups)

@@ -146,7 +146,7 @@ def table(br, rows, whole):
             f"q/p at the end {s['stress_ratio'][br.last]:.3f}.\n\n")
     nb = sum(m["contrast"] >= bs.BAND_BLOCK * m["contrast_block"] for m in rows)
     head += (f"Profile contrast >= {bs.BAND_BLOCK} x its block null in {nb} of {len(rows)} windows; the longest run of "
-             f"them in one direction (to 10 deg): {bs.persistent_band(rows)} windows (a band forms: 2 or more).\n\n")
+             f"them in one direction (to 15 deg, or its mirror image): {bs.persistent_band(rows)} windows (a band forms: 2 or more).\n\n")
     lines = ["| " + " | ".join(label for _, label in COLUMNS) + " |", "|" + "---|" * len(COLUMNS)]
     for m in rows + [whole]:
         lines.append("| " + " | ".join(cell(m, k) for k, _ in COLUMNS) + " |")

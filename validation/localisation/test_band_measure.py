@@ -222,6 +222,13 @@ def network(tmp):
             errors.append(f"{name}: directions")
         if len(dirs) == 2 and not m["contrast2"] / m["contrast_block"] >= bs.BAND_BLOCK:
             errors.append(f"{name}: the second family against the block null")
+    # persistent_band on windows counted by hand: ratios 1.7 (>= 1.6) but the fourth; directions
+    # 130, 52 (130's mirror 50: the same family), 60 (8 from 52), -, 40, 90 (50 from 40 and 140):
+    # runs of 3, then 1 and 1
+    wins = [{"contrast": 1.7 if r else 1.0, "contrast_block": 1.0, "contrast_ang": a}
+            for r, a in ((1, 130), (1, 52), (1, 60), (0, 0), (1, 40), (1, 90))]
+    if bs.persistent_band(wins) != 3:
+        errors.append(f"persistent_band: {bs.persistent_band(wins)} windows (3)")
     return ["network: " + e for e in errors]
 
 
