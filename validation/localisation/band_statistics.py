@@ -36,6 +36,14 @@ cavity wall (wall_strain) <= study.STAT_HOST_STRAIN; with --ring, on the ring at
             meets the cavity (the two wall elements, and the two ring points at 1.5 R, nearest
             each end) over that at the mirror points (x -> -x: the loading is symmetric about
             the vertical axis, so the mirror points see the same loading without the band).
+  network   the band network measures (network_measures; README, the control) on the windows
+            that follow each other without overlap and on the whole allowed travel: the profile
+            contrast (the strain's mean in strips 1 d wide across each direction: std / mean,
+            the largest over the directions) over its block null (the same with the window's
+            cells 4 d wide shuffled and turned) and its shuffled null, its direction families;
+            "a band forms": at least BAND_BLOCK x the block null in two windows in a row, in one
+            direction (or its mirror image about the vertical) to 15 deg (persistent_band); and the
+            share of the strain in the best strip 8 d wide over its shuffled null.
 
 With --scale, the study at scale (study.py scale_cases: 1e4 grains, the host following its
 deformed boundary) over each run's whole travel, no host strain bound: scale.md, scale_runs.csv,
@@ -80,6 +88,8 @@ WINDOW = 5          # steps of 0.01 cm: the window over which the band's strain 
 DANG = 1            # degrees between the band measure's strip directions
 SPIN = 1.0          # radians over a window: a grain turning more is in a mechanism (README)
 NULL_SHUFFLES, NULL_SEED = 5, 20  # the nulls' shuffles (and 4x as many random strips), their seed
+BLOCK_D = 4         # mean diameters: the cells of the profile contrast's block null (network_measures)
+BAND_BLOCK = 1.6    # profile contrast / its block null that counts as a band or a band network (README)
 EPISODE = fg.EPISODE  # band measure that counts as a band (0.45, as the extended cases)
 R_USABLE = 2.5 * (math.cos(math.pi / CAVITY) - math.sin(math.pi / CAVITY))
 
@@ -218,6 +228,70 @@ def band_thickness(tri, g, ok, area, ang, axis, d, radius=R_USABLE):
     return width
 
 
+def shuffled(g, ok, area, rng):
+    """NULL_SHUFFLES copies of a window's (strain, area) with the pairs of its triangles (ok)
+    shuffled among their places: the same values without spatial order, the band measures' null.
+    Strain and area together: a sliver's huge strain stays on a sliver's area."""
+    idx = np.nonzero(ok)[0]
+    for _ in range(NULL_SHUFFLES):
+        gs, as_ = g.copy(), area.copy()
+        perm = rng.permutation(idx)
+        gs[idx], as_[idx] = g[perm], area[perm]
+        yield gs, as_
+
+
+def block_shuffled(cx, cy, wa, size, rng):
+    """The points (cx, cy) (areas wa) with the square cells `size` wide that they fill (at least
+    90 % of the cell's area: the window's ragged edge stays in place) moved among each other and
+    turned by a random multiple of 90 deg: the strain's order within a cell kept, beyond it gone."""
+    i, j = np.floor(cx / size).astype(int), np.floor(cy / size).astype(int)
+    cells, inv = np.unique(np.stack([i, j], 1), axis=0, return_inverse=True)
+    inv = inv.ravel()
+    full = np.nonzero(np.bincount(inv, wa) >= 0.9 * size**2)[0]
+    dest, turn = np.arange(len(cells)), np.zeros(len(cells), int)
+    dest[full], turn[full] = full[rng.permutation(len(full))], rng.integers(0, 4, len(full))
+    centre = (cells + 0.5) * size
+    lx, ly = cx - centre[inv, 0], cy - centre[inv, 1]
+    q = turn[inv]
+    for k in (1, 2, 3):   # turned by k quarter turns: (x, y) -> (-y, x), k times
+        m = q >= k
+        lx[m], ly[m] = -ly[m], lx[m].copy()
+    return centre[dest[inv], 0] + lx, centre[dest[inv], 1] + ly
+
+
+def network_measures(tri, g, ok, area, d):
+    """The band measures that see a band network as well as one band, on a window's strain (tri,
+    g, ok, area: figures.accumulated_strain's, ok limited to the measuring window), d the mean
+    grain diameter, as a dict:
+      contrast       figures.profile_contrast in strips PROFILE_D d wide, its largest over the
+                     directions (DANG steps), its direction contrast_ang; contrast_ang2 and
+                     contrast2: the largest at least 30 deg from it (a conjugate family);
+      contrast_null  the same of the window's (strain, area) shuffled among its triangles (the
+                     mean of NULL_SHUFFLES shuffles, as band_null): a field without any order;
+      contrast_block the same with the window's cells BLOCK_D d wide shuffled and turned
+                     (block_shuffled; the mean of NULL_SHUFFLES): a field with the strain's order
+                     over a few grains (the triangles' shared corners, force chains) and none
+                     beyond, so contrast / contrast_block measures the order along bands alone;
+      share_d        figures.strip_share in a strip BAND_D d wide (steps of d/2), its area share
+                     share_d_area, its direction share_d_ang, and its shuffled null share_d_null."""
+    w = fg.PROFILE_D * d
+    c, ang, per = fg.profile_contrast(tri, g, ok, area, w, dang=DANG)
+    ang2, c2 = fg.second_direction(per, dang=DANG)
+    share, ashare, sang = fg.strip_share(tri, g, ok, area, width=fg.BAND_D * d, step=d / 2, dang=DANG)
+    rng = np.random.default_rng(NULL_SEED)
+    cn, sn = [], []
+    for gs, as_ in shuffled(g, ok, area, rng):
+        cn.append(fg.profile_contrast(tri, gs, ok, as_, w, dang=DANG)[0])
+        sn.append(fg.strip_share(tri, gs, ok, as_, width=fg.BAND_D * d, step=d / 2, dang=DANG)[0])
+    t = tri.triangles
+    cx, cy, wg, wa = tri.x[t].mean(1)[ok], tri.y[t].mean(1)[ok], (g * area)[ok], area[ok]
+    cb = [fg.contrast_per_direction(*block_shuffled(cx, cy, wa, BLOCK_D * d, rng), wg, wa, w, DANG).max()
+          for _ in range(NULL_SHUFFLES)]
+    return dict(contrast=c, contrast_ang=ang, contrast_ang2=ang2, contrast2=c2, contrast_null=float(np.mean(cn)),
+                contrast_block=float(np.mean(cb)), share_d=share, share_d_area=ashare, share_d_ang=sang,
+                share_d_null=float(np.mean(sn)))
+
+
 def strip_measures(sr, k0, k1, tri, g, ok, area, ang, axis, radius=R_USABLE, among=None):
     """The measures of a window's band measure strip (direction ang, axis: figures.strip_share's)
     over the window of steps k0-k1 (its strain tri, g, ok, area: figures.accumulated_strain's, ok
@@ -233,15 +307,8 @@ def strip_measures(sr, k0, k1, tri, g, ok, area, ang, axis, radius=R_USABLE, amo
     # the null: the same window's strain values shuffled among its triangles (no spatial order;
     # NULL_SHUFFLES seeded shuffles, their mean): what the band measure gives without a band
     rng = np.random.default_rng(NULL_SEED)
-    idx = np.nonzero(ok)[0]
-    nulls = []
-    for _ in range(NULL_SHUFFLES):
-        # strain and area together (a sliver's huge strain stays on a sliver's area)
-        gs, as_ = g.copy(), area.copy()
-        perm = rng.permutation(idx)
-        gs[idx], as_[idx] = g[perm], area[perm]
-        nulls.append(fg.strip_share(tri, gs, ok, as_, dang=DANG)[0])
-    out["band_null"] = float(np.mean(nulls))
+    out["band_null"] = float(np.mean([fg.strip_share(tri, gs, ok, as_, dang=DANG)[0]
+                                      for gs, as_ in shuffled(g, ok, area, rng)]))
     width = band_thickness(tri, g, ok, area, ang, axis, sr.d, radius)
     out["width"], out["thickness_d"] = width, width / sr.d
     # rotations of the grains in and out of the band over the window
@@ -278,6 +345,51 @@ def strip_measures(sr, k0, k1, tri, g, ok, area, ang, axis, radius=R_USABLE, amo
     return out
 
 
+def angle_apart(a, b):
+    """The angle between two directions [deg] (modulo 180: 0-90)."""
+    x = abs(a - b) % 180
+    return min(x, 180 - x)
+
+
+def persistent_band(net, within=15.0):
+    """The longest run of successive windows (network_measures' dicts, in order) whose profile
+    contrast reaches BAND_BLOCK x its block null, each window's direction within `within` degrees
+    of the last's or of its mirror image about the vertical (the loading's axis: a conjugate
+    network's best family may swap from window to window): bands that stay, not streaks that move.
+    2 or more: "a band forms"."""
+    longest = run = 0
+    for i, m in enumerate(net):
+        if m["contrast"] < BAND_BLOCK * m["contrast_block"]:
+            run = 0
+        else:
+            a, b = m["contrast_ang"], net[i - 1]["contrast_ang"] if i else None
+            same = run > 0 and min(angle_apart(a, b), angle_apart(a, 180 - b)) <= within
+            run = run + 1 if same else 1
+        longest = max(longest, run)
+    return longest
+
+
+def network_run(sr, wins, whole):
+    """The band network measures of a run (network_measures) on its windows that follow each
+    other without overlap (wins: measure's window tuples) and on the whole allowed loading (whole:
+    its tri, g, ok, area), as a dict (NET_KEYS): those of the window with the largest profile
+    contrast over its block null, how many windows reach BAND_BLOCK, the longest run of them in
+    one direction (persistent_band)."""
+    net = [network_measures(tri, g, ok, area, sr.d) for _, _, _, _, _, _, tri, g, ok, area in wins]
+    ratio = [m["contrast"] / m["contrast_block"] for m in net]
+    q = int(np.argmax(ratio))
+    m = net[q]
+    longest = persistent_band(net)
+    mw = network_measures(*whole, sr.d)
+    return dict(net_ratio=ratio[q], net_ratio_shuffled=m["contrast"] / m["contrast_null"], net_contrast=m["contrast"],
+                net_ang=m["contrast_ang"], net_ang2=m["contrast_ang2"], net_ratio2=m["contrast2"] / m["contrast_block"],
+                net_travel=float(sr.travel[wins[q][1]]), net_windows=len(net),
+                net_band_windows=sum(r >= BAND_BLOCK for r in ratio), net_longest=longest,
+                net_whole_ratio=mw["contrast"] / mw["contrast_block"],
+                share_d_ratio=max(n["share_d"] / n["share_d_null"] for n in net),
+                share_d_whole_ratio=mw["share_d"] / mw["share_d_null"])
+
+
 def measure(sr):
     """The measures of one run (a dict; None where the allowed steps hold no full window)."""
     out = {"case": sr.name, "travel": float(sr.travel[sr.last]), "last": sr.last, "d": sr.d}
@@ -311,6 +423,7 @@ def measure(sr):
     # the whole allowed loading's band measure
     tri_a, g_a, ok_a, area_a, _ = fg.accumulated_strain(sr, sr.first_top, sr.last)
     out["band_whole"] = fg.strip_share(tri_a, g_a, ok_a, area_a, dang=DANG)[0]
+    out.update(network_run(sr, wins[::win], (tri_a, g_a, ok_a, area_a)))
     # stress, dilatancy, orientation
     s = zone_stress(sr.r, k1)
     s1, s3, dir1 = principal(s[0, 0], s[1, 1], s[0, 1])   # s1 >= s3 (tension +): s3 most compressive
@@ -402,9 +515,30 @@ KEYS = [("travel", "top's travel within the allowed host strain [cm]", "{:.3f}")
         ("host_end_mean", "the same / the ring's mean", "{:.2f}")]
 
 
+# the band network measures (network_run), in the table after the others and at the end of the CSV
+NET_KEYS = [("net_ratio", "profile contrast / its block null, largest over the windows (without overlap)", "{:.2f}"),
+            ("net_ratio_shuffled", "the same window's profile contrast / its shuffled null", "{:.2f}"),
+            ("net_ratio2", "the same window's next direction family: contrast / block null", "{:.2f}"),
+            ("net_travel", "that window's end: travel [cm]", "{:.3f}"),
+            ("net_band_windows", f"windows with profile contrast >= {BAND_BLOCK} x block null", "{:.1f}"),
+            ("net_windows", "windows without overlap", "{:.1f}"),
+            ("net_whole_ratio", "profile contrast / block null of the whole travel", "{:.2f}"),
+            ("share_d_ratio", f"{fg.BAND_D:g} d strip share / its shuffled null, largest over the windows", "{:.2f}"),
+            ("share_d_whole_ratio", f"{fg.BAND_D:g} d strip share / its null of the whole travel", "{:.2f}")]
+
+
 def case_label(group):
     _, k, p, r = next(g for g in GROUPS if g[0] == group)
     return f"kn/G {k:g} cm, P {p:g}, {'rolling' if r else 'no rolling'}"
+
+
+def mean_row(by, groups, key, label, fmt):
+    """A table row: the key's mean +- sd (count) over each group's runs (by: group -> rows)."""
+    cells = []
+    for g in groups:
+        v = np.array([r[key] for r in by[g] if key in r and np.isfinite(r[key])])
+        cells.append(f"{fmt.format(v.mean())} +- {fmt.format(v.std(ddof=1))} ({len(v)})" if len(v) > 1 else "")
+    return f"| {label} | " + " | ".join(cells) + " |"
 
 
 def table(rows):
@@ -424,12 +558,7 @@ def table(rows):
                  + " |")
     lines.append("| runs with the onset's strain peak within 3 d of the wall | "
                  + " | ".join(str(sum(r.get("onset_wall_d", 99) <= 3 for r in by[g])) for g in groups) + " |")
-    for key, label, fmt in KEYS:
-        cells = []
-        for g in groups:
-            v = np.array([r[key] for r in by[g] if key in r and np.isfinite(r[key])])
-            cells.append(f"{fmt.format(v.mean())} +- {fmt.format(v.std(ddof=1))} ({len(v)})" if len(v) > 1 else "")
-        lines.append(f"| {label} | " + " | ".join(cells) + " |")
+    lines += [mean_row(by, groups, *k) for k in KEYS]
     # the measured orientation against each prediction: mean (sd) of the difference
     for key, name in (("theta_mc", "MC"), ("theta_r", "R"), ("theta_a", "A")):
         cells = []
@@ -437,6 +566,12 @@ def table(rows):
             v = np.array([r["theta"] - r[key] for r in by[g] if "theta" in r])
             cells.append(f"{v.mean():+.1f} +- {v.std(ddof=1):.1f} ({len(v)})" if len(v) > 1 else "")
         lines.append(f"| theta - theta_{name} [deg] | " + " | ".join(cells) + " |")
+    # the band network measures (after the others: their rows stay where they were)
+    lines.append(f"| runs with profile contrast >= {BAND_BLOCK} x its block null in a window | "
+                 + " | ".join(str(sum(r.get("net_band_windows", 0) >= 1 for r in by[g])) for g in groups) + " |")
+    lines.append("| runs with it in two windows in a row, in one direction to 15 deg (a band forms) | "
+                 + " | ".join(str(sum(r.get("net_longest", 0) >= 2 for r in by[g])) for g in groups) + " |")
+    lines += [mean_row(by, groups, *k) for k in NET_KEYS]
     legend = "\n".join(f"- `{g}`: {case_label(g)}" for g in groups)
     where = ("on the cavity wall" if BOUND_AT == "wall" else "on the ring at 1.5 R (the wall's reaches about twice "
              "as much)")
@@ -560,6 +695,7 @@ def main():
     with open(os.path.join(HERE, f"{OUT}.md"), "w") as f:
         f.write(table(meas))
     keys = [k for k, _, _ in KEYS] + ["window", "spinning", "rattlers", "strip_ang", "ang", "minor_dir", "axis", "onset_travel", "d"]
+    keys += [k for k, _, _ in NET_KEYS] + ["net_contrast", "net_ang", "net_ang2", "net_longest"]
     with open(os.path.join(HERE, f"{OUT}_runs.csv"), "w") as f:
         f.write("case," + ",".join(keys) + "\n")
         for m in meas:

@@ -19,8 +19,13 @@ the measuring window and the stress differ from the cavity's:
             deg, against theta_MC = 45 + phi/2 and theta_R = 45 + psi/2, sin psi = -(de1 + de2) /
             (de1 - de2) of the walls' strain over the window (compression +, psi > 0 dilation).
 
-Usage: validation/localisation/box_bands.py DIR      (DIR of biaxial_control.py: DIR/run, DIR/grains.csv)
-Writes DIR/bands.md (the table), DIR/bands.csv and DIR/bands.png (the stress ratio and band
+With them, per window, band_statistics.network_measures: the profile contrast across strips 1 d
+wide (the largest over the directions, and the next family's), over its block null (bold where
+it reaches band_statistics.BAND_BLOCK: a band or a band network) and its shuffled null, and the
+share of the strain in the best strip 8 d wide over its shuffled null.
+
+Usage: validation/localisation/box_bands.py DIR [OUT]  (DIR of biaxial_control.py: DIR/run, DIR/grains.csv)
+Writes OUT/bands.md (the table), OUT/bands.csv and OUT/bands.png (OUT: DIR unless given; the stress ratio and band
 measures along the path; the strain with the strip of the window whose band measure is the most
 above its null, of the last window and of the whole travel)."""
 import math
@@ -90,6 +95,7 @@ def window_measures(br, k0, k1):
     share, ashare, ang, axis = fg.strip_share(tri, g, ok, area, offset=True, dang=bs.DANG)
     out = {"k0": k0, "k1": k1, "e1": br.s["e1"][k1], "band": share, "band_area": ashare, "strip_ang": ang}
     out.update(bs.strip_measures(br, k0, k1, tri, g, ok, area, ang, axis, radius=math.hypot(hw, hh), among=among))
+    out.update(bs.network_measures(tri, g, ok, area, br.d))
     del out["width"]
     s = br.s
     out["q_p"] = s["stress_ratio"][k1]
@@ -105,7 +111,10 @@ COLUMNS = [("steps", "steps"), ("e1", "e1 at end [%]"), ("q_p", "q/p at end"), (
            ("band_null", "shuffled null"), ("ratio", "band / null"), ("band_area", "strip's area share"),
            ("thickness_d", "thickness [d]"), ("ang", "direction [deg from +x]"), ("theta", "to horizontal [deg]"),
            ("theta_mc", "theta_MC"), ("theta_r", "theta_R"), ("rot_ratio_med", "rotation ratio (medians)"),
-           ("rot_ratio_med_null", "its null")]
+           ("rot_ratio_med_null", "its null"), ("contrast", "profile contrast"),
+           ("contrast_block", "its block null"), ("contrast_null", "its shuffled null"),
+           ("contrast_ratio", "contrast / block null"), ("contrast_dirs", "contrast's directions [deg from +x]"),
+           ("share_d", f"{fg.BAND_D:g} d strip share"), ("share_d_ratio", "/ its null")]
 
 
 def cell(m, key):
@@ -113,6 +122,11 @@ def cell(m, key):
         return f"{m['k0']}-{m['k1']}"
     if key == "ratio":
         return f"{m['band'] / m['band_null']:.2f}"
+    if key in ("contrast_ratio", "share_d_ratio"):
+        v = m["contrast"] / m["contrast_block"] if key == "contrast_ratio" else m["share_d"] / m["share_d_null"]
+        return f"**{v:.2f}**" if key == "contrast_ratio" and v >= bs.BAND_BLOCK else f"{v:.2f}"
+    if key == "contrast_dirs":
+        return f"{m['contrast_ang']:.0f}, {m['contrast_ang2']:.0f}"
     if key == "e1":
         return f"{100 * m['e1']:.2f}"
     return f"{m[key]:.1f}" if key in ("thickness_d", "ang", "theta", "theta_mc", "theta_r") else f"{m[key]:.3f}"
@@ -130,6 +144,9 @@ def table(br, rows, whole):
             f"vertical strain at the end {100 * s['e1'][br.last]:.2f} %, volumetric {100 * s['ev'][br.last]:.2f} % "
             f"(compression +).\nPeak q/p {s['stress_ratio'][kp]:.3f} at step {kp} (e1 {100 * s['e1'][kp]:.2f} %); "
             f"q/p at the end {s['stress_ratio'][br.last]:.3f}.\n\n")
+    nb = sum(m["contrast"] >= bs.BAND_BLOCK * m["contrast_block"] for m in rows)
+    head += (f"Profile contrast >= {bs.BAND_BLOCK} x its block null in {nb} of {len(rows)} windows; the longest run of "
+             f"them in one direction (to 15 deg, or its mirror image): {bs.persistent_band(rows)} windows (a band forms: 2 or more).\n\n")
     lines = ["| " + " | ".join(label for _, label in COLUMNS) + " |", "|" + "---|" * len(COLUMNS)]
     for m in rows + [whole]:
         lines.append("| " + " | ".join(cell(m, k) for k, _ in COLUMNS) + " |")
@@ -156,7 +173,16 @@ def figure(br, rows, whole, path):
     ax.axhline(whole["band"], color="tab:blue", lw=0.6, ls="-.", label="whole travel")
     ax.set_xlabel("vertical strain at the window's end [%]")
     ax.set_ylim(0, None)
-    ax.legend(fontsize=7)
+    ax.legend(fontsize=7, loc="lower left")
+    ax2 = ax.twinx()   # the profile contrast over its nulls
+    ax2.plot(e, [m["contrast"] / m["contrast_block"] for m in rows], "s-", color="tab:purple", ms=3,
+             label="profile contrast / block null")
+    ax2.plot(e, [m["contrast"] / m["contrast_null"] for m in rows], "^:", color="tab:purple", ms=3,
+             label="profile contrast / shuffled null")
+    ax2.axhline(bs.BAND_BLOCK, color="tab:purple", lw=0.6, ls="--")
+    ax2.set_ylim(0, None)
+    ax2.set_ylabel("profile contrast / null (dashed: a band)", fontsize=8)
+    ax2.legend(fontsize=7, loc="lower right")
     ext = 0.5 * max(s["width"][br.last], s["height"][br.last]) * 1.02
     top = max(rows, key=lambda m: m["band"] / m["band_null"])
     for ax, m, what in ((axes[2], top, f"largest band / null: steps {top['k0']}-{top['k1']}"),
@@ -178,24 +204,27 @@ def figure(br, rows, whole, path):
     fg.shrink_png(path)
 
 
-def main(d):
+def main(d, out):
     br = BoxRun(d)
     rows = [window_measures(br, k0, k1) for k0, k1 in br.windows()]
     whole = window_measures(br, br.first, br.last)
     text = table(br, rows, whole)
-    with open(os.path.join(d, "bands.md"), "w") as f:
+    os.makedirs(out, exist_ok=True)
+    with open(os.path.join(out, "bands.md"), "w") as f:
         f.write(text)
     keys = ["k0", "k1", "e1", "q_p", "band", "band_null", "band_area", "thickness_d", "ang", "axis", "theta",
-            "theta_mc", "theta_r", "rot_ratio", "rot_ratio_null", "rot_ratio_med", "rot_ratio_med_null", "spinning"]
-    with open(os.path.join(d, "bands.csv"), "w") as f:
+            "theta_mc", "theta_r", "rot_ratio", "rot_ratio_null", "rot_ratio_med", "rot_ratio_med_null", "spinning",
+            "contrast", "contrast_null", "contrast_block", "contrast_ang", "contrast2", "contrast_ang2", "share_d",
+            "share_d_null", "share_d_area", "share_d_ang"]
+    with open(os.path.join(out, "bands.csv"), "w") as f:
         f.write("window," + ",".join(keys) + "\n")
         for name, m in [(str(i + 1), m) for i, m in enumerate(rows)] + [("whole", whole)]:
             f.write(name + "," + ",".join(f"{m[k]:.6g}" for k in keys) + "\n")
-    figure(br, rows, whole, os.path.join(d, "bands.png"))
+    figure(br, rows, whole, os.path.join(out, "bands.png"))
     print(text)
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 2:
+    if len(sys.argv) not in (2, 3):
         raise SystemExit(__doc__)
-    main(sys.argv[1])
+    main(sys.argv[1], sys.argv[-1])

@@ -527,6 +527,55 @@ def strip_share(tri, gamma, ok, area, width=STRIP, step=0.05, offset=False, dang
     return best if offset else best[:3]
 
 
+PROFILE_D = 1.0  # mean grain diameters: the strips of the profile contrast (about one grain row)
+BAND_D = 8.0     # mean grain diameters: the strip of the band measure in d (a shear band's thickness)
+
+
+def profile_contrast(tri, gamma, ok, area, width, dang=1):
+    """The band network measure: across each direction (`dang` degree steps; triangles by their
+    centroids) the profile of the area-weighted mean strain in strips `width` wide, its contrast
+    std / mean over the strips at least half as long as the longest (weighted by their area).
+    Bands parallel to a direction, one or a network of them, make its profile peak at each band;
+    a field without order has a contrast that falls as the strips hold more triangles.
+    Returns (the largest contrast, its direction [deg from +x], the contrast per direction)."""
+    t = tri.triangles
+    c = contrast_per_direction(tri.x[t].mean(1)[ok], tri.y[t].mean(1)[ok], (gamma * area)[ok], area[ok], width, dang)
+    j = int(np.argmax(c))
+    return float(c[j]), float(j * dang), c
+
+
+def contrast_per_direction(cx, cy, wg, wa, width, dang=1):
+    """profile_contrast's contrast per direction (0, dang, ... < 180 deg) of the points (cx, cy)
+    carrying strain x area wg and area wa."""
+    angs = np.arange(0, 180, dang)
+    if wg.sum() <= 0:
+        return np.zeros(len(angs))
+    c = np.empty(len(angs))
+    for i, ang in enumerate(angs):
+        th = math.radians(ang)
+        pr = -cx * math.sin(th) + cy * math.cos(th)   # across the direction, as strip_share
+        b = ((pr - pr.min()) / width).astype(int)
+        sg, sa = np.bincount(b, wg), np.bincount(b, wa)
+        # the strips at least half as long as the longest: the window's thin ends left out (a
+        # sliver's huge strain on the edge makes its short strip's mean anything)
+        k = sa >= 0.5 * sa.max()
+        mean = sg[k].sum() / sa[k].sum()
+        var = np.sum(sg[k]**2 / sa[k]) / sa[k].sum() - mean**2   # sum_i a_i (m_i - mean)^2 / sum a_i
+        c[i] = math.sqrt(max(var, 0.0)) / mean if mean > 0 else 0.0
+    return c
+
+
+def second_direction(c, dang=1, apart=30):
+    """The largest of the contrasts per direction `c` at least `apart` degrees from the largest
+    (directions modulo 180): a conjugate family's direction, and that contrast."""
+    angs = np.arange(len(c)) * dang
+    j = int(np.argmax(c))
+    sep = np.abs(angs - angs[j]) % 180
+    far = np.minimum(sep, 180 - sep) >= apart
+    k = int(np.nonzero(far)[0][np.argmax(c[far])])
+    return float(angs[k]), float(c[k])
+
+
 def grain_strain(case, k0, k1):
     """Per grain: the area-weighted mean of the accumulated shear strain of its triangles."""
     tri, gamma, ok, area, b = accumulated_strain(case, k0, k1)
