@@ -410,9 +410,7 @@ static void node_displacement(const gb_bem_mesh *m, const double *u, int ep, int
     for (int c = 0; c < 2; c++) v[c] = w * u[2 * ep + c] + (1 - w) * u[2 * e + c];
 }
 
-/* The end points p0, p1 (2n each) in place of the mesh's, its geometry following; refused as
- * gb_bem_mesh_move and gb_bem_mesh_place say, the mesh then left as it was. */
-static gb_status place(gb_bem_mesh *m, const double *p0, const double *p1, gb_error *err)
+gb_status gb_bem_mesh_place(gb_bem_mesh *m, const double *p0, const double *p1, gb_error *err)
 {
     size_t n2 = 2 * (size_t)m->n;
     double *old = malloc(sizeof(double) * 2 * n2), *area = malloc(sizeof(double) * (size_t)m->n_loops);
@@ -482,14 +480,9 @@ gb_status gb_bem_mesh_move(gb_bem_mesh *m, const double *u, gb_error *err)
             }
         }
     }
-    gb_status st = place(m, p, p + n2, err);
+    gb_status st = gb_bem_mesh_place(m, p, p + n2, err);
     free(p);
     return st;
-}
-
-gb_status gb_bem_mesh_place(gb_bem_mesh *m, const double *p0, const double *p1, gb_error *err)
-{
-    return place(m, p0, p1, err);
 }
 
 gb_status gb_bem_mesh_copy(const gb_bem_mesh *src, gb_bem_mesh *dst, gb_error *err)

@@ -142,6 +142,13 @@ gb_status gb_host_solve(const gb_host *h, const gb_host_vars *v, gb_bem_solution
     return st;
 }
 
+void gb_host_cavity_displacement(const gb_host *h, const gb_host_vars *v, int k, double u[2])
+{
+    int e = h->K.elem[k];
+    u[0] = v->u[2 * k] + (h->rebases ? h->u_acc[2 * e] : 0);
+    u[1] = v->u[2 * k + 1] + (h->rebases ? h->u_acc[2 * e + 1] : 0);
+}
+
 const gb_bem_mesh *gb_host_rest_mesh(const gb_host *h) { return h->rebases ? &h->rest : &h->mesh; }
 const gb_bem_system *gb_host_rest_system(const gb_host *h) { return h->rebases ? &h->rest_sys : &h->sys; }
 

@@ -89,6 +89,8 @@ gb_bem_problem gb_host_problem_change(const gb_host *h, const gb_host_vars *v);
  * followed host, the state since the last rebase plus u_acc and t_acc, in the frame of the body at
  * rest (gb_host_rest_mesh). */
 gb_status gb_host_solve(const gb_host *h, const gb_host_vars *v, gb_bem_solution *sol, gb_error *err);
+/* Cavity element k's displacement since rest (2): v's u, plus the sum over a followed host's rebases. */
+void gb_host_cavity_displacement(const gb_host *h, const gb_host_vars *v, int k, double u[2]);
 /* The body at rest: the mesh that gb_host_solve's state goes with (the host's own mesh until its
  * first rebase), and its system. */
 const gb_bem_mesh *gb_host_rest_mesh(const gb_host *h);

@@ -23,10 +23,10 @@ static void write_particles(FILE *f, const void *data)
         int e = h->K.elem[k];
         /* bp_F = (K u + f0) - (force of the grains on the particle) */
         double gx = h->force[2 * k] - sim->scratch.bp_F[2 * k], gy = h->force[2 * k + 1] - sim->scratch.bp_F[2 * k + 1];
-        double ux = sim->state.host.u[2 * k], uy = sim->state.host.u[2 * k + 1];
-        if (h->rebases) ux += h->u_acc[2 * e], uy += h->u_acc[2 * e + 1];
+        double u[2];
+        gb_host_cavity_displacement(h, &sim->state.host, k, u);
         fprintf(f, "%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", e, rest->mid[2 * e],
-                rest->mid[2 * e + 1], sim->bp.r[k], sim->bp.nx[k], sim->bp.ny[k], ux, uy,
+                rest->mid[2 * e + 1], sim->bp.r[k], sim->bp.nx[k], sim->bp.ny[k], u[0], u[1],
                 h->force[2 * k], h->force[2 * k + 1], gx, gy);
     }
 }

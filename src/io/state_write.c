@@ -89,10 +89,9 @@ static void write_host_csv(FILE *f, const void *data)
     const gb_host *h = sim->host;
     fprintf(f, "element,x,y,ux,uy\n");
     for (int k = 0; k < h->m / 2; k++) {
-        int e = h->K.elem[k]; /* the displacement since rest: summed over a followed host's rebases */
-        double ux = sim->state.host.u[2 * k] + (h->rebases ? h->u_acc[2 * e] : 0);
-        double uy = sim->state.host.u[2 * k + 1] + (h->rebases ? h->u_acc[2 * e + 1] : 0);
-        fprintf(f, "%d,%.17g,%.17g,%.17g,%.17g\n", e, sim->bp.x[k], sim->bp.y[k], ux, uy);
+        double u[2]; /* since rest: summed over a followed host's rebases */
+        gb_host_cavity_displacement(h, &sim->state.host, k, u);
+        fprintf(f, "%d,%.17g,%.17g,%.17g,%.17g\n", h->K.elem[k], sim->bp.x[k], sim->bp.y[k], u[0], u[1]);
     }
 }
 
