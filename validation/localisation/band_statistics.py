@@ -165,6 +165,26 @@ class StatRun:
         self.last = max(ok) if ok else self.first_top - 1  # the last step within the allowed strain
 
 
+def particle_mismatch(run_dir):
+    """How far a followed host's cavity moved from its boundary particles' shapes, which keep their
+    size and normal at rest (docs/hybrid.md, "A host that follows its boundary"): at the run's end
+    (host_particles.csv: rest centres, summed displacements), the chord between neighbouring
+    elements' centres against its rest length and direction, over the cavity's closed loop (the
+    chord is about an element's length, the particles' diameter). Returns the largest stretch
+    |L/L0 - 1|, the largest turn [deg] and the largest change of length |L - L0|."""
+    p = fg.read_csv(os.path.join(run_dir, "host_particles.csv"))
+    o = np.argsort(p["element"])
+    x0, y0 = p["x"][o], p["y"][o]
+    x1, y1 = x0 + p["ux"][o], y0 + p["uy"][o]
+    c0 = np.stack([np.roll(x0, -1) - x0, np.roll(y0, -1) - y0], 1)
+    c1 = np.stack([np.roll(x1, -1) - x1, np.roll(y1, -1) - y1], 1)
+    l0, l1 = np.hypot(*c0.T), np.hypot(*c1.T)
+    if l0.max() > 1.5 * l0.min():
+        raise SystemExit(f"{run_dir}: the cavity's elements are not in loop order by number")
+    turn = np.degrees(np.arctan2(c0[:, 0] * c1[:, 1] - c0[:, 1] * c1[:, 0], (c0 * c1).sum(1)))
+    return float(np.abs(l1 / l0 - 1).max()), float(np.abs(turn).max()), float(np.abs(l1 - l0).max())
+
+
 def profile(coord, w, v, edges):
     """The w-weighted mean of v in the bins of coord."""
     num, _ = np.histogram(coord, edges, weights=w * v)
@@ -483,6 +503,9 @@ def measure(sr):
     out["host_end_mean"] = float(np.mean(at_end) / np.mean(gam))
     out["ring_max"] = sr.ring[sr.last]
     out["wall_max"] = sr.wall[sr.last]
+    if SCALE:   # the followed host's cavity against the boundary particles' rest shapes
+        stretch, turn, dl = particle_mismatch(sr.run)
+        out["particle_stretch"], out["particle_turn"], out["particle_gap_d"] = stretch, turn, dl / sr.d
     out["_draw"] = (tri, g, ok, ha["x"], ha["y"], gam, gb, ang, axis)
     return out
 
@@ -513,6 +536,10 @@ KEYS = [("travel", "top's travel within the allowed host strain [cm]", "{:.3f}")
         ("wall_end_mirror", "host wall's shear strain increment at the band's ends / mirror points", "{:.2f}"),
         ("host_end_mirror", "host ring's (1.5 R) shear strain increment at the band's ends / mirror points", "{:.2f}"),
         ("host_end_mean", "the same / the ring's mean", "{:.2f}")]
+if SCALE:   # the followed host (particle_mismatch)
+    KEYS += [("particle_stretch", "cavity elements at the end: largest stretch against the boundary particles' rest size", "{:.3f}"),
+             ("particle_gap_d", "the same as a length, over the mean grain diameter", "{:.3f}"),
+             ("particle_turn", "cavity elements at the end: largest turn against the particles' rest normal [deg]", "{:.1f}")]
 
 
 # the band network measures (network_run), in the table after the others and at the end of the CSV

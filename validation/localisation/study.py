@@ -357,9 +357,10 @@ def stat_scene(name, mesh):
 # The study at scale: zones 110 grain diameters across (1e4 grains; 384 cavity elements keep the
 # boundary particles' size to the grains'), the host following its deformed boundary (rebased
 # after every step), the top pushed SCALE_STEPS x 0.01 cm (the zone to about 10 % of vertical
-# strain); the statistics' cases at P = 100 kgf/cm^2, SCALE_SEEDS packings each. Names
+# strain); the statistics' cases at P = 100 kgf/cm^2, SCALE_SEEDS packings each (six: at least five
+# per case run through, as one packing's first relaxation stalls, README "At scale"). Names
 # scale/<statistics name>.
-SCALE_N, SCALE_CAVITY, SCALE_SEEDS, SCALE_STEPS, SCALE_FOLLOW, SCALE_P = 10000, 384, 5, 60, 1, [100.0]
+SCALE_N, SCALE_CAVITY, SCALE_SEEDS, SCALE_STEPS, SCALE_FOLLOW, SCALE_P = 10000, 384, 6, 60, 1, [100.0]
 
 
 def scale_cases():

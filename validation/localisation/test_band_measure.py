@@ -34,6 +34,9 @@ no band 1.01-1.04 (1.17-1.21 x shuffled: neighbouring triangles share corners, s
 without bands has strips more uneven than a shuffled one, which the block null keeps). 1.6 is the
 criterion proposed for "a band forms" at 10 000 grains (the biaxial boxes' windows there: 1.6-2.3;
 README, the control).
+
+The followed host's cavity against its boundary particles' rest shapes (particle_mismatch): a
+circle of 384 elements expanded, turned and stretched, each stretch and turn known analytically.
 """
 import math
 import os
@@ -232,9 +235,36 @@ def network(tmp):
     return ["network: " + e for e in errors]
 
 
+def particles(tmp):
+    """band_statistics.particle_mismatch (a followed cavity against its boundary particles' rest
+    shapes) on a circle of 384 elements, numbered from 64 and listed out of order as a run may:
+    a uniform expansion by 10 % (stretch 0.1, no turn), a rigid turn by 5 deg about the centre
+    (no stretch, a turn of 5 deg) and a stretch of x by 1.2 (the chord where it runs along x:
+    stretch 0.2 to the chord's discretisation, 2 pi / 384; a chord at phi turns to atan(tan phi /
+    1.2), most where tan phi = sqrt(1.2): atan(sqrt(1.2)) - atan(1 / sqrt(1.2)) = 5.216 deg)."""
+    m, r = 384, 2.5
+    th = 2 * math.pi * (np.arange(m) + 0.5) / m
+    x, y = r * np.cos(th), r * np.sin(th)
+    t5 = math.radians(5.0)
+    cases = [("expansion", 0.1 * x, 0.1 * y, 0.1, 0.0),
+             ("turn", x * math.cos(t5) - y * math.sin(t5) - x, x * math.sin(t5) + y * math.cos(t5) - y, 0.0, 5.0),
+             ("stretch x", 0.2 * x, 0 * y, 0.2, math.degrees(math.atan(math.sqrt(1.2)) - math.atan(1 / math.sqrt(1.2))))]
+    order = np.roll(np.arange(m), 100)
+    errors = []
+    for name, ux, uy, stretch, turn in cases:
+        d = os.path.join(tmp, name.replace(" ", "_"))
+        write_csv(os.path.join(d, "host_particles.csv"),
+                  {"element": [str(64 + i) for i in order], "x": x[order], "y": y[order], "ux": ux[order], "uy": uy[order]})
+        got = bs.particle_mismatch(d)
+        print(f"particles, {name}: stretch {got[0]:.5f} ({stretch}), turn {got[1]:.4f} deg ({turn:.4f})")
+        if abs(got[0] - stretch) > 1e-3 or abs(got[1] - turn) > 0.02:
+            errors.append(f"particles: {name}")
+    return errors
+
+
 def main():
     with tempfile.TemporaryDirectory() as t1, tempfile.TemporaryDirectory() as t2, tempfile.TemporaryDirectory() as t3:
-        errors = cavity(t1) + box(t2) + network(t3)
+        errors = cavity(t1) + box(t2) + network(t3) + particles(t1)
     if errors:
         print("FAILED: " + ", ".join(errors))
         sys.exit(1)
