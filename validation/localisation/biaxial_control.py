@@ -137,7 +137,7 @@ def main():
                        check=True)
         print(f"biaxial_control: pack {t_pack:.1f} s, run {time.time() - t0:.1f} s (wall)")
     import box_bands   # matplotlib and the measures: only when measuring
-    box_bands.main(d)
+    box_bands.main(d, d)
 
 
 if __name__ == "__main__":

@@ -25,6 +25,7 @@ it reaches band_statistics.BAND_BLOCK: a band or a band network) and its shuffle
 share of the strain in the best strip 8 d wide over its shuffled null.
 
 Usage: validation/localisation/box_bands.py DIR [OUT]  (DIR of biaxial_control.py: DIR/run, DIR/grains.csv)
+       validation/localisation/box_bands.py --summary DIR ...   (runs measured: a row each, their mean)
 Writes OUT/bands.md (the table), OUT/bands.csv and OUT/bands.png (OUT: DIR unless given; the stress ratio and band
 measures along the path; the strain with the strip of the window whose band measure is the most
 above its null, of the last window and of the whole travel)."""
@@ -224,7 +225,46 @@ def main(d, out):
     print(text)
 
 
+def summary(dirs):
+    """One row per box run measured by main (DIR/bands.csv, DIR/run/steps.csv), then the mean and
+    standard deviation of each run's numbers over the runs: the README's table of the boxes."""
+    head = ("| run | steps' wall time [s] | peak q/p (e1 [%]) | windows >= " + f"{bs.BAND_BLOCK:g}" +
+            " x block null | contrast / block null: range (median) | a band forms (windows in a row) | whole travel "
+            "/ block null | best direction to the horizontal: median (range) [deg] | band / null (0.5 cm): median | "
+            "thickness [d]: median | rotation ratio (null): median |")
+    lines, vals = [head, "|" + "---|" * head.count(" | ") + "---|"], []
+    for d in dirs:
+        w = fg.read_csv(os.path.join(d, "bands.csv"))
+        s = fg.read_csv(os.path.join(d, "run", "steps.csv"))
+        win = w["window"] != "whole"
+        rows = [{k: float(w[k][i]) for k in ("contrast", "contrast_block", "contrast_ang")} for i in np.nonzero(win)[0]]
+        ratio = w["contrast"][win] / w["contrast_block"][win]
+        whole = float((w["contrast"] / w["contrast_block"])[~win][0])
+        to_h = np.minimum(w["contrast_ang"][win] % 180, 180 - w["contrast_ang"][win] % 180)
+        shear = s["stage"] == SHEAR_STAGE
+        kp = int(np.argmax(np.where(shear, s["stress_ratio"], -np.inf)))
+        v = [float(np.sum(s["seconds"])), float(s["stress_ratio"][kp]), int(np.sum(ratio >= bs.BAND_BLOCK)),
+             float(np.median(ratio)), bs.persistent_band(rows), whole, float(np.median(to_h)),
+             float(np.median(w["band"][win] / w["band_null"][win])), float(np.median(w["thickness_d"][win])),
+             float(np.median(w["rot_ratio_med"][win])), float(np.median(w["rot_ratio_med_null"][win]))]
+        vals.append(v)
+        lines.append(f"| {os.path.basename(os.path.normpath(d))} | {v[0]:.0f} | {v[1]:.3f} ({100 * s['e1'][kp]:.1f}) | "
+                     f"{v[2]} of {len(rows)} | {ratio.min():.2f}-{ratio.max():.2f} ({v[3]:.2f}) | "
+                     f"{'yes' if v[4] >= 2 else 'no'} ({v[4]}) | {v[5]:.2f} | {v[6]:.0f} ({to_h.min():.0f}-{to_h.max():.0f}) | "
+                     f"{v[7]:.2f} | {v[8]:.1f} | {v[9]:.2f} ({v[10]:.2f}) |")
+    a = np.array(vals)
+    m, sd = a.mean(0), a.std(0, ddof=1) if len(a) > 1 else 0 * a.mean(0)
+    lines.append(f"| mean +- sd of {len(a)} | {m[0]:.0f} +- {sd[0]:.0f} | {m[1]:.3f} +- {sd[1]:.3f} | {m[2]:.1f} +- {sd[2]:.1f} | "
+                 f"({m[3]:.2f} +- {sd[3]:.2f}) | {int(np.sum(a[:, 4] >= 2))} of {len(a)} ({m[4]:.1f} +- {sd[4]:.1f}) | "
+                 f"{m[5]:.2f} +- {sd[5]:.2f} | {m[6]:.0f} +- {sd[6]:.0f} | {m[7]:.2f} +- {sd[7]:.2f} | {m[8]:.1f} +- {sd[8]:.1f} | "
+                 f"{m[9]:.2f} +- {sd[9]:.2f} ({m[10]:.2f}) |")
+    return "\n".join(lines) + "\n"
+
+
 if __name__ == "__main__":
-    if len(sys.argv) not in (2, 3):
+    if len(sys.argv) > 2 and sys.argv[1] == "--summary":
+        print(summary(sys.argv[2:]), end="")
+    elif len(sys.argv) not in (2, 3):
         raise SystemExit(__doc__)
-    main(sys.argv[1], sys.argv[-1])
+    else:
+        main(sys.argv[1], sys.argv[-1])
