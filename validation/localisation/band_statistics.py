@@ -564,7 +564,8 @@ def mean_row(by, groups, key, label, fmt):
     cells = []
     for g in groups:
         v = np.array([r[key] for r in by[g] if key in r and np.isfinite(r[key])])
-        cells.append(f"{fmt.format(v.mean())} +- {fmt.format(v.std(ddof=1))} ({len(v)})" if len(v) > 1 else "")
+        cells.append(f"{fmt.format(v.mean())} +- {fmt.format(v.std(ddof=1))} ({len(v)})" if len(v) > 1
+                     else f"{fmt.format(v[0])} (1)" if len(v) else "")
     return f"| {label} | " + " | ".join(cells) + " |"
 
 
