@@ -230,36 +230,40 @@ def summary(dirs):
     standard deviation of each run's numbers over the runs: the README's table of the boxes."""
     head = ("| run | steps' wall time [s] | peak q/p (e1 [%]) | windows >= " + f"{bs.BAND_BLOCK:g}" +
             " x block null | contrast / block null: range (median) | a band forms (windows in a row) | whole travel "
-            "/ block null | next family / block null in the best window | best direction to the horizontal: median (range) [deg] | band / null (0.5 cm): median | "
-            "thickness [d]: median | rotation ratio (null): median |")
-    lines, vals = [head, "|" + "---|" * head.count(" | ") + "---|"], []
+            "/ block null | next family / block null in the best window | best direction to the horizontal: median "
+            "(range) [deg] | band / null (0.5 cm): median | thickness [d]: median | rotation ratio (null): median |")
+    lines, runs = [head, "|" + "---|" * head.count(" | ") + "---|"], []
     for d in dirs:
         w = fg.read_csv(os.path.join(d, "bands.csv"))
         s = fg.read_csv(os.path.join(d, "run", "steps.csv"))
         win = w["window"] != "whole"
-        rows = [{k: float(w[k][i]) for k in ("contrast", "contrast_block", "contrast_ang")} for i in np.nonzero(win)[0]]
+        windows = [{k: float(w[k][i]) for k in ("contrast", "contrast_block", "contrast_ang")} for i in np.nonzero(win)[0]]
         ratio = w["contrast"][win] / w["contrast_block"][win]
-        ratio2 = w["contrast2"][win] / w["contrast_block"][win]   # the next direction family (a network: both high)
-        whole = float((w["contrast"] / w["contrast_block"])[~win][0])
         to_h = np.minimum(w["contrast_ang"][win] % 180, 180 - w["contrast_ang"][win] % 180)
-        shear = s["stage"] == SHEAR_STAGE
-        kp = int(np.argmax(np.where(shear, s["stress_ratio"], -np.inf)))
-        v = [float(np.sum(s["seconds"])), float(s["stress_ratio"][kp]), int(np.sum(ratio >= bs.BAND_BLOCK)),
-             float(np.median(ratio)), bs.persistent_band(rows), whole, float(np.median(to_h)),
-             float(np.median(w["band"][win] / w["band_null"][win])), float(np.median(w["thickness_d"][win])),
-             float(np.median(w["rot_ratio_med"][win])), float(np.median(w["rot_ratio_med_null"][win])),
-             float(ratio2[int(np.argmax(ratio))])]   # as band_statistics' net_ratio2 of the cavity
-        vals.append(v)
-        lines.append(f"| {os.path.basename(os.path.normpath(d))} | {v[0]:.0f} | {v[1]:.3f} ({100 * s['e1'][kp]:.1f}) | "
-                     f"{v[2]} of {len(rows)} | {ratio.min():.2f}-{ratio.max():.2f} ({v[3]:.2f}) | "
-                     f"{'yes' if v[4] >= 2 else 'no'} ({v[4]}) | {v[5]:.2f} | {v[11]:.2f} | {v[6]:.0f} ({to_h.min():.0f}-{to_h.max():.0f}) | "
-                     f"{v[7]:.2f} | {v[8]:.1f} | {v[9]:.2f} ({v[10]:.2f}) |")
-    a = np.array(vals)
-    m, sd = a.mean(0), a.std(0, ddof=1) if len(a) > 1 else 0 * a.mean(0)
-    lines.append(f"| mean +- sd of {len(a)} | {m[0]:.0f} +- {sd[0]:.0f} | {m[1]:.3f} +- {sd[1]:.3f} | {m[2]:.1f} +- {sd[2]:.1f} | "
-                 f"({m[3]:.2f} +- {sd[3]:.2f}) | {int(np.sum(a[:, 4] >= 2))} of {len(a)} ({m[4]:.1f} +- {sd[4]:.1f}) | "
-                 f"{m[5]:.2f} +- {sd[5]:.2f} | {m[11]:.2f} +- {sd[11]:.2f} | {m[6]:.0f} +- {sd[6]:.0f} | {m[7]:.2f} +- {sd[7]:.2f} | {m[8]:.1f} +- {sd[8]:.1f} | "
-                 f"{m[9]:.2f} +- {sd[9]:.2f} ({m[10]:.2f}) |")
+        kp = int(np.argmax(np.where(s["stage"] == SHEAR_STAGE, s["stress_ratio"], -np.inf)))
+        r = {"seconds": float(np.sum(s["seconds"])), "peak": float(s["stress_ratio"][kp]),
+             "band_windows": int(np.sum(ratio >= bs.BAND_BLOCK)), "ratio": float(np.median(ratio)),
+             "in_a_row": bs.persistent_band(windows), "whole": float((w["contrast"] / w["contrast_block"])[~win][0]),
+             # the next direction family in the best window, as band_statistics' net_ratio2 of the cavity
+             "next": float((w["contrast2"][win] / w["contrast_block"][win])[int(np.argmax(ratio))]),
+             "to_h": float(np.median(to_h)), "band": float(np.median(w["band"][win] / w["band_null"][win])),
+             "thickness": float(np.median(w["thickness_d"][win])), "rot": float(np.median(w["rot_ratio_med"][win])),
+             "rot_null": float(np.median(w["rot_ratio_med_null"][win]))}
+        runs.append(r)
+        lines.append(f"| {os.path.basename(os.path.normpath(d))} | {r['seconds']:.0f} | {r['peak']:.3f} "
+                     f"({100 * s['e1'][kp]:.1f}) | {r['band_windows']} of {len(windows)} | {ratio.min():.2f}-"
+                     f"{ratio.max():.2f} ({r['ratio']:.2f}) | {'yes' if r['in_a_row'] >= 2 else 'no'} ({r['in_a_row']}) | "
+                     f"{r['whole']:.2f} | {r['next']:.2f} | {r['to_h']:.0f} ({to_h.min():.0f}-{to_h.max():.0f}) | "
+                     f"{r['band']:.2f} | {r['thickness']:.1f} | {r['rot']:.2f} ({r['rot_null']:.2f}) |")
+
+    def ms(key, fmt):
+        v = np.array([r[key] for r in runs], float)
+        return f"{v.mean():{fmt}} +- {v.std(ddof=1) if len(v) > 1 else 0:{fmt}}"
+    formed = sum(r["in_a_row"] >= 2 for r in runs)
+    lines.append(f"| mean +- sd of {len(runs)} | {ms('seconds', '.0f')} | {ms('peak', '.3f')} | {ms('band_windows', '.1f')} | "
+                 f"({ms('ratio', '.2f')}) | {formed} of {len(runs)} ({ms('in_a_row', '.1f')}) | {ms('whole', '.2f')} | "
+                 f"{ms('next', '.2f')} | {ms('to_h', '.0f')} | {ms('band', '.2f')} | {ms('thickness', '.1f')} | "
+                 f"{ms('rot', '.2f')} ({np.mean([r['rot_null'] for r in runs]):.2f}) |")
     return "\n".join(lines) + "\n"
 
 
