@@ -37,6 +37,9 @@ def main():
     a = ap.parse_args()
     scene, comment = study.pack_scene(a.case, MESH)
     base = float(scene.solver["accuracy"])
+    print(f"{a.case}: the study packs at {base:g} (kn {scene.materials['grain_grain']['kn']:g})")
+    print("| accuracy [kgf] | mean stress [kgf/cm] | coordination | rattlers | largest overlap / smaller radius | largest fixing force [kgf] |")
+    print("|---|---|---|---|---|---|")
     for acc in a.accuracy or [base, base / 5, base / 25, base / 500]:
         d = os.path.join(a.dir, f"{acc:g}")
         os.makedirs(d, exist_ok=True)
@@ -45,10 +48,6 @@ def main():
         subprocess.run([os.path.join(a.build, "gembem"), "pack", os.path.join(d, "pack.yaml"), "-o",
                         os.path.join(d, "pack"), "--overwrite", "--quiet"], check=True)
         info = read_yaml(os.path.join(d, "pack", "pack_info.yaml"))
-        if acc == (a.accuracy or [base])[0]:
-            print(f"{a.case}: {info['grains']} grains, kn {scene.materials['grain_grain']['kn']:g}; the study packs at {base:g}")
-            print("| accuracy [kgf] | mean stress [kgf/cm] | coordination | rattlers | largest overlap / smaller radius | largest fixing force [kgf] |")
-            print("|---|---|---|---|---|---|")
         print(f"| {acc:g} | {info['mean_stress']:.3g} | {info['coordination']:.2f} | {info['rattlers']} | "
               f"{info['largest_overlap']:.2g} | {info['max_fixing_force']:.2g} |")
 
