@@ -49,7 +49,13 @@ With --scale, the study at scale (study.py scale_cases: 1e4 grains, the host fol
 deformed boundary) over each run's whole travel, no host strain bound: scale.md, scale_runs.csv,
 scale_maps.png, scale_measures.png.
 
-Usage: validation/localisation/band_statistics.py [RUNS_DIR] [--ring | --scale]     (default runs/localisation)
+With --keep, a run not completed in RUNS_DIR keeps its row of the last <out>_runs.csv (a study
+run in parts, on several machines): the runs found are measured (a run found and kept is measured
+again, and the largest relative difference to its kept row printed), the table and the measures'
+figure take every row, and the maps need the directory of each case's median run (named if it is
+missing).
+
+Usage: validation/localisation/band_statistics.py [RUNS_DIR] [--ring | --scale] [--keep]   (default runs/localisation)
 """
 import math
 import os
@@ -77,6 +83,7 @@ RUNS = ARGS[0] if ARGS else os.path.join(HERE, "..", "..", "runs", "localisation
 # ring at 1.5 R (the sensitivity run: outputs statistics_ring*)
 BOUND_AT = "ring" if "--ring" in sys.argv else "wall"
 SCALE = "--scale" in sys.argv   # the study at scale: the whole travel, no bound
+KEEP = "--keep" in sys.argv     # rows of the last <out>_runs.csv stand for runs not found
 OUT = "scale" if SCALE else "statistics" + ("_ring" if BOUND_AT == "ring" else "")
 # the runs (name, kn_g, P, rolling, seed), the cases (group, kn_g, P, rolling), packings per case
 CASES = study.scale_cases() if SCALE else study.stat_cases()
@@ -644,6 +651,9 @@ def fig_maps(runs, meas):
             continue
         order = np.argsort([m["band"] for m in ms])
         m = ms[order[len(order) // 2]]
+        if m["case"] not in runs:
+            sys.exit(f"{OUT}_maps.png: the median run of {grp}, {m['case']}, is kept from {OUT}_runs.csv; "
+                     f"its directory is needed in {RUNS} for its map (run it, then again)")
         sr = runs[m["case"]]
         tp, _ = draw_band(ax, sr, m, np.percentile(m["_draw"][1][m["_draw"][2]], 98))
         ax.set_title(f"{case_label(grp)}\n{m['case'].split('/')[-1]}: window to {m['band_travel']:.2f} cm, "
@@ -709,17 +719,41 @@ def fig_measures(meas):
     plt.close(fig)
 
 
+def kept_rows():
+    """The rows of the last <out>_runs.csv by run name (numbers as floats, empty cells left out)."""
+    path = os.path.join(HERE, f"{OUT}_runs.csv")
+    if not os.path.exists(path):
+        return {}
+    with open(path) as f:
+        head = f.readline().strip().split(",")
+        rows = [dict(zip(head, line.strip().split(","))) for line in f if line.strip()]
+    return {r["case"]: {"case": r["case"], **{k: float(v) for k, v in r.items() if k != "case" and v != ""}}
+            for r in rows}
+
+
+def differs(m, kept):
+    """The largest relative difference between a run's measures and its kept row, and its key."""
+    d = [(abs(m[k] - v) / max(abs(v), 1e-12), k) for k, v in kept.items() if k in m and isinstance(m[k], (int, float, np.number))]
+    return max(d, default=(0.0, ""))
+
+
 def main():
     names = [c[0] for c in CASES]
+    kept = kept_rows() if KEEP else {}
     runs, meas = {}, []
     for n in names:
         st = os.path.join(RUNS, n, "status.yaml") if SCALE else os.path.join(RUNS, "statistics", n, "status.yaml")
         if not os.path.exists(st) or read_yaml(st).get("status") != "completed":
-            print(f"{n}: not completed, skipped")
+            print(f"{n}: kept from {OUT}_runs.csv" if n in kept else f"{n}: not completed, skipped")
+            if n in kept:
+                meas.append(kept[n])
             continue
         sr = StatRun(n)
         runs[n] = sr
         meas.append(measure(sr))
+        if n in kept:
+            rel, key = differs(meas[-1], kept[n])
+            print(f"{n}: measured again; largest relative difference to its kept row {rel:.2g} ({key or '-'})")
     with open(os.path.join(HERE, f"{OUT}.md"), "w") as f:
         f.write(table(meas))
     keys = [k for k, _, _ in KEYS] + ["window", "spinning", "rattlers", "strip_ang", "ang", "minor_dir", "axis", "onset_travel", "d"]

@@ -37,6 +37,7 @@ README, the control).
 
 The followed host's cavity against its boundary particles' rest shapes (particle_mismatch): a
 circle of 384 elements expanded, turned and stretched, each stretch and turn known analytically.
+The rows of a runs table kept for runs measured elsewhere (--keep): read back, averaged by hand.
 """
 import math
 import os
@@ -262,9 +263,28 @@ def particles(tmp):
     return errors
 
 
+def kept(tmp):
+    """band_statistics.py --keep: the rows of a runs table read back (an empty cell left out) and
+    their table row: band measures 0.3 and 0.5 give 0.40 +- 0.14 (2) (sd sqrt(0.02) = 0.1414),
+    a thickness given by one run only 3.0 (1); a run measured again against its row: 10 % apart."""
+    with open(os.path.join(tmp, "statistics_runs.csv"), "w") as f:
+        f.write("case,band,thickness_d\ng/s01,0.3,3\ng/s02,0.5,\n")
+    here = bs.HERE
+    bs.HERE = tmp
+    rows = bs.kept_rows()
+    bs.HERE = here
+    by = {"g": list(rows.values())}
+    got = (bs.mean_row(by, ["g"], "band", "b", "{:.2f}"), bs.mean_row(by, ["g"], "thickness_d", "t", "{:.1f}"),
+           bs.differs({"band": 0.33, "thickness_d": 3.0}, rows["g/s01"]))
+    print(f"kept rows: {got[0]} {got[1]}, again: {got[2][0]:.3f} ({got[2][1]})")
+    ok = (got[0] == "| b | 0.40 +- 0.14 (2) |" and got[1] == "| t | 3.0 (1) |" and "thickness_d" not in rows["g/s02"]
+          and abs(got[2][0] - 0.1) < 1e-9 and got[2][1] == "band")
+    return [] if ok else ["kept rows"]
+
+
 def main():
     with tempfile.TemporaryDirectory() as t1, tempfile.TemporaryDirectory() as t2, tempfile.TemporaryDirectory() as t3:
-        errors = cavity(t1) + box(t2) + network(t3) + particles(t1)
+        errors = cavity(t1) + box(t2) + network(t3) + particles(t1) + kept(t3)
     if errors:
         print("FAILED: " + ", ".join(errors))
         sys.exit(1)
