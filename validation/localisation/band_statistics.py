@@ -762,8 +762,8 @@ def main():
         f.write("case," + ",".join(keys) + "\n")
         for m in meas:
             f.write(m["case"] + "," + ",".join(f"{m[k]:.6g}" if k in m else "" for k in keys) + "\n")
-    fig_maps(runs, meas)
     fig_measures(meas)
+    fig_maps(runs, meas)
     print(open(os.path.join(HERE, f"{OUT}.md")).read())
 
 
