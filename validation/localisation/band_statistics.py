@@ -57,6 +57,7 @@ missing).
 
 Usage: validation/localisation/band_statistics.py [RUNS_DIR] [--ring | --scale] [--keep]   (default runs/localisation)
 """
+import csv
 import math
 import os
 import sys
@@ -724,16 +725,16 @@ def kept_rows():
     path = os.path.join(HERE, f"{OUT}_runs.csv")
     if not os.path.exists(path):
         return {}
-    with open(path) as f:
-        head = f.readline().strip().split(",")
-        rows = [dict(zip(head, line.strip().split(","))) for line in f if line.strip()]
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
     return {r["case"]: {"case": r["case"], **{k: float(v) for k, v in r.items() if k != "case" and v != ""}}
             for r in rows}
 
 
 def differs(m, kept):
     """The largest relative difference between a run's measures and its kept row, and its key."""
-    d = [(abs(m[k] - v) / max(abs(v), 1e-12), k) for k, v in kept.items() if k in m and isinstance(m[k], (int, float, np.number))]
+    d = [(abs(m[k] - v) / max(abs(v), 1e-12), k) for k, v in kept.items()
+         if k in m and isinstance(m[k], (int, float, np.number))]
     return max(d, default=(0.0, ""))
 
 
