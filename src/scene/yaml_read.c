@@ -11,14 +11,17 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Length of the UTF-8 sequence at s (n bytes left), 0 if it is not one. */
-static int utf8_length(const unsigned char *s, size_t n)
+/* Length of the UTF-8 sequence at s (n bytes left) and its code point *cp, 0 if it is not one. */
+static int utf8_decode(const unsigned char *s, size_t n, unsigned long *cp)
 {
     int len = s[0] < 0x80 ? 1 : s[0] >= 0xc2 && s[0] < 0xe0 ? 2 : s[0] >= 0xe0 && s[0] < 0xf0 ? 3
             : s[0] >= 0xf0 && s[0] < 0xf5 ? 4 : 0;
     if ((size_t)len > n) return 0;
-    for (int k = 1; k < len; k++)
+    *cp = len == 1 ? s[0] : s[0] & (0x7f >> len);
+    for (int k = 1; k < len; k++) {
         if ((s[k] & 0xc0) != 0x80) return 0;
+        *cp = *cp << 6 | (s[k] & 0x3f);
+    }
     /* no overlong forms, surrogates or code points above U+10FFFF (RFC 3629) */
     if ((s[0] == 0xe0 && s[1] < 0xa0) || (s[0] == 0xed && s[1] > 0x9f) || (s[0] == 0xf0 && s[1] < 0x90) ||
         (s[0] == 0xf4 && s[1] > 0x8f))
@@ -26,9 +29,18 @@ static int utf8_length(const unsigned char *s, size_t n)
     return len;
 }
 
-/* YAML is UTF-8 text here, checked before libfyaml sees it: libfyaml 0.7 loops forever on a
- * directive line ('%') holding a byte that is not UTF-8 (found by fuzzing, fuzz/regress/scene). */
-static gb_status check_utf8(const char *path, FILE *f, gb_error *err)
+/* YAML 1.2's character set (c-printable, section 5.1): tab, line feed, carriage return, the
+ * printable ASCII, NEL and the rest of Unicode but for the surrogates, U+FFFE and U+FFFF. */
+static int yaml_printable(unsigned long c)
+{
+    return c == 0x9 || c == 0xa || c == 0xd || (c >= 0x20 && c <= 0x7e) || c == 0x85 || (c >= 0xa0 && c <= 0xfffd) ||
+           (c >= 0x10000 && c <= 0x10ffff);
+}
+
+/* YAML is UTF-8 text of YAML's characters here, checked before libfyaml sees it: libfyaml 0.7
+ * loops forever on a directive line ('%') holding a byte that is not UTF-8, and writes through a
+ * null pointer on some texts holding a NUL (both found by fuzzing, fuzz/regress/scene and state). */
+static gb_status check_text(const char *path, FILE *f, gb_error *err)
 {
     unsigned char buf[4096];
     size_t have = 0, n;
@@ -38,10 +50,16 @@ static gb_status check_utf8(const char *path, FILE *f, gb_error *err)
         int last = n == 0; /* no more bytes: what is left must be complete */
         while (i < end) {
             if (!last && end - i < 4) break; /* a sequence may continue in the next read */
-            int len = utf8_length(buf + i, end - i);
+            unsigned long c = 0;
+            int len = utf8_decode(buf + i, end - i, &c);
             if (!len)
                 return gb_fail(err, GB_EINPUT, "%s:%d:%d: byte 0x%02x is not UTF-8 text; expected a YAML file in UTF-8",
                                path, line, col, buf[i]);
+            if (!yaml_printable(c))
+                return gb_fail(err, GB_EINPUT,
+                               "%s:%d:%d: character U+%04lX is not allowed in a YAML file (YAML 1.2, section 5.1: "
+                               "no control characters but tab, line feed and carriage return, no U+FFFE or U+FFFF)",
+                               path, line, col, c);
             if (buf[i] == '\n') line++, col = 1;
             else col++;
             i += (size_t)len;
@@ -53,7 +71,7 @@ static gb_status check_utf8(const char *path, FILE *f, gb_error *err)
     return GB_OK;
 }
 
-/* Parses the UTF-8-checked YAML of `text` (NULL: the file doc->path) into doc. */
+/* Parses the checked YAML of `text` (NULL: the file doc->path) into doc. */
 static gb_status parse(gb_yaml_doc *doc, FILE *text, gb_error *err)
 {
     const char *path = doc->path;
@@ -95,7 +113,7 @@ gb_status gb_yaml_load(const char *path, gb_yaml_doc *doc, gb_error *err)
     snprintf(doc->path, sizeof doc->path, "%s", path);
     FILE *probe = fopen(path, "rb");
     if (!probe) return gb_fail(err, GB_EINPUT, "%s: cannot open: %s", path, strerror(errno));
-    gb_status text = check_utf8(path, probe, err);
+    gb_status text = check_text(path, probe, err);
     fclose(probe);
     return text ? text : parse(doc, NULL, err);
 }
@@ -107,7 +125,7 @@ gb_status gb_yaml_load_text(const char *text, size_t len, const char *name, gb_y
     if (!len) return gb_fail(err, GB_EINPUT, "%s: the text is empty; expected a YAML mapping", name);
     FILE *f = fmemopen((void *)text, len, "rb");
     if (!f) return gb_fail(err, GB_ENOMEM, "%s: cannot read the text: %s", name, strerror(errno));
-    gb_status st = check_utf8(name, f, err);
+    gb_status st = check_text(name, f, err);
     if (!st) rewind(f), st = parse(doc, f, err);
     fclose(f);
     return st;

@@ -79,6 +79,31 @@ int main(void)
     CHECK(gb_yaml_load(p, &doc, &err) == GB_EINPUT && strstr(err.msg, ":1:2: byte 0xed") != NULL);
     p = gb_test_file("yaml_truncated.yaml", "a: caf\xc3");
     CHECK(gb_yaml_load(p, &doc, &err) == GB_EINPUT && strstr(err.msg, ":1:7: byte 0xc3") != NULL);
+    /* and YAML's characters only (YAML 1.2, section 5.1): libfyaml 0.7 wrote through a null
+     * pointer on this text with a NUL (fuzz/regress/state); C0 and C1 controls, DEL, U+FFFE are
+     * refused where they stand, tab, NEL and the astral planes are text */
+#define BYTES(s) s, sizeof(s) - 1
+    static const struct {
+        const char *bytes;
+        size_t n;
+        const char *where; /* NULL: accepted */
+    } chars[] = {{BYTES("? a:\t\0\n"), ":1:6: character U+0000 is not allowed"},
+                 {BYTES("a: 1\nb: \x0c\n"), ":2:4: character U+000C"},
+                 {BYTES("a: \x7f\n"), ":1:4: character U+007F"},
+                 {BYTES("a: x\xc2\x80\n"), ":1:5: character U+0080"},
+                 {BYTES("a: \xef\xbf\xbe\n"), ":1:4: character U+FFFE"},
+                 {BYTES("a: \t\xc2\x85\xf0\x9f\x98\x80\r\n"), NULL}};
+    for (size_t k = 0; k < sizeof chars / sizeof chars[0]; k++) {
+        const char *q = gb_test_file("yaml_control.yaml", "");
+        FILE *f = fopen(q, "wb");
+        CHECK(f && fwrite(chars[k].bytes, 1, chars[k].n, f) == chars[k].n && !fclose(f));
+        gb_status st = gb_yaml_load(q, &doc, &err);
+        CHECK(chars[k].where ? st == GB_EINPUT && strstr(err.msg, chars[k].where) : st == GB_OK);
+        gb_yaml_free(&doc);
+        st = gb_yaml_load_text(chars[k].bytes, chars[k].n, "text", &doc, &err);
+        CHECK(chars[k].where ? st == GB_EINPUT && strstr(err.msg, chars[k].where) : st == GB_OK);
+        gb_yaml_free(&doc);
+    }
     static char big[8200];
     for (int shift = 0; shift < 4; shift++) {
         memset(big, 0, sizeof big);
